@@ -1,0 +1,86 @@
+#!/usr/bin/env bash
+# HazardSensor build driver. Installs what is missing, builds, and runs the job you name.
+#
+#   ./build.sh test     install dependencies, build (warnings as errors), run every test
+#   ./build.sh build    install dependencies and build only
+#   ./build.sh deps     install dependencies only
+#
+# Dependencies are Debian packages (apt-get, as root or through sudo) and, for the
+# wire-compatibility tests only, pymoos2 from PyPI in a virtual environment under build/.
+set -euo pipefail
+
+HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+cd "$HERE"
+
+PRESET="${HAZARD_PRESET:-release}"
+BUILD_DIR="$HERE/build/$PRESET"
+PYENV_DIR="$HERE/build/pyenv"
+JOBS="${HAZARD_JOBS:-$(nproc 2>/dev/null || echo 2)}"
+
+DEBIAN_PACKAGES=(
+  cmake ninja-build g++ pkg-config
+  libgeographiclib-dev libglm-dev libgtest-dev libbenchmark-dev
+  python3 python3-venv
+  librsvg2-bin
+)
+PYPI_PACKAGES=(pymoos2==0.1.0)
+
+say() { printf '\033[1m[build.sh]\033[0m %s\n' "$*" >&2; }
+
+as_root() {
+  if [ "$(id -u)" -eq 0 ]; then "$@"
+  elif command -v sudo >/dev/null 2>&1; then sudo "$@"
+  else say "need root to run: $*"; return 1
+  fi
+}
+
+missing_debian_packages() {
+  local pkg
+  for pkg in "${DEBIAN_PACKAGES[@]}"; do
+    dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q "install ok installed" || echo "$pkg"
+  done
+}
+
+install_debian_packages() {
+  local missing
+  missing="$(missing_debian_packages | tr '\n' ' ')"
+  if [ -z "${missing// /}" ]; then return 0; fi
+  say "installing Debian packages: $missing"
+  as_root apt-get update -q
+  # shellcheck disable=SC2086
+  as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends $missing
+}
+
+install_python_packages() {
+  if [ -x "$PYENV_DIR/bin/python" ] && "$PYENV_DIR/bin/python" -c 'import pymoos2' 2>/dev/null; then
+    return 0
+  fi
+  say "installing ${PYPI_PACKAGES[*]} into $PYENV_DIR"
+  python3 -m venv "$PYENV_DIR"
+  "$PYENV_DIR/bin/python" -m pip install -q --disable-pip-version-check "${PYPI_PACKAGES[@]}"
+}
+
+install_dependencies() {
+  install_debian_packages
+  install_python_packages
+}
+
+configure_and_build() {
+  say "configuring ($PRESET) in $BUILD_DIR"
+  cmake --preset "$PRESET" -DHAZARD_PYTHON="$PYENV_DIR/bin/python" >/dev/null
+  say "building with $JOBS jobs"
+  cmake --build --preset "$PRESET" -j "$JOBS"
+}
+
+run_tests() {
+  say "running the test suite"
+  ctest --preset "$PRESET" -j "$JOBS"
+}
+
+case "${1:-build}" in
+  deps)  install_dependencies ;;
+  build) install_dependencies; configure_and_build ;;
+  test)  install_dependencies; configure_and_build; run_tests ;;
+  -h|--help|help) sed -n '2,10p' "$0" ;;
+  *) say "unknown job '$1' (try: test, build, deps)"; exit 2 ;;
+esac

@@ -1,0 +1,86 @@
+#pragma once
+// Message encoding and packet framing of the MOOS v10 protocol (core-moos CMOOSMsg and
+// CMOOSCommPkt), written from ../shared/spec/moos-wire-protocol.md sections 1.2-3.4.
+//
+// Contract:
+// - Everything is little-endian whatever the host (spec 1.2).
+// - The encoder writes the exact length fields; the packet header's compression byte is 0.
+// - The decoder is strict where libMOOS is lenient (spec 2.7): a length below 54, a length past
+//   the bytes remaining, a negative or overlong string, or consumed != length is an error
+//   that names the message index and the byte offset. It never reads out of bounds and never
+//   allocates more than the bytes it was given.
+// - PacketReader reassembles packets from arbitrary TCP segment boundaries and refuses a
+//   header that announces fewer than 9 bytes or more than its configured limit before
+//   allocating anything.
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "moos/message.hpp"
+
+namespace moos {
+
+/// The 32-byte client banner: "ELKS CAN'T DANCE 2/8/10" padded with NULs (spec 1.4).
+inline constexpr std::string_view kBannerText = "ELKS CAN'T DANCE 2/8/10";
+inline constexpr std::size_t kBannerSize = 32;
+std::string protocol_banner();
+/// True if a received 32-byte banner matches, compared as the DB does: up to the first NUL,
+/// case-insensitively.
+bool banner_matches(std::string_view received);
+
+/// Packet header: int32 total length (including the header), int32 message count, one
+/// compression byte that is always 0 (spec 3.1).
+inline constexpr std::size_t kPacketHeaderSize = 9;
+/// Suggested default limit for one packet (spec 3.4).
+inline constexpr std::size_t kDefaultMaxPacketBytes = 128u * 1024u * 1024u;
+
+void append_message(std::string& out, const Message& msg);
+std::string encode_message(const Message& msg);
+/// One packet holding the messages in order. Never call with an empty list for a peer that
+/// expects mail (spec 3.4); the function itself allows it for tests.
+std::string encode_packet(const std::vector<Message>& messages);
+
+struct DecodeError {
+  std::string reason;       ///< human-readable, names the field that failed
+  std::size_t offset = 0;   ///< byte offset within the buffer given to the decoder
+};
+
+/// Decodes exactly one message that must occupy all of `bytes`.
+std::optional<Message> decode_message(std::string_view bytes, DecodeError* error = nullptr);
+
+/// Decodes a whole packet (header included). Returns the messages in order.
+std::optional<std::vector<Message>> decode_packet(std::string_view packet,
+                                                  DecodeError* error = nullptr);
+
+/// Incremental packet reassembly for a byte stream.
+class PacketReader {
+ public:
+  explicit PacketReader(std::size_t max_packet_bytes = kDefaultMaxPacketBytes)
+      : max_packet_bytes_(max_packet_bytes) {}
+
+  enum class Status { kNeedMore, kPacket, kError };
+
+  /// Appends received bytes.
+  void feed(std::string_view bytes);
+  /// Extracts the next complete packet into `out` (kPacket), reports that more bytes are
+  /// needed (kNeedMore), or reports a framing/decoding error (kError, `error` filled). After
+  /// an error the stream is unusable: the caller should close the connection.
+  Status next(std::vector<Message>& out, DecodeError* error = nullptr);
+
+  /// Bytes received but not yet consumed as packets.
+  std::size_t buffered() const { return buffer_.size() - consumed_; }
+  /// Takes the unconsumed bytes (used after the banner/handshake stage switches readers).
+  std::string take_buffered();
+
+ private:
+  std::size_t max_packet_bytes_;
+  std::string buffer_;
+  std::size_t consumed_ = 0;
+  bool failed_ = false;
+};
+
+}  // namespace moos

@@ -1,0 +1,5 @@
+#include "hazard/version.hpp"
+
+namespace hazard {
+std::string_view release_version() { return "1.0.0"; }
+}  // namespace hazard
