@@ -1,0 +1,43 @@
+#pragma once
+// pLogger's asynchronous log (.alog): a few header lines starting with "%%", then one line per
+// posting: TIME VARIABLE SOURCE VALUE, separated by blanks, where TIME is seconds since the
+// LOGSTART header (3 decimals) and VALUE is the rest of the line (it may contain blanks).
+//
+// Contract: format_alog_line() output parses back to the same entry, except that VALUE loses
+// leading blanks and a value cannot contain a newline (such a value is written with each
+// newline replaced by a blank, so one posting is always one line).
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace moos {
+
+struct AlogEntry {
+  double time_s = 0.0;  ///< seconds since LOGSTART (or the input's own time base)
+  std::string variable;
+  std::string source;
+  std::string value;
+};
+
+/// Header lines: "%% LOG FILE: <name>", "%% LOGSTART <epoch>", and a rule of '%'.
+std::string alog_header(std::string_view log_name, double logstart_epoch_s);
+
+/// One line, newline-terminated.
+std::string format_alog_line(const AlogEntry& entry);
+
+enum class AlogLineKind { kEntry, kHeader, kBlank, kMalformed };
+
+struct AlogParse {
+  AlogLineKind kind = AlogLineKind::kBlank;
+  AlogEntry entry;        ///< valid when kind == kEntry
+  std::string error;      ///< why the line is malformed (kind == kMalformed)
+};
+
+/// Classifies and parses one line (without its newline; a trailing CR is ignored).
+AlogParse parse_alog_line(std::string_view line);
+
+/// The LOGSTART value of a header line ("%% LOGSTART 1700000000.0"), if it is one.
+std::optional<double> alog_logstart(std::string_view header_line);
+
+}  // namespace moos

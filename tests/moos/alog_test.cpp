@@ -1,0 +1,53 @@
+#include <gtest/gtest.h>
+
+#include "moos/alog.hpp"
+
+namespace moos {
+namespace {
+
+TEST(Alog, LineRoundTripsWithBlanksInValue) {
+  const AlogEntry e{12.25, "UHZ_HAZARD_REPORT", "uFldHazardSensor", "vname=archie, x=1 ,y=2"};
+  const std::string line = format_alog_line(e);
+  EXPECT_EQ(line.back(), '\n');
+  EXPECT_EQ(line.substr(0, 11), "12.250     ");
+  const AlogParse p = parse_alog_line(line.substr(0, line.size() - 1));
+  ASSERT_EQ(p.kind, AlogLineKind::kEntry);
+  EXPECT_DOUBLE_EQ(p.entry.time_s, 12.25);
+  EXPECT_EQ(p.entry.variable, e.variable);
+  EXPECT_EQ(p.entry.source, e.source);
+  EXPECT_EQ(p.entry.value, e.value);
+}
+
+TEST(Alog, NewlinesInValueNeverSplitAPosting) {
+  const std::string line = format_alog_line({1, "X", "src", "a\nb\r\nc"});
+  EXPECT_EQ(line, std::string("1.000      X                    src              a b  c\n"));
+}
+
+TEST(Alog, HeaderAndBlankLinesAreClassified) {
+  const std::string header = alog_header("run.alog", 1700000000.5);
+  EXPECT_EQ(parse_alog_line("%% LOGSTART 5").kind, AlogLineKind::kHeader);
+  EXPECT_EQ(parse_alog_line("   ").kind, AlogLineKind::kBlank);
+  EXPECT_EQ(parse_alog_line("").kind, AlogLineKind::kBlank);
+  ASSERT_TRUE(alog_logstart("%% LOGSTART           1700000000.500"));
+  EXPECT_DOUBLE_EQ(*alog_logstart("%% LOGSTART           1700000000.500"), 1700000000.5);
+  EXPECT_FALSE(alog_logstart("%% LOG FILE: x"));
+  EXPECT_NE(header.find("%% LOGSTART           1700000000.500\n"), std::string::npos);
+}
+
+TEST(Alog, EmptyValueIsAllowed) {
+  const AlogParse p = parse_alog_line("3.5 PMV_CONNECT pMarineViewer");
+  ASSERT_EQ(p.kind, AlogLineKind::kEntry);
+  EXPECT_EQ(p.entry.value, "");
+}
+
+TEST(Alog, MalformedLinesSayWhy) {
+  AlogParse p = parse_alog_line("abc NODE_REPORT src NAME=x");
+  EXPECT_EQ(p.kind, AlogLineKind::kMalformed);
+  EXPECT_NE(p.error.find("'abc'"), std::string::npos);
+  EXPECT_EQ(parse_alog_line("nan X src v").kind, AlogLineKind::kMalformed);
+  EXPECT_EQ(parse_alog_line("1e999 X src v").kind, AlogLineKind::kMalformed);
+  EXPECT_EQ(parse_alog_line("1.0 X").kind, AlogLineKind::kMalformed);
+}
+
+}  // namespace
+}  // namespace moos
