@@ -1,0 +1,67 @@
+// gen_hazards: writes a random hazard field (docs/gen_hazards.md, spec 12, rulings D30/D31).
+// main reads the command line, picks the seed, builds the whole file in memory and writes it
+// only when everything succeeded, so a bad argument never leaves a half-written file.
+// Exit codes: see options.hpp (0 ok, 1 output not writable, 2 bad input).
+
+#include <chrono>
+#include <cstdio>
+#include <random>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "GenHazards_Info.hpp"
+#include "generator.hpp"
+#include "options.hpp"
+#include "output_file.hpp"
+
+namespace {
+
+using namespace gen_hazards;
+
+void print_error(const std::string& message) {
+  std::fprintf(stderr, "gen_hazards: error: %s\n", message.c_str());
+}
+
+/// A seed from the operating system's entropy source (the clock only if that is missing).
+std::uint64_t os_seed() {
+  try {
+    std::random_device device;
+    return (static_cast<std::uint64_t>(device()) << 32) ^ static_cast<std::uint64_t>(device());
+  } catch (const std::exception&) {
+    return static_cast<std::uint64_t>(
+        std::chrono::system_clock::now().time_since_epoch().count());
+  }
+}
+
+int write_stdout(const std::string& text) {
+  const bool ok = std::fwrite(text.data(), 1, text.size(), stdout) == text.size() &&
+                  std::fflush(stdout) == 0;
+  if (!ok) print_error("cannot write to standard output");
+  return ok ? kExitOk : kExitCannotWrite;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::vector<std::string> args(argv + 1, argv + argc);
+  CommandLine cli = parse_command_line(args);
+  if (cli.help) return write_stdout(help_text());
+  if (cli.version) return write_stdout(version_text());
+  for (const auto& error : cli.errors) print_error(error);
+  if (!cli.errors.empty()) return kExitBadInput;
+
+  cli.config.seed = cli.seed ? *cli.seed : os_seed();
+  const auto file = build_hazard_file(header_line(cli.recorded_args, cli.config.seed), cli.config);
+  if (const auto* error = std::get_if<GenerationError>(&file)) {
+    print_error(error->message);
+    return kExitBadInput;
+  }
+  const std::string& text = std::get<std::string>(file);
+  if (!cli.output_path) return write_stdout(text);
+  if (auto error = write_file_atomically(*cli.output_path, text)) {
+    print_error(*error);
+    return kExitCannotWrite;
+  }
+  return kExitOk;
+}
