@@ -13,6 +13,15 @@
 // - `#include FILE` (path relative to the including file) inserts that file's lines; errors
 //   inside it name the included file and its line. Include cycles are errors.
 // - Every problem is reported as a MissionError; parsing never throws and never stops early.
+// - `ProcessConfig = X {` (brace on the header line) is NOT a block, as in libMOOS (a mission
+//   that worked with us must work with the real MOOS): it is reported as an error naming the
+//   line, so the user learns why the block is "missing".
+// - Comments (`//`) are removed before any substitution, so a `$(NAME)` inside a comment is
+//   never an error. Verbatim quoting follows libMOOS: the first pair of double quotes on a line
+//   is removed and protects a `//` inside it.
+// - nsplug's other directives (`#define`, `#ifdef`, ...) are reported as unsupported errors and
+//   the line is skipped; a line with no `=` is reported and skipped (libMOOS skips it silently).
+// - A UTF-8 byte-order mark at the start of a file and CR line ends (CRLF files) are accepted.
 
 #include <map>
 #include <optional>
@@ -41,6 +50,9 @@ struct MissionError {
   std::string file;
   int line = 0;  ///< 0 when the problem concerns the whole file
   std::string message;
+  /// The ProcessConfig block the line belongs to ("" outside blocks), so a program can ignore
+  /// problems in other applications' blocks.
+  std::string block;
   /// "file:line: message" (or "file: message").
   std::string to_string() const;
 };
@@ -66,6 +78,9 @@ class MissionFile {
   std::optional<std::string> global(std::string_view key) const;
   /// A numeric global, or nullopt if absent or not a number.
   std::optional<double> global_double(std::string_view key) const;
+  /// The line that global(key) reads (its value trimmed, interior blanks kept), to name the
+  /// place in a warning; nullptr if absent.
+  const ConfigLine* global_line(std::string_view key) const;
 
   /// The first `ProcessConfig = <app_name>` block (name compared case-insensitively).
   const ProcessBlock* block(std::string_view app_name) const;

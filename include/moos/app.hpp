@@ -1,0 +1,220 @@
+#pragma once
+// The application base (wire spec 7.1 CMOOSApp and 7.2 AppCastingMOOSApp, core-moos flavour),
+// designed so that applications stay thin and can be stepped deterministically in tests.
+//
+// Contract:
+// - An app derives from MoosApp and overrides on_start_up / on_connect_to_server / on_new_mail /
+//   iterate / build_report. It never calls base versions and never posts its own APPCAST: the
+//   base does the AppCasting bookkeeping around the hooks (libMOOS's "call the base Iterate
+//   first and PostReport last" rule is built in).
+// - The base runs on any Comms: TcpClient with the system clock, or a BusClient with a
+//   ManualClock. Time is always comms().moos_time() (= unix x warp + skew, spec 0.3), and the
+//   warp is the comms's own.
+// - One cycle (libMOOS DoRunWork without the sleep, spec 7.1):
+//     1. if the comms connected (again) since the last cycle: on_connect_to_server();
+//     2. fetch mail, sort it by time (stable; unless SortMailByTime = false), consume
+//        APPCAST_REQ and `_async_timing`, hand the rest to on_new_mail() if any is left;
+//     3. only while connected: post `<APPNAME>_STATUS` (first cycle, then every 2 MOOS s),
+//        iteration += 1, post `<MOOSNAME>_ITER_GAP` (from the 2nd iteration), iterate(),
+//        post `<MOOSNAME>_ITER_LEN`, then the report decision of spec 7.2 (terminal frame
+//        and/or APPCAST).
+// - Cycles are due every 1/AppTick MOOS seconds (AppTick in MOOS-time Hz, so warp W gives
+//   W x AppTick real cycles per second). run_for() and run_until() sleep on the comms clock, so
+//   a ManualClock makes them instant and exact.
+// - on_connect_to_server() runs on the thread that calls cycle(), never on a comms thread.
+//   Subscriptions are remembered by the comms and re-sent after a reconnect, so an app may
+//   register once in on_start_up().
+// - Iterate modes 1 and 2, command messages (`<APP>_CMD`) and cpu/memory in the status are not
+//   implemented: their configuration keys produce a configuration warning when enabled.
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <iosfwd>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "moos/appcast.hpp"
+#include "moos/command_line.hpp"
+#include "moos/comms.hpp"
+#include "moos/mission.hpp"
+
+namespace moos {
+
+/// What to do when a framework parameter appears twice in the block.
+enum class RepeatedParameter {
+  kFirstWins,            ///< libMOOS: the first line wins, silently
+  kLastWinsWithWarning,  ///< hazard rulings D36: the last line wins, with a config warning
+};
+
+/// What an application says about itself (defaults that differ between apps).
+struct AppTraits {
+  std::string default_name;             ///< process name without an alias, e.g. "uFldHazardSensor"
+  double default_app_tick_hz = 5.0;     ///< CMOOSApp default (spec 6.3)
+  int default_comms_tick_hz = 5;
+  std::size_t default_max_appcast_events = AppCast::kDefaultMaxEvents;
+  std::size_t default_max_appcast_run_warnings = AppCast::kDefaultMaxRunWarnings;
+  RepeatedParameter repeated_parameters = RepeatedParameter::kFirstWins;
+  bool post_iteration_timing = true;    ///< `<MOOSNAME>_ITER_GAP` / `_ITER_LEN` (spec 7.2)
+};
+
+/// The framework's settings after mission file and command line (spec 6.2-6.4).
+struct AppSettings {
+  std::string app_name;                  ///< selects the block; names _STATUS and the appcast
+  std::string moos_name;                 ///< registration name (default: app_name)
+  std::string server_host = "localhost";
+  int server_port = 9000;
+  std::string community;                 ///< mission `Community` ("" if absent)
+  double time_warp = 1.0;                ///< 0 < W <= 400
+  double app_tick_hz = 5.0;              ///< > 0, MOOS-time Hz
+  int comms_tick_hz = 5;                 ///< accepted for compatibility; the async client ignores it
+  double term_report_interval_s = 0.4;   ///< real seconds, [0, 10]
+  std::size_t max_appcast_events = AppCast::kDefaultMaxEvents;
+  std::size_t max_appcast_run_warnings = AppCast::kDefaultMaxRunWarnings;
+  std::optional<bool> term_reporting;    ///< mission TERM_REPORTING; nullopt when absent
+  bool sort_mail_by_time = true;
+  /// The application's own lines of its block (framework keys removed), in file order.
+  std::vector<ConfigLine> config_lines;
+  bool have_block = false;
+  /// Problems found while resolving, already worded for the appcast.
+  std::vector<std::string> config_warnings;
+};
+
+/// True for the block keys the base handles (AppTick, CommsTick, MaxAppTick, IterateMode,
+/// SortMailByTime, CatchCommandMessages, TERM_REPORT_INTERVAL, MAX_APPCAST_EVENTS,
+/// MAX_APPCAST_RUN_WARNINGS, moos_time_warp), compared case-insensitively.
+bool is_framework_parameter(std::string_view key);
+
+/// Resolves the settings. Precedence (spec 6.3, 6.4): warp = --moos_time_warp, else block
+/// moos_time_warp, else global MOOSTimeWarp, else 1; AppTick = block, else --moos_app_tick,
+/// else the trait default; host/port = --moos_host/--moos_port, else ServerHost/ServerPort,
+/// else localhost:9000. `mission_errors` in this app's block or outside any block become
+/// configuration warnings; errors in other apps' blocks are not this app's business.
+AppSettings resolve_app_settings(const AppTraits& traits, const CommandLine& command_line,
+                                 const MissionFile* mission,
+                                 const std::vector<MissionError>& mission_errors = {});
+
+class MoosApp {
+ public:
+  /// MOOS seconds between `<APPNAME>_STATUS` postings (spec 7.1).
+  static constexpr double kStatusPeriod_s = 2.0;
+
+  explicit MoosApp(AppTraits traits);
+  virtual ~MoosApp();
+  MoosApp(const MoosApp&) = delete;
+  MoosApp& operator=(const MoosApp&) = delete;
+
+  const AppTraits& traits() const { return traits_; }
+
+  // ---- driving (main or a test) ----------------------------------------------------------------
+  /// Binds the app to `comms` (which must outlive it), applies the settings, registers
+  /// APPCAST_REQ, records the start time and calls on_start_up(); returns its result.
+  bool start(Comms& comms, AppSettings settings);
+  /// One main-loop pass now (see the contract above).
+  void cycle();
+  /// MOOS time at which the next cycle is due.
+  double next_cycle_due_moos_s() const { return next_due_moos_s_; }
+  /// Runs a cycle if it is due; true if it ran.
+  bool cycle_if_due();
+  /// Sleeps on the comms clock from cycle to cycle until `moos_s` MOOS seconds have passed.
+  void run_for(double moos_s);
+  /// The real main loop: cycles until request_stop() or `external_stop` becomes true.
+  void run_until_stopped(const std::atomic<bool>* external_stop = nullptr);
+  void request_stop() { stop_ = true; }
+
+  /// Where terminal reports go (main: standard output when it is a terminal). None: no
+  /// terminal reports.
+  void set_terminal_output(std::function<void(const std::string&)> sink);
+
+  // ---- inspection --------------------------------------------------------------------------------
+  const AppSettings& settings() const { return settings_; }
+  const AppCast& appcast() const { return appcast_; }
+  std::uint64_t iteration() const { return iteration_; }
+  double moos_time() const;
+  double start_time() const { return start_time_; }
+  /// The current `<APPNAME>_STATUS` text (spec 7.1).
+  std::string status_string() const;
+  /// Builds the report now (calls build_report) and returns the terminal frame.
+  std::string terminal_report();
+
+ protected:
+  // ---- hooks -------------------------------------------------------------------------------------
+  /// Configuration: settings().config_lines; false ends the program.
+  virtual bool on_start_up() { return true; }
+  virtual void on_connect_to_server() {}
+  /// Mail of this cycle, sorted by time, framework mail removed; never empty.
+  virtual void on_new_mail(const std::vector<Message>& mail) { (void)mail; }
+  virtual void iterate() {}
+  /// The report body (the appcast `messages`): text lines separated by '\n'.
+  virtual std::string build_report() { return {}; }
+
+  // ---- services ----------------------------------------------------------------------------------
+  Comms& comms() const { return *comms_; }
+  const std::string& app_name() const { return settings_.app_name; }
+  /// The appcast node: the mission community, else the one the server announced.
+  std::string community() const;
+  const std::vector<ConfigLine>& config_lines() const { return settings_.config_lines; }
+  /// MOOS seconds since start().
+  double seconds_since_start() const;
+
+  bool notify(const std::string& var, double value);
+  bool notify(const std::string& var, const std::string& value);
+  bool notify_binary(const std::string& var, const std::string& bytes);
+  bool register_variable(const std::string& var, double interval_s = 0.0);
+  bool unregister_variable(const std::string& var);
+  bool register_wildcard(const std::string& var_pattern, const std::string& app_pattern = "*",
+                         double interval_s = 0.0);
+
+  void report_config_warning(const std::string& text);
+  /// `Unhandled config line: <key>=<value>` for a line the app did not accept.
+  void report_unhandled_config_line(const ConfigLine& line);
+  void report_run_warning(const std::string& text);
+  void retract_run_warning(const std::string& text);
+  void report_event(const std::string& text);
+
+ private:
+  struct Request {
+    double start_moos_s = 0.0;
+    AppCastRequest request;
+  };
+
+  void handle_framework_mail(std::vector<Message>& mail);
+  bool appcast_requested() const;
+  void post_status_if_due();
+  void post_report(double iterate_start_moos_s);
+  void schedule_next(double cycle_start_moos_s);
+  bool term_reporting_enabled() const;
+
+  const AppTraits traits_;
+  Comms* comms_ = nullptr;
+  AppSettings settings_;
+  AppCast appcast_;
+  std::function<void(const std::string&)> terminal_output_;
+  std::atomic<bool> stop_{false};
+
+  double start_time_ = 0.0;
+  double curr_time_ = 0.0;  // MOOS time of the current cycle (libMOOS m_curr_time)
+  double next_due_moos_s_ = 0.0;
+  std::uint64_t iteration_ = 0;
+  std::uint64_t seen_connections_ = 0;
+  std::optional<double> last_status_moos_s_;
+  std::optional<double> last_iterate_start_moos_s_;
+  std::optional<double> last_term_report_moos_s_;
+  std::optional<double> last_appcast_moos_s_;
+  bool new_run_warning_ = false;
+  bool new_config_warning_ = false;
+  std::map<std::string, Request> requests_;  // by requester key
+};
+
+/// The whole life of an app as a MOOS process over TCP (spec 7.1): loads the mission named on
+/// the command line (with its `--NAME=value` substitutions), resolves the settings, connects a
+/// TcpClient, waits up to 5 MOOS s for the connection, calls start(), prints terminal reports to
+/// `out` (when TERM_REPORTING = true, or unset and `out_is_terminal`) and cycles until SIGINT or
+/// SIGTERM. Problems go to `err`. Returns the exit code: 0 after a signal, 1 if the mission cannot
+/// be read, the server refuses the name, or on_start_up() fails.
+int run_app(MoosApp& app, const CommandLine& command_line, std::ostream& out, std::ostream& err,
+            bool out_is_terminal);
+
+}  // namespace moos

@@ -1,0 +1,132 @@
+#pragma once
+// The one interface through which an application talks to a MOOS community. Two
+// implementations: TcpClient (a real MOOSDB or moosdb-lite over TCP, wire spec 1 and 4) and
+// BusClient (an in-process bus with the same semantics, for tests).
+//
+// Contract (both implementations):
+// - Subscriptions are remembered: register_* records the subscription and sends it now if
+//   connected; after every (re)connect all remembered subscriptions are sent again, in the order
+//   they were first made, BEFORE the on-connect callback runs (the server forgot them, spec 1.9).
+//   They return false only for invalid arguments (empty name, comma in a pattern).
+// - unregister_variable sends UNREGISTER only for a variable registered before (libMOOS, 4.1);
+//   unregister_wildcard always sends (if connected) and forgets the pattern pair.
+// - Posting (notify/post) while disconnected returns false and sends nothing (spec 1.9).
+//   Posted NOTIFYs carry this client's name as source and, unless given, the MOOS time now.
+// - fetch() returns all mail received since the last fetch, in arrival order; TIMING and NULL
+//   messages never reach it.
+// - Time: local time = Clock real seconds x warp; MOOS time = local time + skew (spec 0.3).
+// - Every public function is thread-safe. Callbacks run on the implementation's own thread
+//   (TcpClient: its comms thread) with no lock held; they may call any function of this object.
+
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <mutex>
+#include <optional>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "moos/clock.hpp"
+#include "moos/message.hpp"
+
+namespace moos {
+
+class Comms {
+ public:
+  Comms(const Comms&) = delete;
+  Comms& operator=(const Comms&) = delete;
+  virtual ~Comms();
+
+  /// The client (registration) name; fixed at construction.
+  const std::string& name() const { return name_; }
+  virtual bool is_connected() const = 0;
+  /// Successful handshakes so far (a reconnect increments it).
+  virtual std::uint64_t connection_count() const = 0;
+  /// The community the server announced (WELCOME), "" before the first connection.
+  virtual std::string community() const = 0;
+
+  virtual Clock& clock() const = 0;
+  virtual double time_warp() const = 0;
+  /// MOOS time minus local time, seconds (0 until a server says otherwise, spec 1.8, 4.4).
+  virtual double skew_s() const = 0;
+  double local_time() const { return clock().unix_now_s() * time_warp(); }
+  double moos_time() const { return local_time() + skew_s(); }
+
+  /// REGISTER `var`; updates of it arrive at most once per `interval_s` MOOS seconds (0 = every
+  /// update; throttled updates are dropped by the server, spec 5.3).
+  bool register_variable(const std::string& var, double interval_s = 0.0);
+  bool unregister_variable(const std::string& var);
+  /// WILDCARD_REGISTER: variables whose name matches `var_pattern` and whose (first) writer
+  /// matches `app_pattern` (spec 5.5). Patterns use `*` and `?` and cannot contain commas.
+  bool register_wildcard(const std::string& var_pattern, const std::string& app_pattern = "*",
+                         double interval_s = 0.0);
+  bool unregister_wildcard(const std::string& var_pattern, const std::string& app_pattern = "*");
+
+  /// NOTIFY a double / string / binary value. `time_s` defaults to the MOOS time now.
+  bool notify(const std::string& var, double value, std::optional<double> time_s = std::nullopt,
+              const std::string& source_aux = {});
+  bool notify(const std::string& var, const std::string& value,
+              std::optional<double> time_s = std::nullopt, const std::string& source_aux = {});
+  bool notify_binary(const std::string& var, const std::string& bytes,
+                     std::optional<double> time_s = std::nullopt,
+                     const std::string& source_aux = {});
+  /// Posts a prepared NOTIFY (type forced to 'N'); a time of -1 means "now" (libMOOS, spec 2.2).
+  bool post(Message notify);
+
+  /// All mail received since the last call, oldest first.
+  virtual std::vector<Message> fetch() = 0;
+
+  /// Called after every successful (re)connect, after the registrations were re-sent.
+  void set_on_connect(std::function<void()> callback);
+  /// Called when new mail is waiting (use it to wake a loop; then call fetch()).
+  void set_on_mail(std::function<void()> callback);
+  /// A copy of the on-mail callback (empty if none), for code that calls it later.
+  std::function<void()> on_mail_callback() const;
+
+  /// Remembered plain registrations (the `Subscribing` list of `<APP>_STATUS`, spec 7.1).
+  std::set<std::string> registered_names() const;
+  /// Variables this client has posted (the `Publishing` list of `<APP>_STATUS`).
+  std::set<std::string> published_names() const;
+
+ protected:
+  explicit Comms(std::string name) : name_(std::move(name)) {}
+
+  /// Hands one message to the server now. Returns false (and sends nothing) when not
+  /// connected. Called with no lock of this base class held.
+  virtual bool transmit(Message msg) = 0;
+  /// REGISTER and WILDCARD_REGISTER messages for every remembered subscription, in the order the
+  /// subscriptions were first made (the reconnect replay).
+  std::vector<Message> replay_messages() const;
+  void fire_on_connect();
+  void fire_on_mail();
+
+ private:
+  Message control_message(char type, char data_type, const std::string& key) const;
+  Message register_message(const std::string& var, double interval_s) const;
+  Message wildcard_message(char type, const std::string& var_pattern,
+                           const std::string& app_pattern, double interval_s) const;
+  bool post_and_record(Message msg);
+
+  struct WildcardEntry {
+    std::string var_pattern;
+    std::string app_pattern;
+    double interval_s = 0.0;
+  };
+
+  const std::string name_;
+  mutable std::mutex book_mutex_;
+  /// Subscriptions in first-made order: a plain variable (var_pattern is the name, app_pattern
+  /// unset) or a wildcard pair.
+  struct Subscription {
+    bool wildcard = false;
+    WildcardEntry entry;
+  };
+  std::vector<Subscription> subscriptions_;
+  std::set<std::string> published_;
+  std::function<void()> on_connect_;
+  std::function<void()> on_mail_;
+};
+
+}  // namespace moos

@@ -1,0 +1,167 @@
+#pragma once
+// A MOOS client over TCP in asynchronous mode (wire spec sections 1, 4.1, 4.3, 4.4 and 4.6),
+// compatible with the reference MOOSDB and with moosdb-lite.
+//
+// Contract:
+// - start() launches one comms thread that connects, performs the handshake (32-byte banner,
+//   identification with key "asynchronous" and the client name, spec 1.4-1.5) and then both
+//   writes and reads the socket. Every public function is thread-safe.
+// - POISON (duplicate name) stops the client for good (state kPoisoned, last_error() holds the
+//   server's reason), as libMOOS does. Any other failure (refused connection, lost connection,
+//   a handshake that closes or stays silent longer than handshake_timeout_real_s) is retried
+//   once per MOOS second (1/warp real seconds, spec 1.9).
+// - After each handshake the client (1) adopts the WELCOME skew per SkewPolicy (1.8), (2) queues
+//   every remembered subscription, (3) runs the on-connect callback, then normal traffic starts.
+// - Sending: whatever was posted is sent as one packet as soon as possible, after
+//   max(server delay from the last TIMING echo, warp x tw_delay_factor ms) since the previous
+//   send (4.3 step 4). A TIMING message (own local time, spec 2.6) leads the next packet when
+//   kTimingInterval_real_s has passed since the last one, and is sent alone while idle, so an
+//   idle client sends one at least once per second (4.6). Packets are never empty.
+// - Receiving: a TIMING at the head of a packet is consumed and refines the skew (4.4); TIMING
+//   messages elsewhere and NULL messages anywhere are dropped; everything else, `~` data types
+//   included, goes to the inbox in arrival order. A framing or decoding error closes the
+//   connection (then it is retried).
+// - Deviations from libMOOS, deliberate: the inbox is kept across a reconnect (libMOOS clears it,
+//   losing mail that had arrived); the inbox is not capped (libMOOS discards it all beyond 2048
+//   unread messages); the handshake has a timeout (libMOOS waits forever); a connection closed
+//   during the handshake is retried (libMOOS gives up).
+// - close() (and the destructor) stops the thread, closes the socket and joins; nothing is left.
+
+#include <atomic>
+#include <condition_variable>
+#include <cstdint>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "moos/codec.hpp"
+#include "moos/comms.hpp"
+
+namespace moos {
+
+enum class ConnectionState {
+  kNotStarted,
+  kConnecting,  ///< trying to connect or reconnect
+  kConnected,
+  kPoisoned,    ///< the server refused the name; the client has stopped
+  kClosed,      ///< close() was called
+};
+
+/// When to adopt the skew a server announces in WELCOME (spec 1.8).
+enum class SkewPolicy {
+  kLibMoos,  ///< libMOOS non-quiet: ignore it when the DB runs on this host (same hostname)
+  kAlways,   ///< libMOOS quiet mode and pymoos2
+  kNever,
+};
+
+struct TcpClientOptions {
+  std::string host = "localhost";  ///< a name or dotted IPv4 address (IPv4 only, spec 1.1)
+  int port = 9000;                 ///< 1..65535
+  std::string name;                ///< the client name: unique in the community, not empty
+  double time_warp = 1.0;          ///< 0 < W <= 400 (spec 0.3)
+  Clock* clock = nullptr;          ///< time stamps; nullptr = system_clock()
+  SkewPolicy skew_policy = SkewPolicy::kLibMoos;
+  /// This host's name for the kLibMoos comparison; "" = gethostname().
+  std::string own_hostname;
+  double connect_timeout_real_s = 2.0;
+  double handshake_timeout_real_s = 5.0;  ///< the DB itself allows 5 s for the identification
+  std::size_t max_packet_bytes = kDefaultMaxPacketBytes;
+  /// libMOOS --moos_tw_delay_factor: ms of pause after each send per unit of warp above 1.
+  double tw_delay_factor_ms = 0.2;
+};
+
+class TcpClient final : public Comms {
+ public:
+  /// Under 1 s with a 250 ms margin for scheduling delays on a loaded machine, so an idle
+  /// client sends at least one TIMING per second (4.6; libMOOS waits 1.0-1.33 s).
+  static constexpr double kTimingInterval_real_s = 0.75;
+
+  explicit TcpClient(TcpClientOptions options);
+  ~TcpClient() override;
+
+  /// Launches the comms thread. False (with last_error()) if the options are invalid or the
+  /// client was already started.
+  bool start();
+  /// Stops the comms thread and closes the socket. Idempotent; the client cannot be restarted.
+  void close();
+
+  /// Blocks until connected, poisoned, closed, or `timeout_real_s` passes. True if connected.
+  bool wait_until_connected(double timeout_real_s) const;
+  /// Blocks until everything posted so far has been written to the socket (true), or the
+  /// connection is lost or `timeout_real_s` passes (false).
+  bool flush(double timeout_real_s);
+
+  ConnectionState state() const;
+  /// The most recent problem (connection refused, POISON reason, decode error, ...).
+  std::string last_error() const;
+  /// `hostname` of the server from WELCOME ("" if it sent none).
+  std::string server_hostname() const;
+  /// True if WELCOME advertised asynchronous support.
+  bool server_is_asynchronous() const;
+  /// Packets sent since start (TIMING-only ones included); for tests and diagnostics.
+  std::uint64_t packets_sent() const;
+
+  // Comms
+  bool is_connected() const override;
+  std::uint64_t connection_count() const override;
+  std::string community() const override;
+  Clock& clock() const override { return clock_; }
+  double time_warp() const override { return options_.time_warp; }
+  double skew_s() const override { return skew_s_.load(); }
+  std::vector<Message> fetch() override;
+
+ protected:
+  bool transmit(Message msg) override;
+
+ private:
+  void run();
+  bool connect_socket();
+  bool handshake();
+  void serve();
+  void drop_connection(const std::string& why);
+  bool write_pending();
+  bool read_available();
+  bool process_buffered();
+  void handle_packet(std::vector<Message> messages);
+  void refine_skew(const Message& timing_echo);
+  Message timing_message() const;
+  void wake();
+  void wait_for_wake(double timeout_real_s);
+  void set_error(const std::string& error);
+  double retry_delay_real_s() const;
+
+  const TcpClientOptions options_;
+  Clock& clock_;
+
+  std::thread thread_;
+  std::atomic<bool> stopping_{false};
+  int socket_ = -1;       // owned by the comms thread
+  int wake_read_ = -1;    // self-pipe: transmit()/close() wake the comms thread
+  int wake_write_ = -1;
+  PacketReader reader_;   // comms thread only
+  std::string write_buffer_;  // comms thread only: bytes of the packet being written
+  std::size_t write_offset_ = 0;
+  double next_send_allowed_ = 0;   // steady seconds, comms thread only
+  std::optional<double> last_timing_sent_;  // steady seconds, comms thread only; nullopt: never
+  bool time_correction_ = true;    // comms thread only
+
+  mutable std::mutex mutex_;
+  mutable std::condition_variable changed_;
+  ConnectionState state_ = ConnectionState::kNotStarted;
+  std::vector<Message> outbox_;
+  std::vector<Message> inbox_;
+  std::int32_t next_id_ = 0;
+  std::uint64_t connections_ = 0;
+  std::uint64_t packets_sent_ = 0;
+  std::uint64_t packets_in_flight_ = 0;  // encoded but not completely written yet
+  std::string community_;
+  std::string server_hostname_;
+  bool server_async_ = false;
+  std::string last_error_;
+  std::atomic<double> skew_s_{0.0};
+  std::atomic<double> server_delay_s_{0.0};
+};
+
+}  // namespace moos

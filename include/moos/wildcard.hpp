@@ -1,0 +1,34 @@
+#pragma once
+// Wildcard subscriptions (wire spec 4.1 and 5.5): the pattern language and the string carried by
+// WILDCARD_REGISTER / WILDCARD_UNREGISTER messages.
+//
+// Contract:
+// - wildcard_match: `*` matches any run of characters (including none), `?` exactly one; every
+//   other character matches itself, case-sensitively; the whole text must match. Runs in
+//   O(|pattern| * |text|) time at worst, never exponential.
+// - format_wildcard_spec writes `AppPattern=<a>,VarPattern=<v>,Interval=<x>` with the interval
+//   in C++ default stream formatting (6 significant digits), as libMOOS does.
+// - parse_wildcard_spec accepts commas or blanks between items (pymoos2 uses spaces, spec 5.5);
+//   a missing pattern is "" (matches only the empty string); a missing or unreadable interval
+//   is 0.
+
+#include <string>
+#include <string_view>
+
+namespace moos {
+
+bool wildcard_match(std::string_view pattern, std::string_view text);
+
+/// True if `pattern` uses `*` or `?`.
+bool has_wildcards(std::string_view pattern);
+
+struct WildcardSpec {
+  std::string app_pattern;
+  std::string var_pattern;
+  double interval_s = 0.0;
+};
+
+std::string format_wildcard_spec(const WildcardSpec& spec);
+WildcardSpec parse_wildcard_spec(std::string_view text);
+
+}  // namespace moos

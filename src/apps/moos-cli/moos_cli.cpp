@@ -1,0 +1,262 @@
+// moos-cli commands. poke: connect, post, flush, close. watch: connect, register, print each
+// message as an .alog line until --count messages or --timeout seconds.
+
+#include "moos_cli.hpp"
+
+#include <unistd.h>
+
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <condition_variable>
+#include <limits>
+#include <mutex>
+#include <ostream>
+
+#include "moos/alog.hpp"
+#include "moos/tcp_client.hpp"
+#include "moos/text.hpp"
+#include "moos/wildcard.hpp"
+
+namespace moos_cli {
+
+namespace {
+
+constexpr int kMaxPort = 65535;
+constexpr double kMaxTimeWarp = 400.0;  // wire spec 0.3
+/// How long poke waits for its posts to reach the socket, real seconds.
+constexpr double kFlushTimeout_s = 10.0;
+constexpr char kHexDigits[] = "0123456789abcdef";
+
+bool starts_with(std::string_view s, std::string_view p) { return s.substr(0, p.size()) == p; }
+
+std::optional<double> parse_decimal(std::string_view s) { return moos::text::parse_number(s); }
+
+std::optional<long long> parse_whole(std::string_view s) {
+  return moos::text::parse_integer(s, std::numeric_limits<long long>::min(),
+                                   std::numeric_limits<long long>::max());
+}
+
+std::string default_name() { return "moos-cli-" + std::to_string(::getpid()); }
+
+moos::TcpClientOptions client_options(const Options& o) {
+  moos::TcpClientOptions c;
+  c.host = o.host;
+  c.port = o.port;
+  c.name = o.name.empty() ? default_name() : o.name;
+  c.time_warp = o.time_warp;
+  return c;
+}
+
+/// Connects; on failure prints why and returns the exit code to use.
+std::optional<int> connect(moos::TcpClient& client, const Options& o, std::ostream& err) {
+  if (!client.start()) {
+    err << "moos-cli: " << client.last_error() << "\n";
+    return kExitUsage;
+  }
+  if (client.wait_until_connected(o.connect_timeout_s)) return std::nullopt;
+  if (client.state() == moos::ConnectionState::kPoisoned) {
+    err << "moos-cli: " << client.last_error() << "\n";
+    return kExitRefused;
+  }
+  err << "moos-cli: no connection to " << o.host << ":" << o.port << " within "
+      << o.connect_timeout_s << " s (" << client.last_error() << ")\n";
+  return kExitNoConnection;
+}
+
+}  // namespace
+
+std::optional<Options> parse_options(const std::vector<std::string>& args, std::string* error) {
+  Options o;
+  auto fail = [&](const std::string& why) -> std::optional<Options> {
+    *error = why;
+    return std::nullopt;
+  };
+  if (args.empty()) return fail("no command given");
+  const std::string& command = args[0];
+  if (command == "--help" || command == "-h" || command == "help") return o;
+  if (command == "poke") o.command = Command::kPoke;
+  else if (command == "watch") o.command = Command::kWatch;
+  else return fail("unknown command: " + command);
+
+  for (std::size_t i = 1; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    auto value_of = [&](std::string_view flag) { return std::string_view(a).substr(flag.size()); };
+    if (a == "--help" || a == "-h") {
+      o.command = Command::kHelp;
+      return o;
+    }
+    if (starts_with(a, "--host=")) {
+      o.host = std::string(value_of("--host="));
+      if (o.host.empty()) return fail("--host= needs a host");
+    } else if (starts_with(a, "--port=")) {
+      const auto p = parse_whole(value_of("--port="));
+      if (!p || *p < 1 || *p > kMaxPort) return fail("bad port: " + a);
+      o.port = static_cast<int>(*p);
+    } else if (starts_with(a, "--name=")) {
+      o.name = std::string(value_of("--name="));
+      if (o.name.empty()) return fail("--name= needs a name");
+    } else if (starts_with(a, "--connect-timeout=")) {
+      const auto t = parse_decimal(value_of("--connect-timeout="));
+      if (!t || *t <= 0) return fail("bad timeout: " + a);
+      o.connect_timeout_s = *t;
+    } else if (starts_with(a, "--moos_time_warp=")) {
+      const auto w = parse_decimal(value_of("--moos_time_warp="));
+      if (!w || *w <= 0 || *w > kMaxTimeWarp) return fail("bad time warp: " + a);
+      o.time_warp = *w;
+    } else if (a == "--string" && o.command == Command::kPoke) {
+      o.all_strings = true;
+    } else if (starts_with(a, "--count=") && o.command == Command::kWatch) {
+      const auto n = parse_whole(value_of("--count="));
+      if (!n || *n < 1) return fail("bad count: " + a);
+      o.count = *n;
+    } else if (starts_with(a, "--timeout=") && o.command == Command::kWatch) {
+      const auto t = parse_decimal(value_of("--timeout="));
+      if (!t || *t <= 0) return fail("bad timeout: " + a);
+      o.timeout_s = *t;
+    } else if (starts_with(a, "-")) {
+      return fail("unknown option for " + command + ": " + a);
+    } else {
+      o.arguments.push_back(a);
+    }
+  }
+  if (o.arguments.empty())
+    return fail(o.command == Command::kPoke ? "poke needs at least one VAR=value"
+                                            : "watch needs at least one variable or pattern");
+  return o;
+}
+
+std::optional<Poke> parse_poke(std::string_view assignment, bool all_strings, std::string* error) {
+  const auto eq = assignment.find('=');
+  if (eq == std::string_view::npos || eq == 0) {
+    *error = "not a VAR=value assignment: " + std::string(assignment);
+    return std::nullopt;
+  }
+  Poke p;
+  bool force_string = all_strings;
+  std::string_view var = assignment.substr(0, eq);
+  if (var.back() == ':') {  // uPokeDB's VAR:=value
+    var.remove_suffix(1);
+    force_string = true;
+  }
+  if (var.empty()) {
+    *error = "no variable name in: " + std::string(assignment);
+    return std::nullopt;
+  }
+  p.var = std::string(var);
+  std::string_view value = assignment.substr(eq + 1);
+  if (value.size() >= 2 && value.front() == '"' && value.back() == '"') {
+    value = value.substr(1, value.size() - 2);
+    force_string = true;
+  }
+  const auto number = force_string ? std::nullopt : parse_decimal(value);
+  if (number) {
+    p.is_double = true;
+    p.dval = *number;
+  } else {
+    p.sval = std::string(value);
+  }
+  return p;
+}
+
+std::string format_watch_value(const moos::Message& m) {
+  switch (m.data_type) {
+    case moos::data_type::kDouble: {
+      char buf[64];
+      const auto [ptr, ec] = std::to_chars(buf, buf + sizeof buf, m.dval);
+      return ec == std::errc() ? std::string(buf, ptr) : std::string("nan");
+    }
+    case moos::data_type::kBinary: {
+      std::string out = "<binary:" + std::to_string(m.sval.size()) + ":";
+      for (unsigned char c : m.sval) {
+        out.push_back(kHexDigits[c >> 4]);
+        out.push_back(kHexDigits[c & 0x0f]);
+      }
+      return out + ">";
+    }
+    case moos::data_type::kNotSet:
+      return "<not set>";
+    default:
+      return m.sval;
+  }
+}
+
+std::string format_watch_line(const moos::Message& m, double start_moos_s) {
+  return moos::format_alog_line(
+      moos::AlogEntry{m.time - start_moos_s, m.key, m.source, format_watch_value(m)});
+}
+
+int run_poke(const Options& o, std::ostream& out, std::ostream& err) {
+  std::vector<Poke> pokes;
+  for (const auto& a : o.arguments) {
+    std::string error;
+    auto p = parse_poke(a, o.all_strings, &error);
+    if (!p) {
+      err << "moos-cli: " << error << "\n";
+      return kExitUsage;
+    }
+    pokes.push_back(std::move(*p));
+  }
+  moos::TcpClient client(client_options(o));
+  if (auto code = connect(client, o, err)) return *code;
+  for (const auto& p : pokes) {
+    const bool ok = p.is_double ? client.notify(p.var, p.dval) : client.notify(p.var, p.sval);
+    if (!ok) {
+      err << "moos-cli: lost the connection before posting " << p.var << "\n";
+      return kExitNotWritten;
+    }
+  }
+  if (!client.flush(kFlushTimeout_s)) {
+    err << "moos-cli: could not write every posting (" << client.last_error() << ")\n";
+    return kExitNotWritten;
+  }
+  client.close();
+  for (const auto& p : pokes)
+    out << p.var << " = " << (p.is_double ? format_watch_value(moos::make_double_notify(p.var, p.dval, "", 0))
+                                          : "\"" + p.sval + "\"")
+        << "\n";
+  return kExitOk;
+}
+
+int run_watch(const Options& o, std::ostream& out, std::ostream& err) {
+  moos::TcpClient client(client_options(o));
+  std::mutex mutex;
+  std::condition_variable mail;
+  client.set_on_mail([&] {
+    std::lock_guard<std::mutex> lock(mutex);
+    mail.notify_all();
+  });
+  const auto started = std::chrono::steady_clock::now();
+  if (auto code = connect(client, o, err)) return *code;
+  const double start_moos_s = client.moos_time();
+  for (const auto& a : o.arguments) {
+    const bool ok = moos::has_wildcards(a) ? client.register_wildcard(a, "*") : client.register_variable(a);
+    if (!ok) {
+      err << "moos-cli: cannot subscribe to " << a << "\n";
+      return kExitUsage;
+    }
+  }
+  long long received = 0;
+  while (true) {
+    for (const auto& m : client.fetch()) {
+      out << format_watch_line(m, start_moos_s) << std::flush;
+      if (o.count && ++received >= *o.count) return kExitOk;
+    }
+    std::unique_lock<std::mutex> lock(mutex);
+    if (o.timeout_s) {
+      const auto deadline = started + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                          std::chrono::duration<double>(*o.timeout_s));
+      if (std::chrono::steady_clock::now() >= deadline) {
+        if (!o.count) return kExitOk;
+        err << "moos-cli: timed out after " << *o.timeout_s << " s with " << received << " of "
+            << *o.count << " messages\n";
+        return kExitWatchTimeout;
+      }
+      mail.wait_until(lock, deadline);
+    } else {
+      mail.wait_for(lock, std::chrono::milliseconds(100));
+    }
+  }
+}
+
+}  // namespace moos_cli

@@ -1,0 +1,60 @@
+#pragma once
+// moos-cli's option parsing and its two commands, poke and watch. The options are documented in
+// MoosCli_Info.cpp and are a stable interface.
+
+#include <iosfwd>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "moos/message.hpp"
+
+namespace moos_cli {
+
+enum ExitCode {
+  kExitOk = 0,
+  kExitUsage = 1,
+  kExitWatchTimeout = 2,
+  kExitNoConnection = 3,
+  kExitRefused = 4,
+  kExitNotWritten = 5,
+};
+
+enum class Command { kHelp, kPoke, kWatch };
+
+struct Options {
+  Command command = Command::kHelp;
+  std::string host = "localhost";
+  int port = 9000;
+  std::string name;                   ///< "" = moos-cli-<pid>
+  double connect_timeout_s = 5.0;     ///< real seconds
+  double time_warp = 1.0;
+  bool all_strings = false;           ///< poke --string
+  std::optional<long long> count;     ///< watch --count
+  std::optional<double> timeout_s;    ///< watch --timeout, real seconds
+  std::vector<std::string> arguments; ///< poke: VAR=value; watch: VAR or PATTERN
+};
+
+/// Parses the arguments after argv[0]. On a usage problem returns nullopt and sets `error`.
+std::optional<Options> parse_options(const std::vector<std::string>& args, std::string* error);
+
+/// One poke: `VAR=value` (a decimal number becomes a double unless `all_strings`),
+/// `VAR="value"` or `VAR:=value` (always a string).
+struct Poke {
+  std::string var;
+  bool is_double = false;
+  double dval = 0.0;
+  std::string sval;
+};
+std::optional<Poke> parse_poke(std::string_view assignment, bool all_strings, std::string* error);
+
+/// The VALUE column of a watch line (see the help text).
+std::string format_watch_value(const moos::Message& m);
+/// One .alog line (newline-terminated) for a received message; time relative to `start_moos_s`.
+std::string format_watch_line(const moos::Message& m, double start_moos_s);
+
+int run_poke(const Options& options, std::ostream& out, std::ostream& err);
+int run_watch(const Options& options, std::ostream& out, std::ostream& err);
+
+}  // namespace moos_cli

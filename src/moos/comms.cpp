@@ -1,0 +1,210 @@
+// The shared part of every Comms implementation: the book of subscriptions that is replayed after
+// each reconnect, the published-names set, and message construction exactly as libMOOS fills the
+// fields (wire spec 2.6). Contract in include/moos/comms.hpp.
+
+#include "moos/comms.hpp"
+
+#include <algorithm>
+
+#include "moos/wildcard.hpp"
+
+namespace moos {
+
+namespace {
+/// UNREGISTER carries 0 in dval (spec 2.6).
+constexpr double kUnregisterDval = 0.0;
+
+bool valid_pattern(const std::string& pattern) {
+  return !pattern.empty() && pattern.find(',') == std::string::npos;
+}
+}  // namespace
+
+Comms::~Comms() = default;
+
+Message Comms::control_message(char type, char data_type, const std::string& key) const {
+  Message m;
+  m.type = type;
+  m.data_type = data_type;
+  m.key = key;
+  m.source = name_;
+  m.time = moos_time();
+  return m;
+}
+
+Message Comms::register_message(const std::string& var, double interval_s) const {
+  Message m = control_message(msg_type::kRegister, data_type::kDouble, var);
+  m.dval = interval_s;
+  return m;
+}
+
+Message Comms::wildcard_message(char type, const std::string& var_pattern,
+                                const std::string& app_pattern, double interval_s) const {
+  // The key of a wildcard message is the client's own name (ignored by the DB, spec 2.6).
+  Message m = control_message(type, data_type::kString, name_);
+  m.sval = format_wildcard_spec(WildcardSpec{app_pattern, var_pattern, interval_s});
+  return m;
+}
+
+bool Comms::register_variable(const std::string& var, double interval_s) {
+  if (var.empty() || !(interval_s >= 0)) return false;
+  {
+    std::lock_guard<std::mutex> lock(book_mutex_);
+    auto it = std::find_if(subscriptions_.begin(), subscriptions_.end(), [&](const Subscription& s) {
+      return !s.wildcard && s.entry.var_pattern == var;
+    });
+    if (it == subscriptions_.end())
+      subscriptions_.push_back(Subscription{false, WildcardEntry{var, {}, interval_s}});
+    else
+      it->entry.interval_s = interval_s;  // registering again updates the interval (spec 4.1)
+  }
+  transmit(register_message(var, interval_s));
+  return true;
+}
+
+bool Comms::unregister_variable(const std::string& var) {
+  {
+    std::lock_guard<std::mutex> lock(book_mutex_);
+    auto it = std::find_if(subscriptions_.begin(), subscriptions_.end(), [&](const Subscription& s) {
+      return !s.wildcard && s.entry.var_pattern == var;
+    });
+    if (it == subscriptions_.end()) return false;  // never registered: nothing to send (4.1)
+    subscriptions_.erase(it);
+  }
+  Message m = control_message(msg_type::kUnregister, data_type::kDouble, var);
+  m.dval = kUnregisterDval;
+  transmit(std::move(m));
+  return true;
+}
+
+bool Comms::register_wildcard(const std::string& var_pattern, const std::string& app_pattern,
+                              double interval_s) {
+  if (!valid_pattern(var_pattern) || !valid_pattern(app_pattern) || !(interval_s >= 0)) return false;
+  {
+    std::lock_guard<std::mutex> lock(book_mutex_);
+    auto it = std::find_if(subscriptions_.begin(), subscriptions_.end(), [&](const Subscription& s) {
+      return s.wildcard && s.entry.var_pattern == var_pattern && s.entry.app_pattern == app_pattern;
+    });
+    if (it == subscriptions_.end())
+      subscriptions_.push_back(Subscription{true, WildcardEntry{var_pattern, app_pattern, interval_s}});
+    else
+      it->entry.interval_s = interval_s;
+  }
+  transmit(wildcard_message(msg_type::kWildcardRegister, var_pattern, app_pattern, interval_s));
+  return true;
+}
+
+bool Comms::unregister_wildcard(const std::string& var_pattern, const std::string& app_pattern) {
+  if (!valid_pattern(var_pattern) || !valid_pattern(app_pattern)) return false;
+  bool known = false;
+  {
+    std::lock_guard<std::mutex> lock(book_mutex_);
+    auto it = std::find_if(subscriptions_.begin(), subscriptions_.end(), [&](const Subscription& s) {
+      return s.wildcard && s.entry.var_pattern == var_pattern && s.entry.app_pattern == app_pattern;
+    });
+    if (it != subscriptions_.end()) {
+      subscriptions_.erase(it);
+      known = true;
+    }
+  }
+  const bool sent =
+      transmit(wildcard_message(msg_type::kWildcardUnregister, var_pattern, app_pattern, 0.0));
+  return sent || known;
+}
+
+bool Comms::post_and_record(Message msg) {
+  if (msg.key.empty()) return false;
+  const std::string key = msg.key;
+  if (!transmit(std::move(msg))) return false;
+  std::lock_guard<std::mutex> lock(book_mutex_);
+  published_.insert(key);
+  return true;
+}
+
+bool Comms::notify(const std::string& var, double value, std::optional<double> time_s,
+                   const std::string& source_aux) {
+  Message m = make_double_notify(var, value, name_, time_s ? *time_s : moos_time());
+  m.source_aux = source_aux;
+  return post_and_record(std::move(m));
+}
+
+bool Comms::notify(const std::string& var, const std::string& value, std::optional<double> time_s,
+                   const std::string& source_aux) {
+  Message m = make_string_notify(var, value, name_, time_s ? *time_s : moos_time());
+  m.source_aux = source_aux;
+  return post_and_record(std::move(m));
+}
+
+bool Comms::notify_binary(const std::string& var, const std::string& bytes,
+                          std::optional<double> time_s, const std::string& source_aux) {
+  Message m = make_binary_notify(var, bytes, name_, time_s ? *time_s : moos_time());
+  m.source_aux = source_aux;
+  return post_and_record(std::move(m));
+}
+
+bool Comms::post(Message notify) {
+  notify.type = msg_type::kNotify;
+  notify.source = name_;
+  if (notify.time == kUnsetDouble) notify.time = moos_time();
+  return post_and_record(std::move(notify));
+}
+
+void Comms::set_on_connect(std::function<void()> callback) {
+  std::lock_guard<std::mutex> lock(book_mutex_);
+  on_connect_ = std::move(callback);
+}
+
+void Comms::set_on_mail(std::function<void()> callback) {
+  std::lock_guard<std::mutex> lock(book_mutex_);
+  on_mail_ = std::move(callback);
+}
+
+void Comms::fire_on_connect() {
+  std::function<void()> callback;
+  {
+    std::lock_guard<std::mutex> lock(book_mutex_);
+    callback = on_connect_;
+  }
+  if (callback) callback();
+}
+
+void Comms::fire_on_mail() {
+  if (auto callback = on_mail_callback()) callback();
+}
+
+std::function<void()> Comms::on_mail_callback() const {
+  std::lock_guard<std::mutex> lock(book_mutex_);
+  return on_mail_;
+}
+
+std::vector<Message> Comms::replay_messages() const {
+  std::vector<Subscription> copy;
+  {
+    std::lock_guard<std::mutex> lock(book_mutex_);
+    copy = subscriptions_;
+  }
+  std::vector<Message> out;
+  out.reserve(copy.size());
+  for (const auto& s : copy) {
+    if (s.wildcard)
+      out.push_back(wildcard_message(msg_type::kWildcardRegister, s.entry.var_pattern,
+                                     s.entry.app_pattern, s.entry.interval_s));
+    else
+      out.push_back(register_message(s.entry.var_pattern, s.entry.interval_s));
+  }
+  return out;
+}
+
+std::set<std::string> Comms::registered_names() const {
+  std::lock_guard<std::mutex> lock(book_mutex_);
+  std::set<std::string> names;
+  for (const auto& s : subscriptions_)
+    if (!s.wildcard) names.insert(s.entry.var_pattern);
+  return names;
+}
+
+std::set<std::string> Comms::published_names() const {
+  std::lock_guard<std::mutex> lock(book_mutex_);
+  return published_;
+}
+
+}  // namespace moos

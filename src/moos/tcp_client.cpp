@@ -1,0 +1,601 @@
+// Asynchronous MOOS client over TCP. Follows ../shared/spec/moos-wire-protocol.md sections 1.4-1.9,
+// 4.1, 4.3, 4.4 and the advice of 4.6; deliberate deviations are listed in tcp_client.hpp.
+//
+// Structure: one comms thread owns the socket (non-blocking) and runs
+//   connect -> handshake -> serve (poll on socket + self-pipe) -> drop -> wait 1 MOOS s -> ...
+// Public calls only touch the shared state under `mutex_` and write one byte into the self-pipe
+// to wake the thread. The thread never calls user code while holding `mutex_`.
+// Lock order: mutex_ (this client) before the Comms base's book lock (replay_messages()).
+
+#include "moos/tcp_client.hpp"
+
+#include <arpa/inet.h>
+#include <fcntl.h>
+#include <netdb.h>
+#include <netinet/in.h>
+#include <netinet/tcp.h>
+#include <poll.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+
+#include "moos/text.hpp"
+
+namespace moos {
+
+namespace {
+
+constexpr double kMaxTimeWarp = 400.0;  // spec 0.3
+constexpr int kMaxPort = 65535;
+/// Bytes read per recv call, and recv calls per wake-up (1 MiB) before sending gets a turn.
+constexpr std::size_t kReadChunkBytes = 64 * 1024;
+constexpr int kMaxReadChunksPerWake = 16;
+/// The identification key that selects asynchronous mode (spec 1.5).
+constexpr const char* kAsyncKey = "asynchronous";
+/// TIMING messages carry this key (spec 2.6).
+constexpr const char* kTimingKey = "_async_timing";
+/// The hostname token of WELCOME's source aux (spec 1.6).
+constexpr std::string_view kHostnameToken = "hostname";
+/// Skew filter weight of the previous value (spec 4.4).
+constexpr double kSkewMemory = 0.9;
+constexpr double kMsPerSecond = 1000.0;
+/// A longest poll wait, so a missed wake-up can never stall the thread for long.
+constexpr double kMaxPollWait_real_s = 0.5;
+
+double steady_now_s() {
+  using namespace std::chrono;
+  return duration_cast<duration<double>>(steady_clock::now().time_since_epoch()).count();
+}
+
+int poll_timeout_ms(double seconds) {
+  if (seconds <= 0) return 0;
+  return static_cast<int>(std::ceil(std::min(seconds, kMaxPollWait_real_s) * kMsPerSecond));
+}
+
+bool set_nonblocking(int fd) {
+  const int flags = fcntl(fd, F_GETFL, 0);
+  return flags >= 0 && fcntl(fd, F_SETFL, flags | O_NONBLOCK) == 0;
+}
+
+std::string errno_text(const char* what) { return std::string(what) + ": " + std::strerror(errno); }
+
+std::string own_hostname(const std::string& configured) {
+  if (!configured.empty()) return configured;
+  char buf[256] = {};
+  if (gethostname(buf, sizeof buf - 1) != 0) return {};
+  return buf;
+}
+
+/// The value of `token` in a comma-separated key=value list, key compared case-insensitively.
+std::string token_value(std::string_view list, std::string_view token) {
+  for (std::string_view item : text::split(list, ',')) {
+    const auto eq = item.find('=');
+    if (eq == std::string_view::npos) continue;
+    if (text::iequals(text::trim(item.substr(0, eq)), token))
+      return std::string(text::trim(item.substr(eq + 1)));
+  }
+  return {};
+}
+
+std::optional<in_addr> resolve_ipv4(const std::string& host, std::string* error) {
+  in_addr addr{};
+  if (text::iequals(host, "localhost")) {
+    addr.s_addr = htonl(INADDR_LOOPBACK);
+    return addr;
+  }
+  if (inet_pton(AF_INET, host.c_str(), &addr) == 1) return addr;
+  addrinfo hints{};
+  hints.ai_family = AF_INET;  // libMOOS is IPv4 only (spec 1.1)
+  hints.ai_socktype = SOCK_STREAM;
+  addrinfo* result = nullptr;
+  const int rc = getaddrinfo(host.c_str(), nullptr, &hints, &result);
+  if (rc != 0 || !result) {
+    *error = "cannot resolve host " + host + ": " + gai_strerror(rc);
+    return std::nullopt;
+  }
+  addr = reinterpret_cast<sockaddr_in*>(result->ai_addr)->sin_addr;
+  freeaddrinfo(result);
+  return addr;
+}
+
+}  // namespace
+
+TcpClient::TcpClient(TcpClientOptions options)
+    : Comms(options.name),
+      options_(std::move(options)),
+      clock_(options_.clock ? *options_.clock : system_clock()),
+      reader_(options_.max_packet_bytes) {}
+
+TcpClient::~TcpClient() { close(); }
+
+bool TcpClient::start() {
+  std::string problem;
+  if (options_.name.empty()) problem = "the client name is empty";
+  else if (options_.port < 1 || options_.port > kMaxPort) problem = "port " + std::to_string(options_.port) + " is outside 1..65535";
+  else if (!(options_.time_warp > 0 && options_.time_warp <= kMaxTimeWarp))
+    problem = "time warp " + text::format_g(options_.time_warp) + " is outside (0, 400]";
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (problem.empty() && state_ != ConnectionState::kNotStarted) problem = "already started";
+    if (!problem.empty()) {
+      last_error_ = problem;
+      return false;
+    }
+    int fds[2];
+    if (pipe(fds) != 0) {
+      last_error_ = errno_text("pipe");
+      return false;
+    }
+    wake_read_ = fds[0];
+    wake_write_ = fds[1];
+    set_nonblocking(wake_read_);
+    set_nonblocking(wake_write_);
+    state_ = ConnectionState::kConnecting;
+  }
+  thread_ = std::thread([this] { run(); });
+  return true;
+}
+
+void TcpClient::close() {
+  stopping_ = true;
+  wake();
+  if (thread_.joinable()) thread_.join();
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (wake_read_ >= 0) ::close(wake_read_);
+  if (wake_write_ >= 0) ::close(wake_write_);
+  wake_read_ = wake_write_ = -1;
+  if (state_ != ConnectionState::kNotStarted) state_ = ConnectionState::kClosed;
+  changed_.notify_all();
+}
+
+// ---- public state ---------------------------------------------------------------------------
+
+bool TcpClient::wait_until_connected(double timeout_real_s) const {
+  std::unique_lock<std::mutex> lock(mutex_);
+  changed_.wait_for(lock, std::chrono::duration<double>(timeout_real_s), [&] {
+    return state_ == ConnectionState::kConnected || state_ == ConnectionState::kPoisoned ||
+           state_ == ConnectionState::kClosed || state_ == ConnectionState::kNotStarted;
+  });
+  return state_ == ConnectionState::kConnected;
+}
+
+bool TcpClient::flush(double timeout_real_s) {
+  std::unique_lock<std::mutex> lock(mutex_);
+  const std::uint64_t connection = connections_;
+  const bool done = changed_.wait_for(lock, std::chrono::duration<double>(timeout_real_s), [&] {
+    return state_ != ConnectionState::kConnected || connections_ != connection ||
+           (outbox_.empty() && packets_in_flight_ == 0);
+  });
+  return done && state_ == ConnectionState::kConnected && connections_ == connection &&
+         outbox_.empty() && packets_in_flight_ == 0;
+}
+
+ConnectionState TcpClient::state() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return state_;
+}
+
+std::string TcpClient::last_error() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return last_error_;
+}
+
+std::string TcpClient::server_hostname() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return server_hostname_;
+}
+
+bool TcpClient::server_is_asynchronous() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return server_async_;
+}
+
+std::uint64_t TcpClient::packets_sent() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return packets_sent_;
+}
+
+bool TcpClient::is_connected() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return state_ == ConnectionState::kConnected;
+}
+
+std::uint64_t TcpClient::connection_count() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return connections_;
+}
+
+std::string TcpClient::community() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return community_;
+}
+
+std::vector<Message> TcpClient::fetch() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  std::vector<Message> mail;
+  mail.swap(inbox_);
+  return mail;
+}
+
+bool TcpClient::transmit(Message msg) {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (state_ != ConnectionState::kConnected) return false;
+    msg.id = next_id_++;  // every posted message consumes an id (spec 2.5)
+    outbox_.push_back(std::move(msg));
+  }
+  wake();
+  return true;
+}
+
+// ---- comms thread ---------------------------------------------------------------------------
+
+void TcpClient::wake() {
+  int fd = -1;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    fd = wake_write_;
+  }
+  if (fd < 0) return;
+  const char byte = 1;
+  // A full pipe already guarantees a wake-up; the result can be ignored.
+  [[maybe_unused]] const auto n = ::write(fd, &byte, 1);
+}
+
+void TcpClient::wait_for_wake(double timeout_real_s) {
+  const double deadline = steady_now_s() + timeout_real_s;
+  while (!stopping_) {
+    const double left = deadline - steady_now_s();
+    if (left <= 0) return;
+    pollfd p{wake_read_, POLLIN, 0};
+    if (::poll(&p, 1, poll_timeout_ms(left)) > 0) {
+      char buf[64];
+      while (::read(wake_read_, buf, sizeof buf) > 0) {
+      }
+    }
+  }
+}
+
+void TcpClient::set_error(const std::string& error) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  last_error_ = error;
+}
+
+double TcpClient::retry_delay_real_s() const { return 1.0 / options_.time_warp; }  // 1 MOOS s
+
+void TcpClient::run() {
+  while (!stopping_) {
+    if (connect_socket() && handshake()) {
+      fire_on_connect();
+      serve();
+      drop_connection("");
+    } else if (socket_ >= 0) {
+      ::close(socket_);
+      socket_ = -1;
+    }
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      if (state_ == ConnectionState::kPoisoned) break;
+    }
+    wait_for_wake(retry_delay_real_s());
+  }
+  if (socket_ >= 0) ::close(socket_);
+  socket_ = -1;
+}
+
+bool TcpClient::connect_socket() {
+  std::string error;
+  const auto addr = resolve_ipv4(options_.host, &error);
+  if (!addr) {
+    set_error(error);
+    return false;
+  }
+  socket_ = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
+  if (socket_ < 0) {
+    set_error(errno_text("socket"));
+    return false;
+  }
+  const int one = 1;
+  setsockopt(socket_, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);  // spec 1.1
+  set_nonblocking(socket_);
+  sockaddr_in sa{};
+  sa.sin_family = AF_INET;
+  sa.sin_port = htons(static_cast<std::uint16_t>(options_.port));
+  sa.sin_addr = *addr;
+  const std::string where = options_.host + ":" + std::to_string(options_.port);
+  if (::connect(socket_, reinterpret_cast<sockaddr*>(&sa), sizeof sa) == 0) return true;
+  if (errno != EINPROGRESS) {
+    set_error(errno_text(("connect to " + where).c_str()));
+    return false;
+  }
+  pollfd p[2] = {{socket_, POLLOUT, 0}, {wake_read_, POLLIN, 0}};
+  const double deadline = steady_now_s() + options_.connect_timeout_real_s;
+  while (!stopping_) {
+    const double left = deadline - steady_now_s();
+    if (left <= 0) {
+      set_error("connect to " + where + ": timed out");
+      return false;
+    }
+    if (::poll(p, 2, poll_timeout_ms(left)) > 0 && (p[0].revents != 0)) break;
+  }
+  if (stopping_) return false;
+  int so_error = 0;
+  socklen_t len = sizeof so_error;
+  getsockopt(socket_, SOL_SOCKET, SO_ERROR, &so_error, &len);
+  if (so_error != 0) {
+    set_error("connect to " + where + ": " + std::strerror(so_error));
+    return false;
+  }
+  return true;
+}
+
+bool TcpClient::handshake() {
+  if (options_.skew_policy != SkewPolicy::kNever) skew_s_ = 0.0;  // spec 1.8
+  Message ident;
+  ident.type = msg_type::kData;
+  ident.data_type = data_type::kString;
+  ident.key = kAsyncKey;
+  ident.sval = name();
+  ident.time = local_time();  // skew is 0 here, so this is the MOOS time libMOOS sends
+  write_buffer_ = protocol_banner() + encode_packet({ident});
+  write_offset_ = 0;
+  reader_ = PacketReader(options_.max_packet_bytes);
+
+  const double deadline = steady_now_s() + options_.handshake_timeout_real_s;
+  std::vector<Message> reply;
+  bool have_reply = false;
+  while (!stopping_ && !have_reply) {
+    if (!write_pending()) return false;
+    const double left = deadline - steady_now_s();
+    if (left <= 0) {
+      set_error("handshake: no reply from the server within " +
+                text::format_g(options_.handshake_timeout_real_s) + " s");
+      return false;
+    }
+    pollfd p[2] = {{socket_, static_cast<short>(POLLIN | (write_buffer_.empty() ? 0 : POLLOUT)), 0},
+                   {wake_read_, POLLIN, 0}};
+    ::poll(p, 2, poll_timeout_ms(left));
+    if (p[0].revents & (POLLIN | POLLERR | POLLHUP)) {
+      char buf[kReadChunkBytes];
+      const ssize_t n = ::recv(socket_, buf, sizeof buf, 0);
+      if (n == 0 || (n < 0 && errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR)) {
+        set_error("handshake: the server closed the connection");
+        return false;
+      }
+      if (n > 0) reader_.feed(std::string_view(buf, static_cast<std::size_t>(n)));
+      DecodeError derr;
+      const auto status = reader_.next(reply, &derr);
+      if (status == PacketReader::Status::kError) {
+        set_error("handshake: " + derr.reason);
+        return false;
+      }
+      have_reply = status == PacketReader::Status::kPacket;
+    }
+  }
+  if (stopping_) return false;
+  if (reply.empty()) {
+    set_error("handshake: the server's reply holds no message");
+    return false;
+  }
+  const Message& first = reply.front();  // libMOOS looks only at the first message (spec 1.7)
+  if (first.type == msg_type::kPoison) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    last_error_ = "refused by the server: " + first.sval;
+    state_ = ConnectionState::kPoisoned;
+    changed_.notify_all();
+    return false;
+  }
+
+  const std::string db_host = token_value(first.source_aux, kHostnameToken);
+  switch (options_.skew_policy) {
+    case SkewPolicy::kNever: time_correction_ = false; break;
+    case SkewPolicy::kAlways: time_correction_ = true; break;
+    case SkewPolicy::kLibMoos:
+      time_correction_ = first.source_aux.empty() || db_host != own_hostname(options_.own_hostname);
+      break;
+  }
+  if (time_correction_) skew_s_ = first.dval;
+  server_delay_s_ = 0.0;
+  last_timing_sent_.reset();
+  next_send_allowed_ = 0;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    community_ = first.community;
+    server_async_ = text::iequals(first.sval, kAsyncKey);
+    server_hostname_ = db_host;
+    state_ = ConnectionState::kConnected;
+    ++connections_;
+    // The server forgot our subscriptions: they go first (spec 1.9, 4.6).
+    std::vector<Message> replay = replay_messages();
+    for (auto& m : replay) m.id = next_id_++;
+    outbox_.insert(outbox_.begin(), replay.begin(), replay.end());
+    changed_.notify_all();
+  }
+  return true;
+}
+
+void TcpClient::drop_connection(const std::string& why) {
+  {
+    // State first, socket second: whoever sees the close also sees the reason.
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!why.empty()) last_error_ = why;
+    outbox_.clear();  // posts are only accepted while connected; these would go nowhere
+    packets_in_flight_ = 0;
+    if (state_ == ConnectionState::kConnected) state_ = ConnectionState::kConnecting;
+    changed_.notify_all();
+  }
+  if (socket_ >= 0) ::close(socket_);
+  socket_ = -1;
+  write_buffer_.clear();
+  write_offset_ = 0;
+  reader_ = PacketReader(options_.max_packet_bytes);
+}
+
+Message TcpClient::timing_message() const {
+  Message m;  // id -1, source "" (spec 2.6, vector I)
+  m.type = msg_type::kTiming;
+  m.data_type = data_type::kDouble;
+  m.key = kTimingKey;
+  m.time = local_time();
+  m.dval = 0.0;
+  return m;
+}
+
+void TcpClient::serve() {
+  // Bytes that followed WELCOME in the same segment belong to normal traffic (spec 5.1a).
+  if (!process_buffered()) return;
+  while (!stopping_) {
+    const double now = steady_now_s();
+    const bool timing_due = !last_timing_sent_ || now - *last_timing_sent_ >= kTimingInterval_real_s;
+    if (write_buffer_.empty() && now >= next_send_allowed_) {
+      std::vector<Message> batch;
+      {
+        std::lock_guard<std::mutex> lock(mutex_);
+        if (timing_due || !outbox_.empty()) {
+          if (timing_due) batch.push_back(timing_message());  // TIMING first (spec 4.3 step 2)
+          for (auto& m : outbox_) batch.push_back(std::move(m));
+          outbox_.clear();
+          ++packets_sent_;
+          ++packets_in_flight_;
+        }
+      }
+      if (!batch.empty()) {
+        if (timing_due) last_timing_sent_ = now;
+        write_buffer_ = encode_packet(batch);
+        write_offset_ = 0;
+      }
+    }
+    if (!write_pending()) return;
+
+    // Sleep until something happens or the next TIMING / send slot is due.
+    double wait = last_timing_sent_ ? *last_timing_sent_ + kTimingInterval_real_s - now : 0.0;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      if (!outbox_.empty() && write_buffer_.empty()) wait = std::min(wait, next_send_allowed_ - now);
+    }
+    pollfd p[2] = {{socket_, static_cast<short>(POLLIN | (write_buffer_.empty() ? 0 : POLLOUT)), 0},
+                   {wake_read_, POLLIN, 0}};
+    if (::poll(p, 2, poll_timeout_ms(wait)) < 0 && errno != EINTR) {
+      drop_connection(errno_text("poll"));
+      return;
+    }
+    if (p[1].revents & POLLIN) {
+      char buf[64];
+      while (::read(wake_read_, buf, sizeof buf) > 0) {
+      }
+    }
+    if ((p[0].revents & (POLLIN | POLLERR | POLLHUP)) && !read_available()) return;
+  }
+}
+
+bool TcpClient::write_pending() {
+  while (write_offset_ < write_buffer_.size()) {
+    const ssize_t n = ::send(socket_, write_buffer_.data() + write_offset_,
+                             write_buffer_.size() - write_offset_, MSG_NOSIGNAL);
+    if (n > 0) {
+      write_offset_ += static_cast<std::size_t>(n);
+      continue;
+    }
+    if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK || errno == EINTR)) return true;
+    drop_connection(errno_text("send"));
+    return false;
+  }
+  if (!write_buffer_.empty()) {
+    write_buffer_.clear();
+    write_offset_ = 0;
+    // Pause after each send (spec 4.3 step 4): the server's requested delay or the warp delay.
+    const double warp_delay_s = options_.time_warp > 1
+                                    ? options_.time_warp * options_.tw_delay_factor_ms / kMsPerSecond
+                                    : 0.0;
+    next_send_allowed_ = steady_now_s() + std::max(server_delay_s_.load(), warp_delay_s);
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (packets_in_flight_ > 0) --packets_in_flight_;
+    changed_.notify_all();
+  }
+  return true;
+}
+
+bool TcpClient::read_available() {
+  bool peer_closed = false;
+  char buf[kReadChunkBytes];
+  // Bounded so that a flooding server cannot starve our own sending.
+  for (int chunk = 0; chunk < kMaxReadChunksPerWake; ++chunk) {
+    const ssize_t n = ::recv(socket_, buf, sizeof buf, 0);
+    if (n > 0) {
+      reader_.feed(std::string_view(buf, static_cast<std::size_t>(n)));
+      continue;
+    }
+    if (n == 0) {
+      peer_closed = true;  // process what arrived before the close first
+      break;
+    }
+    if (errno == EAGAIN || errno == EWOULDBLOCK) break;
+    if (errno == EINTR) continue;
+    drop_connection(errno_text("recv"));
+    return false;
+  }
+  if (!process_buffered()) return false;
+  if (peer_closed) {
+    drop_connection("the server closed the connection");
+    return false;
+  }
+  return true;
+}
+
+bool TcpClient::process_buffered() {
+  std::vector<Message> messages;
+  while (true) {
+    DecodeError derr;
+    const auto status = reader_.next(messages, &derr);
+    if (status == PacketReader::Status::kNeedMore) return true;
+    if (status == PacketReader::Status::kError) {
+      drop_connection("bad packet from the server: " + derr.reason + " (offset " +
+                      std::to_string(derr.offset) + ")");
+      return false;
+    }
+    handle_packet(std::move(messages));
+  }
+}
+
+void TcpClient::handle_packet(std::vector<Message> messages) {
+  if (messages.empty()) return;
+  auto begin = messages.begin();
+  if (begin->type == msg_type::kTiming) {  // consumed by the comms layer (spec 4.3)
+    refine_skew(*begin);
+    ++begin;
+  }
+  bool added = false;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    for (auto it = begin; it != messages.end(); ++it) {
+      if (it->type == msg_type::kNull || it->type == msg_type::kTiming) continue;
+      inbox_.push_back(std::move(*it));
+      added = true;
+    }
+  }
+  if (added) fire_on_mail();
+}
+
+void TcpClient::refine_skew(const Message& echo) {
+  bool async = false;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    async = server_async_;
+  }
+  if (async) server_delay_s_ = std::max(0.0, echo.dval2);
+  if (!time_correction_) return;
+  // Spec 4.4: measured = Ts - (Tq + Tr) / 2; exponential filter unless the skew is exactly 0.
+  const double tq = echo.time;
+  const double ts = echo.dval;
+  const double tr = local_time();
+  const double measured = ts - (tq + tr) / 2.0;
+  const double current = skew_s_.load();
+  skew_s_ = current == 0.0 ? measured : kSkewMemory * current + (1.0 - kSkewMemory) * measured;
+}
+
+}  // namespace moos

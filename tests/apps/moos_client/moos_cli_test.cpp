@@ -1,0 +1,116 @@
+// moos-cli option parsing, poke value typing and watch line formatting (no processes).
+#include <gtest/gtest.h>
+
+#include "MoosCli_Info.hpp"
+#include "moos/alog.hpp"
+#include "moos_cli.hpp"
+
+namespace moos_cli {
+namespace {
+
+TEST(MoosCliOptions, PokeOptionsAndAssignments) {
+  std::string error;
+  const auto o = parse_options({"poke", "--host=10.1.1.1", "--port=9001", "--name=me", "--string",
+                                "--connect-timeout=2.5", "A=1", "B=x"},
+                               &error);
+  ASSERT_TRUE(o.has_value()) << error;
+  EXPECT_EQ(o->command, Command::kPoke);
+  EXPECT_EQ(o->host, "10.1.1.1");
+  EXPECT_EQ(o->port, 9001);
+  EXPECT_EQ(o->name, "me");
+  EXPECT_TRUE(o->all_strings);
+  EXPECT_EQ(o->connect_timeout_s, 2.5);
+  EXPECT_EQ(o->arguments, (std::vector<std::string>{"A=1", "B=x"}));
+}
+
+TEST(MoosCliOptions, WatchOptions) {
+  std::string error;
+  const auto o = parse_options({"watch", "--count=3", "--timeout=1.5", "NAV_*", "X"}, &error);
+  ASSERT_TRUE(o.has_value()) << error;
+  EXPECT_EQ(o->command, Command::kWatch);
+  EXPECT_EQ(o->count, 3);
+  EXPECT_EQ(o->timeout_s, 1.5);
+  EXPECT_EQ(o->port, 9000);
+  EXPECT_EQ(o->host, "localhost");
+}
+
+TEST(MoosCliOptions, UsageErrorsNameTheProblem) {
+  std::string error;
+  EXPECT_FALSE(parse_options({}, &error));
+  EXPECT_EQ(error, "no command given");
+  EXPECT_FALSE(parse_options({"peek"}, &error));
+  EXPECT_EQ(error, "unknown command: peek");
+  EXPECT_FALSE(parse_options({"poke", "--port=0", "A=1"}, &error));
+  EXPECT_EQ(error, "bad port: --port=0");
+  EXPECT_FALSE(parse_options({"poke", "--count=3", "A=1"}, &error));  // a watch option
+  EXPECT_NE(error.find("unknown option for poke"), std::string::npos);
+  EXPECT_FALSE(parse_options({"watch", "--count=0", "A"}, &error));
+  EXPECT_FALSE(parse_options({"watch", "--timeout=-1", "A"}, &error));
+  EXPECT_FALSE(parse_options({"watch"}, &error));
+  EXPECT_EQ(error, "watch needs at least one variable or pattern");
+  const auto help = parse_options({"poke", "--help"}, &error);
+  ASSERT_TRUE(help.has_value());
+  EXPECT_EQ(help->command, Command::kHelp);
+}
+
+TEST(MoosCliPoke, NumbersAreDoublesUnlessQuotedOrForced) {
+  std::string error;
+  auto p = parse_poke("DEPTH=12.5", false, &error);
+  ASSERT_TRUE(p.has_value());
+  EXPECT_TRUE(p->is_double);
+  EXPECT_EQ(p->dval, 12.5);
+  p = parse_poke("MODE=SURVEY", false, &error);
+  EXPECT_FALSE(p->is_double);
+  EXPECT_EQ(p->sval, "SURVEY");
+  p = parse_poke("N=\"12\"", false, &error);
+  EXPECT_FALSE(p->is_double);
+  EXPECT_EQ(p->sval, "12");
+  p = parse_poke("N:=12", false, &error);
+  EXPECT_EQ(p->var, "N");
+  EXPECT_FALSE(p->is_double);
+  p = parse_poke("N=12", true, &error);
+  EXPECT_FALSE(p->is_double);
+  p = parse_poke("SPEC=a=b,c=d", false, &error);
+  EXPECT_EQ(p->var, "SPEC");
+  EXPECT_EQ(p->sval, "a=b,c=d");
+  p = parse_poke("EMPTY=", false, &error);
+  EXPECT_FALSE(p->is_double);
+  EXPECT_EQ(p->sval, "");
+  p = parse_poke("INF=inf", false, &error);
+  EXPECT_FALSE(p->is_double);  // not a finite decimal: a string
+  EXPECT_FALSE(parse_poke("NOEQUALS", false, &error));
+  EXPECT_FALSE(parse_poke("=1", false, &error));
+  EXPECT_FALSE(parse_poke(":=1", false, &error));
+}
+
+TEST(MoosCliWatch, ValuesAndLinesFollowTheHelpText) {
+  moos::Message d = moos::make_double_notify("X", 0.1, "src", 1700000001.25);
+  EXPECT_EQ(format_watch_value(d), "0.1");
+  moos::Message s = moos::make_string_notify("S", "a\nb", "src", 0);
+  EXPECT_EQ(format_watch_value(s), "a\nb");
+  moos::Message b = moos::make_binary_notify("B", std::string("\x00\xff", 2), "src", 0);
+  EXPECT_EQ(format_watch_value(b), "<binary:2:00ff>");
+  moos::Message u = d;
+  u.data_type = moos::data_type::kNotSet;
+  EXPECT_EQ(format_watch_value(u), "<not set>");
+  const std::string line = format_watch_line(d, 1700000000.0);
+  const auto parsed = moos::parse_alog_line(line.substr(0, line.size() - 1));
+  ASSERT_EQ(parsed.kind, moos::AlogLineKind::kEntry);
+  EXPECT_DOUBLE_EQ(parsed.entry.time_s, 1.25);
+  EXPECT_EQ(parsed.entry.variable, "X");
+  EXPECT_EQ(parsed.entry.source, "src");
+  EXPECT_EQ(parsed.entry.value, "0.1");
+}
+
+TEST(MoosCliInfo, HelpDocumentsEveryOptionAndExitCode) {
+  const std::string help = help_text();
+  for (const char* option : {"--host=", "--port=", "--name=", "--string", "--count=", "--timeout=",
+                             "--connect-timeout=", "--moos_time_warp=", "<binary:N:HEX>"})
+    EXPECT_NE(help.find(option), std::string::npos) << option;
+  for (int code : {kExitOk, kExitUsage, kExitWatchTimeout, kExitNoConnection, kExitRefused,
+                   kExitNotWritten})
+    EXPECT_NE(help.find(std::to_string(code) + " "), std::string::npos) << code;
+}
+
+}  // namespace
+}  // namespace moos_cli

@@ -1,0 +1,274 @@
+// In-process bus: MOOSDB semantics of wire spec section 5, through the Comms interface.
+#include <gtest/gtest.h>
+
+#include "moos/bus.hpp"
+
+namespace moos {
+namespace {
+
+class BusTest : public ::testing::Test {
+ protected:
+  ManualClock clock{1000.0};
+  InProcessBus bus{clock, InProcessBus::Options{"alpha", 2.0}};
+  std::unique_ptr<BusClient> a = bus.connect("pA");
+  std::unique_ptr<BusClient> b = bus.connect("pB");
+};
+
+TEST_F(BusTest, TimeIsTheClockTimesTheWarp_0_3) {
+  EXPECT_DOUBLE_EQ(bus.moos_time(), 2000.0);
+  EXPECT_DOUBLE_EQ(a->moos_time(), 2000.0);
+  clock.advance_real_s(1.5);
+  EXPECT_DOUBLE_EQ(a->moos_time(), 2003.0);
+  EXPECT_EQ(a->community(), "alpha");
+  EXPECT_TRUE(a->is_connected());
+  EXPECT_EQ(a->connection_count(), 1u);
+}
+
+TEST_F(BusTest, SecondClientWithTheSameNameIsRefused_1_6) {
+  EXPECT_EQ(bus.connect("pA"), nullptr);
+  EXPECT_EQ(bus.connect(""), nullptr);
+  EXPECT_EQ(bus.client_names(), (std::vector<std::string>{"pA", "pB"}));
+  a.reset();
+  EXPECT_NE(bus.connect("pA"), nullptr);  // the name is free again
+}
+
+TEST_F(BusTest, LiveNotifyReachesEverySubscriberIncludingThePublisher_5_3) {
+  a->register_variable("DEPTH");
+  b->register_variable("DEPTH");
+  ASSERT_TRUE(a->notify("DEPTH", 12.5));
+  const auto mail_a = a->fetch();
+  const auto mail_b = b->fetch();
+  ASSERT_EQ(mail_a.size(), 1u);
+  ASSERT_EQ(mail_b.size(), 1u);
+  const Message& m = mail_b[0];
+  EXPECT_EQ(m.type, msg_type::kNotify);
+  EXPECT_EQ(m.key, "DEPTH");
+  EXPECT_TRUE(m.is_double());
+  EXPECT_EQ(m.dval, 12.5);
+  EXPECT_EQ(m.source, "pA");
+  EXPECT_EQ(m.community, "alpha");  // empty community filled with the bus's (spec 5.3 step 4)
+  EXPECT_DOUBLE_EQ(m.time, 2000.0);
+  EXPECT_TRUE(a->fetch().empty());  // fetch empties the inbox
+}
+
+TEST_F(BusTest, MailKeepsPostingOrderAcrossVariables) {
+  b->register_variable("X");
+  b->register_variable("Y");
+  for (int i = 0; i < 100; ++i) {
+    a->notify(i % 2 ? "X" : "Y", static_cast<double>(i));
+  }
+  const auto mail = b->fetch();
+  ASSERT_EQ(mail.size(), 100u);
+  for (int i = 0; i < 100; ++i) EXPECT_EQ(mail[static_cast<std::size_t>(i)].dval, i);
+}
+
+TEST_F(BusTest, RegisterSendsASnapshotOfTheLastWrite_5_4) {
+  a->notify("MODE", std::string("SURVEY"), 1234.5, "aux=1");
+  clock.advance_real_s(10);
+  b->register_variable("MODE");
+  auto mail = b->fetch();
+  ASSERT_EQ(mail.size(), 1u);
+  EXPECT_EQ(mail[0].id, kUnsetId);
+  EXPECT_EQ(mail[0].sval, "SURVEY");
+  EXPECT_EQ(mail[0].source, "pA");
+  EXPECT_EQ(mail[0].source_aux, "aux=1");
+  EXPECT_EQ(mail[0].time, 1234.5);  // the write's own time stamp
+  EXPECT_EQ(mail[0].dval, kUnsetDouble);
+  // Every REGISTER sends the snapshot again (spec 5.4).
+  b->register_variable("MODE");
+  EXPECT_EQ(b->fetch().size(), 1u);
+}
+
+TEST_F(BusTest, UnwrittenVariableSendsNothingUntilItsFirstWrite_5_4) {
+  b->register_variable("LATER");
+  EXPECT_TRUE(b->fetch().empty());
+  a->notify("LATER", 1.0);
+  EXPECT_EQ(b->fetch().size(), 1u);
+}
+
+TEST_F(BusTest, FirstWriteFixesTheDataType_5_3) {
+  b->register_variable("V");
+  a->notify("V", std::string("text"));
+  a->notify("V", 3.0);                        // D onto S: dropped
+  a->notify_binary("V", std::string("\x01", 1));  // B onto S: dropped too
+  a->notify("V", std::string("more"));
+  const auto mail = b->fetch();
+  ASSERT_EQ(mail.size(), 2u);
+  EXPECT_EQ(mail[1].sval, "more");
+  EXPECT_EQ(bus.diagnostics().size(), 2u);
+  EXPECT_EQ(bus.postings_of("V").size(), 2u);
+  EXPECT_EQ(bus.latest("V")->sval, "more");
+}
+
+TEST_F(BusTest, BinaryValuesKeepEveryByte_2_4) {
+  b->register_variable("BLOB");
+  const std::string bytes("\x00\xff\x10\x7f", 4);
+  a->notify_binary("BLOB", bytes);
+  const auto mail = b->fetch();
+  ASSERT_EQ(mail.size(), 1u);
+  EXPECT_TRUE(mail[0].is_binary());
+  EXPECT_EQ(mail[0].sval, bytes);
+}
+
+TEST_F(BusTest, ThrottledUpdatesAreDroppedNotDelayed_5_3) {
+  b->register_variable("NAV_X", 1.0);  // at most one per MOOS second
+  for (int i = 0; i < 10; ++i) {
+    a->notify("NAV_X", static_cast<double>(i));
+    clock.advance_real_s(0.125);  // warp 2: 0.25 MOOS s per post
+  }
+  const auto mail = b->fetch();
+  ASSERT_EQ(mail.size(), 3u);  // MOOS t = 0, 1.0, 2.0 since the first post
+  EXPECT_EQ(mail[0].dval, 0);
+  EXPECT_EQ(mail[1].dval, 4);
+  EXPECT_EQ(mail[2].dval, 8);
+}
+
+TEST_F(BusTest, SnapshotStartsTheThrottleWindow_5_4) {
+  a->notify("NAV_Y", 1.0);
+  b->register_variable("NAV_Y", 5.0);
+  a->notify("NAV_Y", 2.0);
+  ASSERT_EQ(b->fetch().size(), 1u);  // only the snapshot
+  clock.advance_real_s(2.5);          // 5 MOOS s
+  a->notify("NAV_Y", 3.0);
+  const auto mail = b->fetch();
+  ASSERT_EQ(mail.size(), 1u);
+  EXPECT_EQ(mail[0].dval, 3.0);
+}
+
+TEST_F(BusTest, UnregisterStopsDelivery_5_4) {
+  b->register_variable("X");
+  a->notify("X", 1.0);
+  EXPECT_TRUE(b->unregister_variable("X"));
+  a->notify("X", 2.0);
+  EXPECT_EQ(b->fetch().size(), 1u);
+  EXPECT_FALSE(b->unregister_variable("NEVER_REGISTERED"));  // nothing to send (spec 4.1)
+}
+
+TEST_F(BusTest, WildcardMatchesExistingVariablesByNameAndLastWriter_5_5) {
+  a->notify("NAV_X", 1.0);
+  b->notify("NAV_Y", 2.0);
+  a->notify("DEPTH", 3.0);
+  auto c = bus.connect("pC");
+  c->register_wildcard("NAV_*", "pA");
+  const auto mail = c->fetch();
+  ASSERT_EQ(mail.size(), 1u);  // NAV_Y was written by pB, DEPTH does not match
+  EXPECT_EQ(mail[0].key, "NAV_X");
+  a->notify("NAV_X", 4.0);
+  EXPECT_EQ(c->fetch().size(), 1u);
+}
+
+TEST_F(BusTest, WildcardBindsNewVariablesAtTheirFirstWrite_5_5) {
+  b->register_wildcard("X_*");  // any app
+  a->notify("X_STR", std::string("hello"));
+  a->notify("Y_STR", std::string("no"));
+  a->notify("X_STR", std::string("again"));
+  const auto mail = b->fetch();
+  ASSERT_EQ(mail.size(), 2u);
+  EXPECT_EQ(mail[0].sval, "hello");
+  EXPECT_EQ(mail[1].sval, "again");
+}
+
+TEST_F(BusTest, WildcardAppPatternIsCheckedAgainstTheFirstWriterOnly_5_5) {
+  b->register_wildcard("*", "pA");
+  a->notify("SHARED", 1.0);   // first writer pA: b subscribes
+  auto c = bus.connect("pC");
+  c->notify("SHARED", 2.0);   // later writers still reach b
+  c->notify("ONLY_C", 3.0);   // first writer pC: not subscribed
+  const auto mail = b->fetch();
+  ASSERT_EQ(mail.size(), 2u);
+  EXPECT_EQ(mail[1].source, "pC");
+}
+
+TEST_F(BusTest, WildcardThrottleUsesTheFilterInterval_5_5) {
+  b->register_wildcard("NAV_*", "*", 1.0);
+  for (int i = 0; i < 4; ++i) {
+    a->notify("NAV_Z", static_cast<double>(i));
+    clock.advance_real_s(0.25);  // 0.5 MOOS s
+  }
+  EXPECT_EQ(b->fetch().size(), 2u);
+}
+
+TEST_F(BusTest, WildcardUnregisterRemovesSubscriptionsAndTheFilter_5_5) {
+  a->notify("NAV_X", 1.0);
+  b->register_wildcard("NAV_*");
+  b->fetch();
+  EXPECT_TRUE(b->unregister_wildcard("NAV_*"));
+  a->notify("NAV_X", 2.0);
+  a->notify("NAV_NEW", 3.0);  // the filter is gone too (documented deviation, spec 5.5)
+  EXPECT_TRUE(b->fetch().empty());
+}
+
+TEST_F(BusTest, InvalidRegistrationsAreRefused_4_1) {
+  EXPECT_FALSE(a->register_variable(""));
+  EXPECT_FALSE(a->register_variable("X", -1.0));
+  EXPECT_FALSE(a->register_wildcard("A,B"));
+  EXPECT_FALSE(a->register_wildcard("X", "p,q"));
+  EXPECT_FALSE(a->notify("", 1.0));
+}
+
+TEST_F(BusTest, StatusListsComeFromTheBook_7_1) {
+  a->register_variable("Y");
+  a->register_variable("X");
+  a->register_wildcard("NAV_*");
+  a->notify("OUT_B", 1.0);
+  a->notify("OUT_A", std::string("s"));
+  EXPECT_EQ(a->registered_names(), (std::set<std::string>{"X", "Y"}));
+  EXPECT_EQ(a->published_names(), (std::set<std::string>{"OUT_A", "OUT_B"}));
+}
+
+TEST_F(BusTest, PostingWhileDisconnectedFails_1_9) {
+  b->register_variable("X");
+  a->simulate_disconnect();
+  EXPECT_FALSE(a->is_connected());
+  EXPECT_FALSE(a->notify("X", 1.0));
+  EXPECT_TRUE(b->fetch().empty());
+  EXPECT_TRUE(a->published_names().empty());
+}
+
+TEST_F(BusTest, ReconnectReplaysEverySubscriptionThenCallsOnConnect_1_9) {
+  a->register_variable("X", 0.0);
+  a->register_wildcard("NAV_*");
+  int connects = 0;
+  std::size_t mail_at_connect = 0;
+  a->set_on_connect([&] {
+    ++connects;
+    mail_at_connect = a->fetch().size();  // the replay's snapshots arrived before the callback
+  });
+  b->notify("X", 1.0);
+  b->notify("NAV_X", 1.0);
+  a->fetch();
+  a->simulate_disconnect();
+  b->notify("X", 2.0);  // missed while away
+  EXPECT_TRUE(a->simulate_reconnect());
+  EXPECT_EQ(connects, 1);
+  EXPECT_EQ(a->connection_count(), 2u);
+  EXPECT_EQ(mail_at_connect, 2u);  // snapshots of X and NAV_X
+  b->notify("X", 3.0);
+  b->notify("NAV_Y", 3.0);
+  EXPECT_EQ(a->fetch().size(), 2u);
+}
+
+TEST_F(BusTest, OnMailCallbackWakesTheSubscriber_4_5) {
+  int woken = 0;
+  b->set_on_mail([&] { ++woken; });
+  b->register_variable("X");
+  a->notify("X", 1.0);
+  a->notify("OTHER", 1.0);
+  EXPECT_EQ(woken, 1);
+}
+
+TEST_F(BusTest, PostingsHistoryAndLatest) {
+  a->notify("X", 1.0);
+  b->notify("Y", std::string("y"));
+  const auto all = bus.postings();
+  ASSERT_EQ(all.size(), 2u);
+  EXPECT_EQ(all[0].source, "pA");
+  EXPECT_EQ(all[1].source, "pB");
+  EXPECT_FALSE(bus.latest("Z").has_value());
+  bus.clear_postings();
+  EXPECT_TRUE(bus.postings().empty());
+  EXPECT_EQ(bus.latest("X")->dval, 1.0);
+}
+
+}  // namespace
+}  // namespace moos
