@@ -1,9 +1,8 @@
 #include "moos/alog.hpp"
 
-#include <cerrno>
-#include <cmath>
 #include <cstdio>
-#include <cstdlib>
+
+#include "moos/text.hpp"
 
 namespace moos {
 
@@ -28,16 +27,6 @@ std::string_view next_token(std::string_view& rest) {
   const std::string_view token = rest.substr(0, end);
   rest.remove_prefix(end == std::string_view::npos ? rest.size() : end);
   return token;
-}
-
-std::optional<double> parse_finite(std::string_view text) {
-  if (text.empty()) return std::nullopt;
-  const std::string copy(text);
-  char* end = nullptr;
-  errno = 0;
-  const double v = std::strtod(copy.c_str(), &end);
-  if (end != copy.c_str() + copy.size() || errno == ERANGE || !std::isfinite(v)) return std::nullopt;
-  return v;
 }
 
 void append_padded(std::string& out, std::string_view text, std::size_t width) {
@@ -88,7 +77,7 @@ AlogParse parse_alog_line(std::string_view line) {
   const auto value_start = rest.find_first_not_of(kBlanks);
   const std::string_view value =
       value_start == std::string_view::npos ? std::string_view{} : rest.substr(value_start);
-  const auto t = parse_finite(time);
+  const auto t = text::parse_number(time);
   if (!t) {
     result.kind = AlogLineKind::kMalformed;
     result.error = "time '" + std::string(time) + "' is not a finite number";
@@ -108,7 +97,7 @@ std::optional<double> alog_logstart(std::string_view header_line) {
   std::string_view rest = trim_right_cr(header_line);
   if (next_token(rest) != "%%") return std::nullopt;
   if (next_token(rest) != "LOGSTART") return std::nullopt;
-  return parse_finite(next_token(rest));
+  return text::parse_number(next_token(rest));
 }
 
 }  // namespace moos
