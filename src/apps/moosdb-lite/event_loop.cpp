@@ -1,0 +1,282 @@
+// Socket event loop of moosdb-lite. See event_loop.hpp.
+//
+// One poll() round: accept new connections, read from readable ones (each read goes to
+// the Hub at once and its actions are applied before the next read, so a connection the
+// Hub closes is never read again), run the Hub's timers, write what is pending, enforce
+// the output limits, and close what is finished. Poll wakes at least every
+// kPollInterval_ms so timeouts and the DB-variable timer run without traffic.
+
+#include "event_loop.hpp"
+
+#include <arpa/inet.h>
+#include <fcntl.h>
+#include <netinet/in.h>
+#include <netinet/tcp.h>
+#include <poll.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <vector>
+
+namespace moosdb_lite {
+
+namespace {
+
+/// Longest sleep in poll(): the granularity of timeouts and the DB-variable timer.
+constexpr int kPollInterval_ms = 50;
+/// Listen backlog of the reference DB (spec 1.1).
+constexpr int kListenBacklog = 50;
+/// One recv() call; and the most read from one connection in one round (fairness).
+constexpr std::size_t kReadChunkBytes = 64 * 1024;
+constexpr std::size_t kReadBudgetBytes = 1024 * 1024;
+/// New connections accepted per round (the rest wait for the next round).
+constexpr int kMaxAcceptsPerRound = 64;
+
+std::string errno_text() { return std::strerror(errno); }
+
+std::string peer_name(const sockaddr_in& addr) {
+  char host[INET_ADDRSTRLEN] = "?";
+  inet_ntop(AF_INET, &addr.sin_addr, host, sizeof host);
+  return std::string(host) + ":" + std::to_string(ntohs(addr.sin_port));
+}
+
+bool write_port_file(const std::string& path, int port, std::string* error) {
+  const std::string temporary = path + ".tmp";
+  std::FILE* f = std::fopen(temporary.c_str(), "w");
+  if (f == nullptr) {
+    *error = "cannot write port file " + temporary + ": " + errno_text();
+    return false;
+  }
+  std::fprintf(f, "%d\n", port);
+  const bool written = std::fclose(f) == 0;
+  if (!written || std::rename(temporary.c_str(), path.c_str()) != 0) {
+    *error = "cannot write port file " + path + ": " + errno_text();
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+double unix_time_s() {
+  using namespace std::chrono;
+  return duration<double>(system_clock::now().time_since_epoch()).count();
+}
+
+EventLoop::EventLoop(EventLoopConfig config, Hub& hub, LogSink log)
+    : config_(std::move(config)), hub_(hub), log_(std::move(log)) {}
+
+EventLoop::~EventLoop() {
+  for (auto& [id, socket] : sockets_) ::close(socket.fd);
+  if (listen_fd_ >= 0) ::close(listen_fd_);
+}
+
+bool EventLoop::listen(std::string* error) {
+  sockaddr_in addr{};
+  addr.sin_family = AF_INET;
+  addr.sin_port = htons(static_cast<std::uint16_t>(config_.port));
+  if (inet_pton(AF_INET, config_.bind_address.c_str(), &addr.sin_addr) != 1) {
+    *error = "not an IPv4 address: " + config_.bind_address;
+    return false;
+  }
+  listen_fd_ = ::socket(AF_INET, SOCK_STREAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0);
+  if (listen_fd_ < 0) {
+    *error = "socket: " + errno_text();
+    return false;
+  }
+  const int on = 1;
+  setsockopt(listen_fd_, SOL_SOCKET, SO_REUSEADDR, &on, sizeof on);
+  if (::bind(listen_fd_, reinterpret_cast<const sockaddr*>(&addr), sizeof addr) != 0) {
+    *error = "cannot bind " + config_.bind_address + ":" + std::to_string(config_.port) + ": " +
+             errno_text();
+    return false;
+  }
+  if (::listen(listen_fd_, kListenBacklog) != 0) {
+    *error = "listen: " + errno_text();
+    return false;
+  }
+  socklen_t length = sizeof addr;
+  getsockname(listen_fd_, reinterpret_cast<sockaddr*>(&addr), &length);
+  bound_port_ = ntohs(addr.sin_port);
+  if (config_.port_file && !write_port_file(*config_.port_file, bound_port_, error)) return false;
+  return true;
+}
+
+void EventLoop::run(int wake_fd, const volatile std::sig_atomic_t& stop_requested,
+                    const std::function<void()>& after_round) {
+  std::vector<pollfd> fds;
+  std::vector<ConnectionId> ids;
+  while (stop_requested == 0) {
+    fds.clear();
+    ids.clear();
+    fds.push_back(pollfd{listen_fd_, POLLIN, 0});
+    fds.push_back(pollfd{wake_fd, POLLIN, 0});
+    for (const auto& [id, socket] : sockets_) {
+      short events = 0;
+      if (!socket.closing) events |= POLLIN;
+      if (socket.pending() > 0 && !socket.broken) events |= POLLOUT;
+      fds.push_back(pollfd{socket.fd, events, 0});
+      ids.push_back(id);
+    }
+    if (::poll(fds.data(), fds.size(), kPollInterval_ms) < 0 && errno != EINTR) {
+      log_("poll failed: " + errno_text());
+      return;
+    }
+    double now = unix_time_s();
+    if (fds[1].revents != 0) {
+      char drain[64];
+      while (::read(wake_fd, drain, sizeof drain) > 0) {
+      }
+    }
+    if (fds[0].revents & POLLIN) accept_new(now);
+    for (std::size_t i = 0; i < ids.size(); ++i) {
+      if (fds[i + 2].revents & (POLLIN | POLLHUP | POLLERR)) read_from(ids[i], now);
+    }
+    now = unix_time_s();
+    hub_.tick(now);
+    apply_actions(now);
+    for (auto& [id, socket] : sockets_) {
+      if (socket.pending() > 0 && !socket.broken) write_to(id, now);
+    }
+    apply_actions(now);
+    enforce_output_limits(now);
+    reap_closed(now);
+    if (after_round) after_round();
+  }
+}
+
+void EventLoop::accept_new(double now) {
+  for (int i = 0; i < kMaxAcceptsPerRound; ++i) {
+    sockaddr_in addr{};
+    socklen_t length = sizeof addr;
+    const int fd = ::accept4(listen_fd_, reinterpret_cast<sockaddr*>(&addr), &length,
+                             SOCK_NONBLOCK | SOCK_CLOEXEC);
+    if (fd < 0) {
+      if (errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR)
+        log_("accept failed: " + errno_text());
+      return;
+    }
+    const int on = 1;
+    setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &on, sizeof on);
+    const ConnectionId id = hub_.open(peer_name(addr), now);
+    Socket socket;
+    socket.fd = fd;
+    socket.last_progress_real_s = now;
+    sockets_.emplace(id, std::move(socket));
+  }
+}
+
+void EventLoop::read_from(ConnectionId id, double now) {
+  static char buffer[kReadChunkBytes];
+  std::size_t budget = kReadBudgetBytes;
+  while (budget > 0) {
+    const auto it = sockets_.find(id);
+    if (it == sockets_.end() || it->second.closing) return;
+    const ssize_t n = ::recv(it->second.fd, buffer, sizeof buffer, 0);
+    if (n > 0) {
+      hub_.receive(id, std::string_view(buffer, static_cast<std::size_t>(n)), now);
+      apply_actions(now);
+      budget -= std::min(budget, static_cast<std::size_t>(n));
+      continue;
+    }
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) return;
+    // End of stream, or a socket error: every complete packet has been processed already.
+    const std::string reason = n == 0 ? std::string() : "socket error: " + errno_text();
+    hub_.end_of_stream(id, now, reason);
+    apply_actions(now);
+    return;
+  }
+}
+
+void EventLoop::write_to(ConnectionId id, double now) {
+  Socket& socket = sockets_.at(id);
+  while (socket.pending() > 0) {
+    const ssize_t n = ::send(socket.fd, socket.out.data() + socket.out_offset, socket.pending(),
+                             MSG_NOSIGNAL);
+    if (n > 0) {
+      socket.out_offset += static_cast<std::size_t>(n);
+      socket.last_progress_real_s = now;
+      continue;
+    }
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) break;
+    socket.broken = true;
+    const std::string reason = "write failed: " + errno_text();
+    socket.out.clear();
+    socket.out_offset = 0;
+    hub_.end_of_stream(id, now, reason);
+    return;
+  }
+  // Compact once the written part dominates, so the buffer does not grow without bound.
+  if (socket.out_offset == socket.out.size()) {
+    socket.out.clear();
+    socket.out_offset = 0;
+  } else if (socket.out_offset > socket.out.size() / 2) {
+    socket.out.erase(0, socket.out_offset);
+    socket.out_offset = 0;
+  }
+}
+
+void EventLoop::apply_actions(double now) {
+  for (auto& action : hub_.take_actions()) {
+    const auto it = sockets_.find(action.id);
+    if (it == sockets_.end()) continue;
+    Socket& socket = it->second;
+    switch (action.kind) {
+      case Action::Kind::kSend:
+        if (socket.broken) break;
+        if (socket.pending() == 0) socket.last_progress_real_s = now;
+        socket.out += action.bytes;
+        break;
+      case Action::Kind::kClose:
+        close_socket(action.id);
+        break;
+      case Action::Kind::kCloseAfterSend:
+        socket.closing = true;
+        socket.close_deadline_real_s = now + kCloseGrace_s;
+        break;
+    }
+  }
+}
+
+void EventLoop::enforce_output_limits(double now) {
+  std::vector<std::pair<ConnectionId, std::string>> overloaded;
+  for (const auto& [id, socket] : sockets_) {
+    if (socket.closing || socket.broken) continue;
+    if (socket.pending() > config_.max_output_bytes) {
+      overloaded.emplace_back(id, std::to_string(socket.pending()) +
+                                      " unsent bytes exceed the limit of " +
+                                      std::to_string(config_.max_output_bytes) +
+                                      " (the client does not read fast enough)");
+    } else if (socket.pending() > 0 && now - socket.last_progress_real_s > kSendStall_s) {
+      overloaded.emplace_back(id, "nothing could be written for " +
+                                      std::to_string(static_cast<int>(kSendStall_s)) + " s");
+    }
+  }
+  for (const auto& [id, reason] : overloaded) hub_.drop(id, reason, now);
+  if (!overloaded.empty()) apply_actions(now);
+}
+
+void EventLoop::reap_closed(double now) {
+  std::vector<ConnectionId> finished;
+  for (const auto& [id, socket] : sockets_) {
+    if (socket.closing &&
+        (socket.pending() == 0 || socket.broken || now > socket.close_deadline_real_s))
+      finished.push_back(id);
+  }
+  for (const ConnectionId id : finished) close_socket(id);
+}
+
+void EventLoop::close_socket(ConnectionId id) {
+  const auto it = sockets_.find(id);
+  if (it == sockets_.end()) return;
+  ::close(it->second.fd);
+  sockets_.erase(it);
+}
+
+}  // namespace moosdb_lite

@@ -1,0 +1,89 @@
+#pragma once
+// The socket side of moosdb-lite: one thread, poll(), non-blocking sockets. All protocol
+// decisions are the Hub's; this file only moves bytes and enforces transport limits.
+//
+// Contract:
+// - listen() binds an IPv4 TCP listener (SO_REUSEADDR, backlog 50 as the reference DB),
+//   and writes the bound port to the port file (written to a temporary name, then renamed,
+//   so a reader never sees a partial number).
+// - run() serves until `stop_requested` becomes non-zero (the signal handler also writes a
+//   byte to `wake_fd` so poll() returns at once). Every accepted socket gets TCP_NODELAY
+//   (spec 1.1). Reads are bounded per connection per round, so one flooding client cannot
+//   starve the others.
+// - Each connection has an output buffer. If its unsent bytes exceed `max_output_bytes`,
+//   or nothing could be written for kSendStall_s while bytes were waiting (the reference
+//   DB's 6 s send timeout, spec 1.1), the connection is dropped with a logged reason.
+// - A connection closed "after send" gets at most kCloseGrace_s to take its last bytes.
+
+#include <csignal>
+#include <cstddef>
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+
+#include "hub.hpp"
+
+namespace moosdb_lite {
+
+/// The reference DB sets a 6 s SO_SNDTIMEO; a stuck write ends the connection (spec 1.1).
+inline constexpr double kSendStall_s = 6.0;
+/// Time given to a closing connection to take a POISON or its last reply.
+inline constexpr double kCloseGrace_s = 2.0;
+
+struct EventLoopConfig {
+  std::string bind_address;
+  int port = 0;  ///< 0: the OS picks
+  std::optional<std::string> port_file;
+  std::size_t max_output_bytes = 0;
+};
+
+class EventLoop {
+ public:
+  using LogSink = std::function<void(const std::string&)>;
+  EventLoop(EventLoopConfig config, Hub& hub, LogSink log);
+  ~EventLoop();
+  EventLoop(const EventLoop&) = delete;
+  EventLoop& operator=(const EventLoop&) = delete;
+
+  /// Binds and listens; false with `error` filled on failure.
+  bool listen(std::string* error);
+  int bound_port() const { return bound_port_; }
+
+  /// Serves until `stop_requested` is set. `after_round` runs after every poll round
+  /// (the caller flushes its log file there).
+  void run(int wake_fd, const volatile std::sig_atomic_t& stop_requested,
+           const std::function<void()>& after_round);
+
+ private:
+  struct Socket {
+    int fd = -1;
+    std::string out;
+    std::size_t out_offset = 0;
+    bool closing = false;        ///< no more reads; close once `out` is written
+    double close_deadline_real_s = 0;
+    double last_progress_real_s = 0;
+    bool broken = false;         ///< a write failed: close without further writes
+    std::size_t pending() const { return out.size() - out_offset; }
+  };
+
+  void accept_new(double now);
+  void read_from(ConnectionId id, double now);
+  void write_to(ConnectionId id, double now);
+  void apply_actions(double now);
+  void enforce_output_limits(double now);
+  void reap_closed(double now);
+  void close_socket(ConnectionId id);
+
+  EventLoopConfig config_;
+  Hub& hub_;
+  LogSink log_;
+  int listen_fd_ = -1;
+  int bound_port_ = 0;
+  std::map<ConnectionId, Socket> sockets_;
+};
+
+/// Wall-clock unix time in seconds (MOOS time is epoch based, spec 0.3).
+double unix_time_s();
+
+}  // namespace moosdb_lite

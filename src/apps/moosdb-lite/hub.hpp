@@ -1,0 +1,122 @@
+#pragma once
+// The connection state machine of moosdb-lite (../shared/spec/moos-wire-protocol.md 5.1a),
+// between raw bytes and the Database, without sockets.
+//
+// Contract:
+// - The transport opens a connection (open), hands over received bytes in any segmentation
+//   (receive), reports end of stream (end_of_stream), drops connections for its own reasons
+//   (drop), and calls tick() regularly (at least every 100 ms) with the current time.
+// - Time comes in as real unix seconds; the server's MOOS time is that times the warp.
+// - Every call appends Actions (send bytes / close) in the order they must be applied.
+//   Bytes that follow the banner or the identification packet in the same segment belong to
+//   the next state and are never discarded (5.1a). Every complete packet is processed even
+//   if the peer closes right after it (5.6).
+// - States: BANNER (32 bytes, banner_timeout_s) -> IDENT (one packet, handshake_timeout_s)
+//   -> ACTIVE (inactivity limit client_timeout_s, none if unset) -> closed. A wrong banner
+//   closes without a reply; a failed identification gets POISON (1.6) before the close;
+//   a framing or decoding error, an oversized packet header, a truncated packet at end of
+//   stream or inactivity closes the connection. Each close of a misbehaving peer is logged
+//   with the peer, the client name once known, and the reason.
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "database.hpp"
+#include "moos/codec.hpp"
+
+namespace moosdb_lite {
+
+using ConnectionId = ClientId;
+
+/// Banner and identification limits (spec 1.5: the DB reads the identification with a
+/// 5-second timeout; the banner gets the same).
+inline constexpr double kDefaultBannerTimeout_s = 5.0;
+inline constexpr double kDefaultHandshakeTimeout_s = 5.0;
+/// Inactivity limit of the reference DB (spec 1.9, mission global ClientTimeout).
+inline constexpr double kDefaultClientTimeout_s = 5.0;
+/// DB_TIME, DB_UPTIME, DB_CLIENTS, DB_RWSUMMARY are rewritten this often (real seconds;
+/// spec 5.6 SHOULD asks for 1-2 s).
+inline constexpr double kDbVariableRefreshInterval_s = 1.0;
+
+struct HubConfig {
+  DatabaseConfig database;
+  double time_warp = 1.0;  ///< MOOS time = unix time x warp (spec 0.3), 0 < warp <= 400
+  double banner_timeout_s = kDefaultBannerTimeout_s;
+  double handshake_timeout_s = kDefaultHandshakeTimeout_s;
+  std::optional<double> client_timeout_s = kDefaultClientTimeout_s;  ///< nullopt: never
+  std::size_t max_packet_bytes = moos::kDefaultMaxPacketBytes;
+};
+
+struct Action {
+  enum class Kind {
+    kSend,          ///< append `bytes` to the connection's output
+    kClose,         ///< close now; pending output is discarded
+    kCloseAfterSend ///< stop reading, close once the pending output is written
+  };
+  Kind kind = Kind::kSend;
+  ConnectionId id = 0;
+  std::string bytes;
+};
+
+class Hub {
+ public:
+  using LogSink = std::function<void(const std::string&)>;
+
+  /// `observer` sees every NOTIFY the Database accepts (see Database).
+  Hub(HubConfig config, double start_real_s, LogSink log,
+      Database::NotifyObserver observer = {});
+
+  /// A new connection from `peer` (e.g. "127.0.0.1:40312"); returns its id.
+  ConnectionId open(std::string peer, double now_real_s);
+  void receive(ConnectionId id, std::string_view bytes, double now_real_s);
+  /// The peer closed its side (or the socket failed: `reason` says how).
+  void end_of_stream(ConnectionId id, double now_real_s, std::string_view reason = {});
+  /// The transport gives up on a connection (e.g. its output overflowed); logged.
+  void drop(ConnectionId id, const std::string& reason, double now_real_s);
+  /// Timeouts and the DB-variable timer.
+  void tick(double now_real_s);
+
+  std::vector<Action> take_actions();
+
+  Database& database() { return db_; }
+  /// "client "pFoo" (127.0.0.1:40312)" or "connection #3 (127.0.0.1:40312)".
+  std::string describe(ConnectionId id) const;
+  std::size_t connection_count() const { return connections_.size(); }
+
+ private:
+  enum class State { kBanner, kIdent, kActive };
+
+  struct Connection {
+    std::string peer;
+    State state = State::kBanner;
+    std::string banner;            ///< banner bytes received so far
+    moos::PacketReader reader;
+    double state_since_real_s = 0; ///< when the current state began
+    double last_packet_real_s = 0; ///< last complete packet (ACTIVE)
+    explicit Connection(std::size_t max_packet_bytes) : reader(max_packet_bytes) {}
+  };
+
+  void process_banner(ConnectionId id, Connection& conn, std::string_view& bytes, double now);
+  void process_packets(ConnectionId id, double now);
+  void handle_identification(ConnectionId id, const std::vector<moos::Message>& packet,
+                             double now);
+  void close(ConnectionId id, const std::string& reason, double now, Action::Kind kind);
+  void collect_database_output(double now);
+  double moos_time(double now_real_s) const { return now_real_s * config_.time_warp; }
+
+  HubConfig config_;
+  LogSink log_;
+  Database db_;
+  std::map<ConnectionId, Connection> connections_;
+  ConnectionId next_id_ = 1;
+  double last_refresh_real_s_;
+  std::vector<Action> actions_;
+};
+
+}  // namespace moosdb_lite

@@ -1,0 +1,89 @@
+#pragma once
+// moosdb-lite's configuration: the reference MOOSDB's command line and mission globals
+// (../shared/spec/moos-wire-protocol.md 5.11) plus our own switches, in one table
+// (style practice 5: the parser and --help read the same rows).
+//
+// Contract:
+// - parse_command_line() never exits and never prints: it returns what it understood, the
+//   errors (each naming the argument and why) and notes (real-MOOSDB switches we accept
+//   and ignore).
+// - resolve_options() merges, in increasing priority: built-in defaults, mission globals
+//   (Community, ServerPort, MOOSTimeWarp, ClientTimeout), command-line switches. Every bad
+//   value is an error naming where it came from (switch, or mission file and variable).
+// - The first free argument is the mission file, the second the pAntler alias (ignored).
+
+#include <cstddef>
+#include <functional>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace moosdb_lite {
+
+/// Defaults of the reference MOOSDB (spec 5.11, 1.1) and our own.
+inline constexpr int kDefaultPort = 9000;
+inline constexpr const char* kDefaultBindAddress = "127.0.0.1";
+inline constexpr const char* kDefaultMissionFile = "Mission.moos";
+/// Time warp limits of libMOOS (spec 0.3): 0 < warp <= 400.
+inline constexpr double kMaxTimeWarp = 400.0;
+
+/// One row of the option table: what --help prints.
+struct OptionDoc {
+  std::string name;     ///< e.g. "--moos_port=PORT"
+  std::string meaning;  ///< one line, with the default (built from the constants)
+};
+const std::vector<OptionDoc>& option_docs();
+/// Mission-file globals that moosdb-lite reads, with meaning and default.
+const std::vector<OptionDoc>& mission_global_docs();
+
+/// What the command line says; unset fields were not given.
+struct CommandLine {
+  std::optional<std::string> mission_file;
+  std::optional<std::string> alias;
+  std::optional<std::string> community;
+  std::optional<int> port;
+  std::optional<double> time_warp;
+  std::optional<double> client_timeout_s;
+  std::optional<std::string> bind_address;
+  std::optional<std::string> log_file;
+  std::optional<std::string> port_file;
+  std::optional<std::size_t> max_packet_bytes;
+  std::optional<std::size_t> max_output_bytes;
+  std::optional<double> banner_timeout_s;
+  std::optional<double> handshake_timeout_s;
+  bool help = false;
+  bool version = false;
+  std::vector<std::string> notes;
+  std::vector<std::string> errors;
+};
+
+CommandLine parse_command_line(const std::vector<std::string>& args);
+
+/// The resolved configuration of one server run.
+struct ServerOptions {
+  std::optional<std::string> mission_file;  ///< the file actually read, if any
+  std::string community;
+  int port = kDefaultPort;                  ///< 0: the OS picks a free port
+  double time_warp = 1.0;
+  std::optional<double> client_timeout_s;   ///< nullopt: clients never time out
+  std::string bind_address = kDefaultBindAddress;
+  std::optional<std::string> log_file;
+  std::optional<std::string> port_file;
+  std::size_t max_packet_bytes = 0;
+  std::size_t max_output_bytes = 0;
+  double banner_timeout_s = 0.0;
+  double handshake_timeout_s = 0.0;
+};
+
+/// Looks a mission global up (case-insensitive key, blanks removed from the value);
+/// nullopt if absent. An empty function means "no mission file".
+using MissionGlobalLookup = std::function<std::optional<std::string>(std::string_view key)>;
+
+/// Merges defaults, mission globals and the command line (see the contract). `mission_name`
+/// names the mission file in errors. Problems go to `errors`, ignored settings to `notes`.
+ServerOptions resolve_options(const CommandLine& cli, const std::string& mission_name,
+                              const MissionGlobalLookup& mission_global,
+                              std::vector<std::string>* errors, std::vector<std::string>* notes);
+
+}  // namespace moosdb_lite

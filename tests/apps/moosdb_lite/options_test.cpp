@@ -1,0 +1,149 @@
+// moosdb-lite's command line and mission globals (spec 5.11) and its help text.
+
+#include <gtest/gtest.h>
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "MoosDBLite_Info.hpp"
+#include "options.hpp"
+
+namespace moosdb_lite {
+namespace {
+
+struct Resolved {
+  ServerOptions options;
+  std::vector<std::string> errors;
+  std::vector<std::string> notes;
+};
+
+Resolved resolve(const std::vector<std::string>& args,
+                 const std::map<std::string, std::string>* globals = nullptr) {
+  const CommandLine cli = parse_command_line(args);
+  EXPECT_TRUE(cli.errors.empty()) << cli.errors.front();
+  MissionGlobalLookup lookup;
+  if (globals) {
+    lookup = [globals](std::string_view key) -> std::optional<std::string> {
+      const auto it = globals->find(std::string(key));
+      if (it == globals->end()) return std::nullopt;
+      return it->second;
+    };
+  }
+  Resolved r;
+  r.options = resolve_options(cli, "m.moos", lookup, &r.errors, &r.notes);
+  return r;
+}
+
+TEST(Options, DefaultsAreThoseOfTheReferenceDb_5_11) {
+  const auto r = resolve({});
+  EXPECT_TRUE(r.errors.empty());
+  EXPECT_FALSE(r.options.mission_file);
+  EXPECT_EQ(r.options.community, "#1");
+  EXPECT_EQ(r.options.port, 9000);
+  EXPECT_EQ(r.options.time_warp, 1.0);
+  ASSERT_TRUE(r.options.client_timeout_s);
+  EXPECT_EQ(*r.options.client_timeout_s, 5.0);
+  EXPECT_EQ(r.options.bind_address, "127.0.0.1");
+  EXPECT_EQ(r.options.max_packet_bytes, 128u * 1024u * 1024u);
+}
+
+TEST(Options, MissionGlobalsAreRead_5_11) {
+  const std::map<std::string, std::string> globals = {
+      {"Community", "alpha"}, {"ServerPort", "9100"}, {"MOOSTimeWarp", "10"}, {"ClientTimeout", "8"}};
+  const auto r = resolve({"m.moos"}, &globals);
+  EXPECT_TRUE(r.errors.empty());
+  EXPECT_EQ(r.options.mission_file, "m.moos");
+  EXPECT_EQ(r.options.community, "alpha");
+  EXPECT_EQ(r.options.port, 9100);
+  EXPECT_EQ(r.options.time_warp, 10.0);
+  EXPECT_EQ(*r.options.client_timeout_s, 8.0);
+}
+
+TEST(Options, CommandLineOverridesMissionGlobals_5_11) {
+  const std::map<std::string, std::string> globals = {
+      {"Community", "alpha"}, {"ServerPort", "9100"}, {"MOOSTimeWarp", "10"}, {"ClientTimeout", "8"}};
+  const auto r = resolve({"m.moos", "pAntlerAlias", "--moos_port=0", "--moos_community=bravo",
+                          "--moos_time_warp=2.5", "--moos_timeout=0"},
+                         &globals);
+  EXPECT_TRUE(r.errors.empty());
+  EXPECT_EQ(r.options.community, "bravo");
+  EXPECT_EQ(r.options.port, 0);
+  EXPECT_EQ(r.options.time_warp, 2.5);
+  EXPECT_FALSE(r.options.client_timeout_s);  // 0 = never
+}
+
+TEST(Options, BadMissionValuesAreErrorsNamingFileVariableAndValue) {
+  const std::map<std::string, std::string> globals = {
+      {"ServerPort", "90000"}, {"MOOSTimeWarp", "0"}, {"ClientTimeout", "soon"}};
+  const auto r = resolve({"m.moos"}, &globals);
+  ASSERT_EQ(r.errors.size(), 3u);
+  EXPECT_EQ(r.errors[0], "m.moos: ServerPort = 90000: not a port number (0-65535)");
+  EXPECT_EQ(r.errors[1], "m.moos: MOOSTimeWarp = 0: time warp must be a number in (0, 400]");
+  EXPECT_EQ(r.errors[2], "m.moos: ClientTimeout = soon: timeout must be a number of seconds >= 0");
+}
+
+TEST(Options, IgnoredMissionGlobalsGetANote_5_11) {
+  const std::map<std::string, std::string> globals = {{"WebServerPort", "9080"}};
+  const auto r = resolve({"m.moos"}, &globals);
+  ASSERT_EQ(r.notes.size(), 1u);
+  EXPECT_EQ(r.notes[0], "m.moos: WebServerPort ignored: the web server is not implemented");
+}
+
+TEST(Options, OurOwnSwitchesAreParsed) {
+  const auto r = resolve({"--bind=0.0.0.0", "--log=run.alog", "--port-file=port.txt",
+                          "--max-packet-bytes=4096", "--max-output-bytes=65536",
+                          "--banner-timeout=0.5", "--handshake-timeout=0.25"});
+  EXPECT_EQ(r.options.bind_address, "0.0.0.0");
+  EXPECT_EQ(r.options.log_file, "run.alog");
+  EXPECT_EQ(r.options.port_file, "port.txt");
+  EXPECT_EQ(r.options.max_packet_bytes, 4096u);
+  EXPECT_EQ(r.options.max_output_bytes, 65536u);
+  EXPECT_EQ(r.options.banner_timeout_s, 0.5);
+  EXPECT_EQ(r.options.handshake_timeout_s, 0.25);
+}
+
+TEST(Options, ReferenceDbSwitchesAreAcceptedWithANote_5_11) {
+  const CommandLine cli = parse_command_line(
+      {"-s", "--single_threaded", "-d", "--dns", "--tcpnodelay", "--response=pA:10",
+       "--audit_port=9020", "--event_log=e.txt", "--webserver_port=9080"});
+  EXPECT_TRUE(cli.errors.empty());
+  ASSERT_EQ(cli.notes.size(), 9u);
+  EXPECT_EQ(cli.notes[0].rfind("-s ignored: ", 0), 0u);
+  EXPECT_EQ(cli.notes[6], "--audit_port=9020 ignored: the UDP audit port is not implemented");
+}
+
+TEST(Options, BadSwitchesAreErrorsNamingTheArgument) {
+  const CommandLine cli = parse_command_line(
+      {"--moos_port=abc", "--moos_time_warp=401", "--bind=::1", "--frobnicate", "--moos_port",
+       "--max-packet-bytes=10", "a.moos", "alias", "third"});
+  ASSERT_EQ(cli.errors.size(), 7u);
+  EXPECT_EQ(cli.errors[0], "--moos_port=abc: not a port number (0-65535)");
+  EXPECT_EQ(cli.errors[1], "--moos_time_warp=401: time warp must be a number in (0, 400]");
+  EXPECT_EQ(cli.errors[2], "--bind=::1: not an IPv4 address (libMOOS clients connect over IPv4 only)");
+  EXPECT_EQ(cli.errors[3], "--frobnicate: unknown option (try --help)");
+  EXPECT_EQ(cli.errors[4], "--moos_port: expected --moos_port=VALUE");
+  EXPECT_EQ(cli.errors[5], "--max-packet-bytes=10: expected a whole number of bytes >= 63");
+  EXPECT_EQ(cli.errors[6], "third: unexpected extra argument");
+  EXPECT_EQ(cli.mission_file, "a.moos");
+  EXPECT_EQ(cli.alias, "alias");
+}
+
+TEST(Options, HelpAndVersionFlags) {
+  EXPECT_TRUE(parse_command_line({"--help"}).help);
+  EXPECT_TRUE(parse_command_line({"-h"}).help);
+  EXPECT_TRUE(parse_command_line({"--version"}).version);
+}
+
+TEST(Info, HelpListsEveryOptionOfTheTable) {
+  const std::string help = help_text();
+  for (const auto& row : option_docs()) {
+    EXPECT_NE(help.find(row.name), std::string::npos) << row.name;
+    EXPECT_NE(help.find(row.meaning), std::string::npos) << row.meaning;
+  }
+  for (const auto& row : mission_global_docs()) EXPECT_NE(help.find(row.name), std::string::npos);
+  EXPECT_EQ(version_text().rfind("moosdb-lite ", 0), 0u);
+}
+
+}  // namespace
+}  // namespace moosdb_lite
