@@ -11,6 +11,8 @@
 #include <string>
 #include <string_view>
 
+#include "moos/message.hpp"
+
 namespace moos {
 
 struct AlogEntry {
@@ -22,6 +24,12 @@ struct AlogEntry {
 
 /// Header lines: "%% LOG FILE: <name>", "%% LOGSTART <epoch>", and a rule of '%'.
 std::string alog_header(std::string_view log_name, double logstart_epoch_s);
+
+/// The VALUE column for a message: the shortest text that reads back as the same double,
+/// the string itself, `<binary:N:HEX>` for binary data, `<not set>` for an unwritten variable.
+std::string alog_value(const Message& msg);
+/// The entry pLogger would write for a message, with its time relative to `logstart_s`.
+AlogEntry alog_entry(const Message& msg, double logstart_s);
 
 /// One line, newline-terminated.
 std::string format_alog_line(const AlogEntry& entry);

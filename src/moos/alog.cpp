@@ -1,6 +1,8 @@
 #include "moos/alog.hpp"
 
+#include <charconv>
 #include <cstdio>
+#include <system_error>
 
 #include "moos/text.hpp"
 
@@ -35,7 +37,35 @@ void append_padded(std::string& out, std::string_view text, std::size_t width) {
   out.push_back(' ');
 }
 
+constexpr char kHexDigits[] = "0123456789abcdef";
+
 }  // namespace
+
+std::string alog_value(const Message& msg) {
+  switch (msg.data_type) {
+    case data_type::kDouble: {
+      char text[64];
+      const auto [end, error] = std::to_chars(text, text + sizeof text, msg.dval);
+      return error == std::errc() ? std::string(text, end) : std::string("nan");
+    }
+    case data_type::kBinary: {
+      std::string out = "<binary:" + std::to_string(msg.sval.size()) + ":";
+      for (const unsigned char c : msg.sval) {
+        out.push_back(kHexDigits[c >> 4]);
+        out.push_back(kHexDigits[c & 0x0f]);
+      }
+      return out + ">";
+    }
+    case data_type::kNotSet:
+      return "<not set>";
+    default:
+      return msg.sval;
+  }
+}
+
+AlogEntry alog_entry(const Message& msg, double logstart_s) {
+  return AlogEntry{msg.time - logstart_s, msg.key, msg.source, alog_value(msg)};
+}
 
 std::string alog_header(std::string_view log_name, double logstart_epoch_s) {
   char start[64];

@@ -5,7 +5,6 @@
 
 #include <unistd.h>
 
-#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <condition_variable>
@@ -26,7 +25,6 @@ constexpr int kMaxPort = 65535;
 constexpr double kMaxTimeWarp = 400.0;  // wire spec 0.3
 /// How long poke waits for its posts to reach the socket, real seconds.
 constexpr double kFlushTimeout_s = 10.0;
-constexpr char kHexDigits[] = "0123456789abcdef";
 
 bool starts_with(std::string_view s, std::string_view p) { return s.substr(0, p.size()) == p; }
 
@@ -159,31 +157,9 @@ std::optional<Poke> parse_poke(std::string_view assignment, bool all_strings, st
   return p;
 }
 
-std::string format_watch_value(const moos::Message& m) {
-  switch (m.data_type) {
-    case moos::data_type::kDouble: {
-      char buf[64];
-      const auto [ptr, ec] = std::to_chars(buf, buf + sizeof buf, m.dval);
-      return ec == std::errc() ? std::string(buf, ptr) : std::string("nan");
-    }
-    case moos::data_type::kBinary: {
-      std::string out = "<binary:" + std::to_string(m.sval.size()) + ":";
-      for (unsigned char c : m.sval) {
-        out.push_back(kHexDigits[c >> 4]);
-        out.push_back(kHexDigits[c & 0x0f]);
-      }
-      return out + ">";
-    }
-    case moos::data_type::kNotSet:
-      return "<not set>";
-    default:
-      return m.sval;
-  }
-}
-
 std::string format_watch_line(const moos::Message& m, double start_moos_s) {
   return moos::format_alog_line(
-      moos::AlogEntry{m.time - start_moos_s, m.key, m.source, format_watch_value(m)});
+      moos::alog_entry(m, start_moos_s));
 }
 
 int run_poke(const Options& o, std::ostream& out, std::ostream& err) {
@@ -212,7 +188,7 @@ int run_poke(const Options& o, std::ostream& out, std::ostream& err) {
   }
   client.close();
   for (const auto& p : pokes)
-    out << p.var << " = " << (p.is_double ? format_watch_value(moos::make_double_notify(p.var, p.dval, "", 0))
+    out << p.var << " = " << (p.is_double ? moos::alog_value(moos::make_double_notify(p.var, p.dval, "", 0))
                                           : "\"" + p.sval + "\"")
         << "\n";
   return kExitOk;

@@ -49,8 +49,6 @@ struct Poke {
 };
 std::optional<Poke> parse_poke(std::string_view assignment, bool all_strings, std::string* error);
 
-/// The VALUE column of a watch line (see the help text).
-std::string format_watch_value(const moos::Message& m);
 /// One .alog line (newline-terminated) for a received message; time relative to `start_moos_s`.
 std::string format_watch_line(const moos::Message& m, double start_moos_s);
 

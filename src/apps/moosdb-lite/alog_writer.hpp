@@ -19,9 +19,6 @@
 
 namespace moosdb_lite {
 
-/// The VALUE column for a message (see the contract above).
-std::string alog_value(const moos::Message& msg);
-
 class AlogWriter {
  public:
   using LogSink = std::function<void(const std::string&)>;

@@ -85,14 +85,14 @@ TEST(MoosCliPoke, NumbersAreDoublesUnlessQuotedOrForced) {
 
 TEST(MoosCliWatch, ValuesAndLinesFollowTheHelpText) {
   moos::Message d = moos::make_double_notify("X", 0.1, "src", 1700000001.25);
-  EXPECT_EQ(format_watch_value(d), "0.1");
+  EXPECT_EQ(moos::alog_value(d), "0.1");
   moos::Message s = moos::make_string_notify("S", "a\nb", "src", 0);
-  EXPECT_EQ(format_watch_value(s), "a\nb");
+  EXPECT_EQ(moos::alog_value(s), "a\nb");
   moos::Message b = moos::make_binary_notify("B", std::string("\x00\xff", 2), "src", 0);
-  EXPECT_EQ(format_watch_value(b), "<binary:2:00ff>");
+  EXPECT_EQ(moos::alog_value(b), "<binary:2:00ff>");
   moos::Message u = d;
   u.data_type = moos::data_type::kNotSet;
-  EXPECT_EQ(format_watch_value(u), "<not set>");
+  EXPECT_EQ(moos::alog_value(u), "<not set>");
   const std::string line = format_watch_line(d, 1700000000.0);
   const auto parsed = moos::parse_alog_line(line.substr(0, line.size() - 1));
   ASSERT_EQ(parsed.kind, moos::AlogLineKind::kEntry);

@@ -31,17 +31,17 @@ std::vector<std::string> read_lines(const std::string& path) {
 }
 
 TEST(AlogValue, DoublesUseTheShortestExactText) {
-  EXPECT_EQ(alog_value(notify_double("X", 12.5, "p")), "12.5");
-  EXPECT_EQ(alog_value(notify_double("X", 0.1, "p")), "0.1");
-  EXPECT_EQ(alog_value(notify_double("X", -3, "p")), "-3");
-  EXPECT_EQ(alog_value(notify_double("X", 1700000000.125, "p")), "1700000000.125");
+  EXPECT_EQ(moos::alog_value(notify_double("X", 12.5, "p")), "12.5");
+  EXPECT_EQ(moos::alog_value(notify_double("X", 0.1, "p")), "0.1");
+  EXPECT_EQ(moos::alog_value(notify_double("X", -3, "p")), "-3");
+  EXPECT_EQ(moos::alog_value(notify_double("X", 1700000000.125, "p")), "1700000000.125");
   const double third = 1.0 / 3.0;
-  EXPECT_EQ(std::stod(alog_value(notify_double("X", third, "p"))), third);
+  EXPECT_EQ(std::stod(moos::alog_value(notify_double("X", third, "p"))), third);
 }
 
 TEST(AlogValue, StringsAsTheyAreAndBinaryAsHex) {
-  EXPECT_EQ(alog_value(notify_string("X", "a b,c=d", "p")), "a b,c=d");
-  EXPECT_EQ(alog_value(moos::make_binary_notify("B", std::string("\0\xff\x10\x7f", 4), "p", kT0)),
+  EXPECT_EQ(moos::alog_value(notify_string("X", "a b,c=d", "p")), "a b,c=d");
+  EXPECT_EQ(moos::alog_value(moos::make_binary_notify("B", std::string("\0\xff\x10\x7f", 4), "p", kT0)),
             "<binary:4:00ff107f>");
 }
 
