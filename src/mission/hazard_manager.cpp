@@ -1,0 +1,668 @@
+// The vehicle-side hazard manager. Contract and rules: include/mission/hazard_manager.hpp.
+//
+// Data structures: one Record per known object (ids are indices, names only at the edge); a
+// uniform hash grid of record ids (kCell_m cells) so a pose touches only the objects near its
+// swath; the list of objects currently inside the swath (their exits are checked every pose); the
+// list of ended passes awaiting a late detection; the vehicle's own track, thinned to one sample
+// per `track_sample_spacing_m` (plus every change of sensor state), for hindsight passes.
+// Rejected alternative: resolving a pass the moment it ends. Detections travel through the MOOSDB
+// and possibly pShare, so the report for a pass can arrive after the vehicle has left the object.
+
+#include "mission/hazard_manager.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <functional>
+
+#include "hazard/messages/classify_request.hpp"
+#include "hazard/messages/config_request.hpp"
+#include "hazard/messages/sensor_request.hpp"
+#include "hazard/swath.hpp"
+#include "hazard/text.hpp"
+#include "mission/transit_lane.hpp"
+
+namespace mission {
+
+namespace {
+
+/// Grid cell of the manager's object index and track index (m). A pose looks at the cells of
+/// the square around its footprint's reach (about 25 m for W = 25): 10 m cells keep the square
+/// close to the footprint in dense fields (36 cell look-ups, about 2.5 times the square's area
+/// instead of 16 times with 50 m cells) and cost little in sparse ones.
+constexpr double kCell_m = 10.0;
+
+std::int64_t cell_of(double v) { return static_cast<std::int64_t>(std::floor(v / kCell_m)); }
+std::int64_t cell_key(std::int64_t cx, std::int64_t cy) {
+  return (cx << 32) ^ (cy & 0xffffffffLL);
+}
+
+// Calls f(cell key) for every cell of the square of half side `radius_m` around `center_m`.
+template <class F>
+void for_each_cell_around(glm::dvec2 center_m, double radius_m, F&& f) {
+  const std::int64_t cx0 = cell_of(center_m.x - radius_m), cx1 = cell_of(center_m.x + radius_m);
+  const std::int64_t cy0 = cell_of(center_m.y - radius_m), cy1 = cell_of(center_m.y + radius_m);
+  for (std::int64_t cx = cx0; cx <= cx1; ++cx)
+    for (std::int64_t cy = cy0; cy <= cy1; ++cy) f(cell_key(cx, cy));
+}
+
+// The sensor's footprint at one pose, and its core (W - margin to each side), built once per
+// pose: every object near the pose is tested against both.
+class Footprint {
+ public:
+  Footprint(glm::dvec2 position_m, double heading_deg, double half_width_m, double length_m,
+            double margin_m)
+      : center_(position_m), reach_m_(std::hypot(half_width_m, 0.5 * length_m)) {
+    if (half_width_m > 0.0) full_.emplace(position_m, heading_deg, half_width_m, length_m);
+    if (half_width_m - margin_m > 0.0)
+      core_.emplace(position_m, heading_deg, half_width_m - margin_m, length_m);
+  }
+  bool in_full(glm::dvec2 p) const { return full_ && near(p) && full_->contains(p); }
+  bool in_core(glm::dvec2 p) const { return core_ && near(p) && core_->contains(p); }
+  double reach_m() const { return reach_m_; }
+
+ private:
+  bool near(glm::dvec2 p) const { return glm::length(p - center_) <= reach_m_ + 1e-9; }
+  glm::dvec2 center_;
+  double reach_m_;
+  std::optional<hazard::Swath> full_;
+  std::optional<hazard::Swath> core_;
+};
+
+// ---- parameter table -----------------------------------------------------------------------
+
+std::string problem(std::string_view name, double value, const char* rule) {
+  return "parameter " + std::string(name) + "=" + hazard::fmt(value, 6) + " " + rule;
+}
+std::string check_positive(std::string_view name, double v) {
+  return v > 0.0 ? std::string() : problem(name, v, "must be > 0");
+}
+std::string check_non_negative(std::string_view name, double v) {
+  return v >= 0.0 ? std::string() : problem(name, v, "must be >= 0");
+}
+std::string check_probability(std::string_view name, double v) {
+  return v >= 0.0 && v <= 1.0 ? std::string() : problem(name, v, "must be in [0, 1]");
+}
+std::string check_open_probability(std::string_view name, double v) {
+  return v > 0.0 && v < 1.0 ? std::string() : problem(name, v, "must be in (0, 1)");
+}
+std::string check_fraction(std::string_view name, double v) {
+  return v > 0.0 && v <= 1.0 ? std::string() : problem(name, v, "must be in (0, 1]");
+}
+
+using NumberCheck = std::string (*)(std::string_view, double);
+
+struct ParamRow {
+  ParamInfo info;
+  std::function<std::string(ManagerConfig&, std::string_view)> apply;
+  /// The row's rule applied to a configuration built in code ("" when fine or not a number).
+  std::function<std::string(const ManagerConfig&)> check = [](const ManagerConfig&) {
+    return std::string();
+  };
+};
+
+ParamRow number_row(ParamInfo info, double ManagerConfig::*field, NumberCheck check) {
+  return {info, [info, field, check](ManagerConfig& c, std::string_view value) -> std::string {
+            const auto v = hazard::parse_number(value);
+            if (!v) return "parameter " + std::string(info.name) + "='" + std::string(value) +
+                           "' is not a number";
+            if (std::string error = check(info.name, *v); !error.empty()) return error;
+            c.*field = *v;
+            return {};
+          },
+          [info, field, check](const ManagerConfig& c) { return check(info.name, c.*field); }};
+}
+
+ParamRow bool_row(ParamInfo info, bool ManagerConfig::*field) {
+  return {info, [info, field](ManagerConfig& c, std::string_view value) -> std::string {
+            const auto v = hazard::parse_bool(value);
+            if (!v) return "parameter " + std::string(info.name) + "='" + std::string(value) +
+                           "' is not true or false";
+            c.*field = *v;
+            return {};
+          }};
+}
+
+const std::vector<ParamRow>& param_rows() {
+  static const std::vector<ParamRow> rows = {
+      number_row({"swath_width", "25", "requested swath width W, m to each side (> 0)"},
+                 &ManagerConfig::swath_width_m, check_positive),
+      number_row({"sensor_pd", "0.9", "requested probability of detection, [0, 1] (alias: pd)"},
+                 &ManagerConfig::pd, check_probability),
+      number_row({"prior_hazard", "0.5", "prior P(hazard) of a newly detected object, (0, 1)"},
+                 &ManagerConfig::prior_hazard, check_open_probability),
+      {{"report_name", "", "name= part of HAZARDSET_REPORT (quotes stripped)"},
+       [](ManagerConfig& c, std::string_view value) -> std::string {
+         std::string v(hazard::trim(value));
+         v.erase(std::remove(v.begin(), v.end(), '"'), v.end());
+         c.report_name = v;
+         return {};
+       }},
+      {{"region", "", "search region (convex polygon) for the transit lane; else the grader's"},
+       [](ManagerConfig& c, std::string_view value) -> std::string {
+         auto parsed = ConvexPolygon::parse(value);
+         if (auto* e = std::get_if<ConvexPolygon::Error>(&parsed))
+           return "parameter region: " + e->message;
+         c.region = std::get<ConvexPolygon>(std::move(parsed));
+         return {};
+       }},
+      bool_row({"report_xpath", "false", "add the xpath= part to HAZARDSET_REPORT"},
+               &ManagerConfig::report_xpath),
+      bool_row({"classify", "true", "request a classification of every detection"},
+               &ManagerConfig::classify),
+      {{"classify_lookahead", "2", "answers valued together for a request's priority, 1..20"},
+       [](ManagerConfig& c, std::string_view value) -> std::string {
+         const auto v = hazard::parse_unsigned(value);
+         if (!v || *v < 1 || *v > static_cast<std::uint64_t>(kMaxLookaheadAnswers))
+           return "parameter classify_lookahead='" + std::string(value) +
+                  "' is not a whole number in [1, 20]";
+         c.classify_lookahead = static_cast<int>(*v);
+         return {};
+       },
+       [](const ManagerConfig& c) -> std::string {
+         return c.classify_lookahead >= 1 && c.classify_lookahead <= kMaxLookaheadAnswers
+                    ? std::string()
+                    : "parameter classify_lookahead=" + std::to_string(c.classify_lookahead) +
+                          " must be in [1, 20]";
+       }},
+      bool_row({"count_missed_passes", "true", "use passes without a detection as evidence"},
+               &ManagerConfig::count_missed_passes),
+      number_row({"sensor_swath_length", "5", "the sensor's swath_length, m in total (> 0)"},
+                 &ManagerConfig::sensor_swath_length_m, check_positive),
+      number_row({"sensor_max_turn_rate", "1.5", "the sensor's max_turn_rate, deg/s (> 0)"},
+                 &ManagerConfig::sensor_max_turn_rate_dps, check_positive),
+      number_row({"sensor_max_speed", "2.0", "the sensor's max_vehicle_speed, m/s (> 0)"},
+                 &ManagerConfig::sensor_max_speed_mps, check_positive),
+      number_row({"pass_margin", "0.1", "a missed pass must come within W - margin, m (>= 0)"},
+                 &ManagerConfig::pass_margin_m, check_non_negative),
+      number_row({"clear_turn_fraction", "0.5", "a missed pass needs turn rate <= this x limit"},
+                 &ManagerConfig::clear_turn_fraction, check_fraction),
+      number_row({"detection_latency", "10", "how late a detection may come after a pass, s"},
+                 &ManagerConfig::detection_latency_s, check_non_negative),
+      number_row({"track_sample_spacing", "1", "own-track memory resolution, m (> 0)"},
+                 &ManagerConfig::track_sample_spacing_m, check_positive),
+      number_row({"sensor_request_interval", "5", "seconds between UHZ_SENSOR_REQUEST postings"},
+                 &ManagerConfig::sensor_request_interval_s, check_positive),
+      number_row({"config_retry_interval", "30", "seconds between UHZ_CONFIG_REQUEST until acked"},
+                 &ManagerConfig::config_retry_interval_s, check_positive),
+  };
+  return rows;
+}
+
+std::string fmt_setting(double width, double pd, double pfa, double pclass) {
+  return "width=" + hazard::fmt(width, 1) + ",pd=" + hazard::fmt(pd, 3) + ",pfa=" +
+         hazard::fmt(pfa, 3) + ",pclass=" + hazard::fmt(pclass, 3);
+}
+
+}  // namespace
+
+const std::vector<ParamInfo>& manager_parameters() {
+  static const std::vector<ParamInfo> infos = param_infos(param_rows());
+  return infos;
+}
+
+std::string apply_manager_param(ManagerConfig& config, std::string_view key,
+                                std::string_view value) {
+  std::string name = hazard::to_lower(hazard::trim(key));
+  if (name == "pd") name = "sensor_pd";  // spec 13: both names are accepted
+  for (const ParamRow& row : param_rows())
+    if (name == row.info.name) return row.apply(config, value);
+  return "unknown parameter '" + std::string(hazard::trim(key)) + "'";
+}
+
+std::string validate(const ManagerConfig& c) {
+  if (c.vname.empty()) return "the vehicle name is empty";
+  for (const ParamRow& row : param_rows())
+    if (std::string p = row.check(c); !p.empty()) return p;
+  return {};
+}
+
+// ---- the manager ---------------------------------------------------------------------------
+
+HazardManager::HazardManager(ManagerConfig config) : config_(std::move(config)) {
+  assert(validate(config_).empty());
+}
+
+double HazardManager::log_odds(const Record& r) const {
+  double lo = logit(config_.prior_hazard) + r.own.log_lr;
+  for (const auto& entry : r.imported) lo += entry.second.log_lr;
+  return lo;
+}
+
+std::optional<HazardManager::Id> HazardManager::find(std::string_view label) const {
+  const auto it = by_label_.find(std::string(label));
+  if (it == by_label_.end()) return std::nullopt;
+  return it->second;
+}
+
+HazardManager::Id HazardManager::find_or_add(std::string_view label, glm::dvec2 position_m) {
+  if (auto id = find(label)) return *id;
+  const auto id = static_cast<Id>(records_.size());
+  Record r;
+  r.label = std::string(label);
+  r.position_m = position_m;
+  records_.push_back(std::move(r));
+  by_label_.emplace(std::string(label), id);
+  index(id);
+  return id;
+}
+
+void HazardManager::index(Id id) {
+  const glm::dvec2 p = records_[id].position_m;
+  grid_[cell_key(cell_of(p.x), cell_of(p.y))].push_back(id);
+}
+
+std::vector<HazardManager::Id> HazardManager::near(glm::dvec2 center_m, double radius_m) const {
+  std::vector<Id> out;
+  for_each_cell_around(center_m, radius_m, [&](std::int64_t key) {
+    const auto it = grid_.find(key);
+    if (it != grid_.end()) out.insert(out.end(), it->second.begin(), it->second.end());
+  });
+  return out;
+}
+
+Outputs HazardManager::tick(double now_s) {
+  Outputs out;
+  if (!setting_ && (!last_config_request_s_ ||
+                    now_s - *last_config_request_s_ >= config_.config_retry_interval_s)) {
+    out.post("UHZ_CONFIG_REQUEST",
+             hazard::format_config_request({config_.vname, config_.swath_width_m, config_.pd}));
+    last_config_request_s_ = now_s;
+  }
+  if (setting_ && (!last_sensor_request_s_ ||
+                   now_s - *last_sensor_request_s_ >= config_.sensor_request_interval_s)) {
+    out.post("UHZ_SENSOR_REQUEST", hazard::format_sensor_request({config_.vname}));
+    last_sensor_request_s_ = now_s;
+  }
+  resolve_passes(now_s, out);
+  return out;
+}
+
+Outputs HazardManager::on_config_ack(const hazard::ConfigAck& ack, double /*now_s*/) {
+  Outputs out;
+  if (ack.vname != config_.vname) {
+    out.run_warnings.push_back("UHZ_CONFIG_ACK for '" + ack.vname + "' ignored (this vehicle is '" +
+                               config_.vname + "')");
+    return out;
+  }
+  setting_ = Setting{ack.width_m, ack.pd, ack.pfa, ack.pclass};
+  out.events.push_back("Sensor setting acknowledged: " +
+                       fmt_setting(ack.width_m, ack.pd, ack.pfa, ack.pclass));
+  return out;
+}
+
+Outputs HazardManager::on_pose(glm::dvec2 position_m, double heading_deg, double speed_mps,
+                               double now_s) {
+  Outputs out;
+  headings_.add(heading_deg, now_s);
+  const double rate_dps = headings_.turn_rate_dps();
+  const bool speed_ok = !(speed_mps > config_.sensor_max_speed_mps);
+  // The sensor's test (spec 8.4 d): off when rate > limit or speed > limit, strictly.
+  const bool on =
+      setting_.has_value() && !(rate_dps > config_.sensor_max_turn_rate_dps) && speed_ok;
+  const bool clear =
+      on && !(rate_dps > config_.clear_turn_fraction * config_.sensor_max_turn_rate_dps);
+  const TrackSample sample{now_s,        position_m,
+                           heading_deg,  on,
+                           clear,        setting_ ? setting_->width_m : 0.0,
+                           setting_ ? setting_->pd : 0.0,
+                           setting_ ? setting_->pfa : 0.0};
+  const bool keep = track_.empty() ||
+                    glm::length(position_m - track_.back().position_m) >=
+                        config_.track_sample_spacing_m ||
+                    track_.back().sensor_on != on || track_.back().clear != clear ||
+                    track_.back().half_width_m != sample.half_width_m;
+  if (keep) add_track_sample(sample);
+  last_pose_ = sample;
+  update_passes(sample, out);
+  return out;
+}
+
+void HazardManager::add_track_sample(const TrackSample& sample) {
+  const auto index = static_cast<std::uint32_t>(track_.size());
+  track_.push_back(sample);
+  if (on_prefix_.empty()) on_prefix_.push_back(0);
+  on_prefix_.push_back(on_prefix_.back() + (sample.sensor_on ? 1u : 0u));
+  const std::int64_t key = cell_key(cell_of(sample.position_m.x), cell_of(sample.position_m.y));
+  track_cells_[key].push_back(index);
+  track_max_half_width_m_ = std::max(track_max_half_width_m_, sample.half_width_m);
+}
+
+void HazardManager::update_passes(const TrackSample& s, Outputs& /*out*/) {
+  if (!s.sensor_on) return;  // the sensor freezes its inside/outside state while off (spec 8.5)
+  const Footprint foot(s.position_m, s.heading_deg, s.half_width_m, config_.sensor_swath_length_m,
+                       config_.pass_margin_m);
+  // Exits (and core reached) for the objects inside.
+  for (std::size_t i = 0; i < inside_.size();) {
+    Record& r = records_[inside_[i]];
+    if (foot.in_full(r.position_m)) {
+      if (foot.in_core(r.position_m)) r.pass->reached_core = true;
+      ++i;
+      continue;
+    }
+    r.inside = false;
+    r.pass->exited_s = s.time_s;
+    unresolved_.push_back(inside_[i]);
+    inside_[i] = inside_.back();
+    inside_.pop_back();
+  }
+  // Entries.
+  for (Id id : near(s.position_m, foot.reach_m())) {
+    Record& r = records_[id];
+    if (r.inside || !foot.in_full(r.position_m)) continue;
+    if (r.pass) {
+      // A new pass began before the last one's latency ran out: decide the last one now.
+      Outputs ignored;
+      resolve(r, ignored);
+      unresolved_.erase(std::remove(unresolved_.begin(), unresolved_.end(), id), unresolved_.end());
+    }
+    r.inside = true;
+    r.pass = Pass{s.time_s, std::nullopt, foot.in_core(r.position_m), s.clear, false};
+    if (r.unmatched_detection_s &&
+        s.time_s - *r.unmatched_detection_s <= config_.detection_latency_s) {
+      r.pass->detected = true;  // the report came just before we saw the entry
+      r.unmatched_detection_s.reset();
+    }
+    inside_.push_back(id);
+  }
+}
+
+void HazardManager::resolve_passes(double now_s, Outputs& out) {
+  for (std::size_t i = 0; i < unresolved_.size();) {
+    Record& r = records_[unresolved_[i]];
+    if (r.pass && r.pass->exited_s && now_s - *r.pass->exited_s < config_.detection_latency_s) {
+      ++i;
+      continue;
+    }
+    resolve(r, out);
+    unresolved_[i] = unresolved_.back();
+    unresolved_.pop_back();
+  }
+}
+
+void HazardManager::resolve(Record& r, Outputs& out) {
+  if (!r.pass) return;
+  const Pass pass = *r.pass;
+  r.pass.reset();
+  if (pass.detected) return;
+  if (pass.reached_core && pass.clear && config_.count_missed_passes && setting_) {
+    r.own.add_missed_pass(setting_->pd, setting_->pfa);
+    ++counters_.missed_passes;
+    out.events.push_back("Pass over " + r.label + " without a detection: P(hazard)=" +
+                         hazard::fmt(logistic(log_odds(r)), 3));
+  } else {
+    ++counters_.doubtful_passes;
+  }
+}
+
+std::vector<std::pair<double, double>> HazardManager::hindsight_misses(const Record& r,
+                                                                       double before_s) const {
+  // Replays the sensor's inside/outside state over the samples before `before_s`, visiting only
+  // the samples in the track cells around the object. A sensor-on sample that is not visited
+  // lies in another cell, beyond the footprint's reach, so it ends any pass in progress; the
+  // prefix counts of sensor-on samples tell whether such a sample lies between two visited ones.
+  const auto end = static_cast<std::size_t>(
+      std::lower_bound(track_.begin(), track_.end(), before_s,
+                       [](const TrackSample& s, double t) { return s.time_s < t; }) -
+      track_.begin());
+  const double reach_m = std::hypot(track_max_half_width_m_, 0.5 * config_.sensor_swath_length_m);
+  std::vector<std::uint32_t> nearby;
+  for_each_cell_around(r.position_m, reach_m, [&](std::int64_t key) {
+    const auto it = track_cells_.find(key);
+    if (it == track_cells_.end()) return;
+    for (std::uint32_t i : it->second)
+      if (i < end) nearby.push_back(i);
+  });
+  std::sort(nearby.begin(), nearby.end());
+
+  std::vector<std::pair<double, double>> misses;
+  bool inside = false;
+  bool core = false;
+  bool clear = false;
+  std::pair<double, double> setting{0.0, 0.0};
+  auto leave = [&] {
+    if (inside && core && clear) misses.push_back(setting);
+    inside = false;
+  };
+  auto on_samples_between = [&](std::size_t from, std::size_t to) {  // in [from, to)
+    return to > from ? on_prefix_[to] - on_prefix_[from] : 0u;
+  };
+  std::size_t previous = 0;
+  bool first = true;
+  for (std::uint32_t i : nearby) {
+    if (!first && on_samples_between(previous + 1, i) > 0) leave();
+    if (first && on_samples_between(0, i) > 0) leave();
+    first = false;
+    previous = i;
+    const TrackSample& s = track_[i];
+    if (!s.sensor_on) continue;  // frozen
+    const Footprint foot(s.position_m, s.heading_deg, s.half_width_m, config_.sensor_swath_length_m,
+                         config_.pass_margin_m);
+    if (!foot.in_full(r.position_m)) {
+      leave();
+      continue;
+    }
+    if (!inside) {
+      inside = true;
+      core = false;
+      clear = s.clear;
+      setting = {s.pd, s.pfa};
+    }
+    core = core || foot.in_core(r.position_m);
+  }
+  // A pass still open counts only if the sensor looked elsewhere before `before_s`.
+  if (!first && on_samples_between(previous + 1, end) > 0) leave();
+  return misses;
+}
+
+Outputs HazardManager::on_detection(const hazard::DetectionReport& report, double now_s) {
+  Outputs out;
+  if (report.vname && *report.vname != config_.vname) {
+    out.run_warnings.push_back("UHZ_DETECTION_REPORT for '" + *report.vname + "' ignored");
+    return out;
+  }
+  const bool is_new = !find(report.label).has_value();
+  const Id id = find_or_add(report.label, {report.x_m, report.y_m});
+  Record& r = records_[id];
+  if (report.aspect_deg) r.aspect_deg = report.aspect_deg;
+  if (report.aspect_min_deg) r.aspect_min_deg = report.aspect_min_deg;
+  if (report.aspect_max_deg) r.aspect_max_deg = report.aspect_max_deg;
+  ++counters_.detections;
+  if (!setting_) {
+    // pd and pfa are unknown until the ack: the detection is counted but carries no weight.
+    out.run_warnings.push_back("Detection of " + r.label +
+                               " before any UHZ_CONFIG_ACK: not weighed");
+    r.own.add_detection(1.0, 1.0);
+    return out;
+  }
+  if (is_new && config_.count_missed_passes) {
+    for (const auto& [pd, pfa] : hindsight_misses(r, now_s - config_.detection_latency_s)) {
+      r.own.add_missed_pass(pd, pfa);
+      ++counters_.hindsight_passes;
+    }
+  }
+  if (r.pass && !r.pass->detected) {
+    r.pass->detected = true;
+  } else if (is_new && last_pose_ && last_pose_->sensor_on &&
+             Footprint(last_pose_->position_m, last_pose_->heading_deg, last_pose_->half_width_m,
+                       config_.sensor_swath_length_m, config_.pass_margin_m)
+                 .in_full(r.position_m)) {
+    // First sight while inside: this is the pass in progress.
+    r.inside = true;
+    r.pass = Pass{now_s, std::nullopt, false, last_pose_->clear, true};
+    inside_.push_back(id);
+  } else {
+    r.unmatched_detection_s = now_s;
+  }
+  r.own.add_detection(setting_->pd, setting_->pfa);
+  out.events.push_back("Detection of " + r.label + ": P(hazard)=" +
+                       hazard::fmt(logistic(log_odds(r)), 3));
+  if (config_.classify) out.append(request_classification(r));
+  return out;
+}
+
+Outputs HazardManager::request_classification(Record& r) {
+  Outputs out;
+  const double priority = classification_priority(logistic(log_odds(r)), setting_->pclass,
+                                                  penalties_, config_.classify_lookahead);
+  hazard::ClassifyRequest request;
+  request.vname = config_.vname;
+  request.label = r.label;
+  request.priority = std::round(priority * 100.0) / 100.0;  // two decimals are plenty
+  out.post("UHZ_CLASSIFY_REQUEST", hazard::format_classify_request(request));
+  r.pending_pclass.push_back(setting_->pclass);
+  ++counters_.classify_requests;
+  return out;
+}
+
+Outputs HazardManager::on_classification(const hazard::HazardReport& report, double /*now_s*/) {
+  Outputs out;
+  if (report.vname && *report.vname != config_.vname) {
+    out.run_warnings.push_back("UHZ_HAZARD_REPORT for '" + *report.vname + "' ignored");
+    return out;
+  }
+  Record& r = records_[find_or_add(report.label, {report.x_m, report.y_m})];
+  double pclass = setting_ ? setting_->pclass : 0.5;
+  if (!r.pending_pclass.empty()) {
+    pclass = r.pending_pclass.front();
+    r.pending_pclass.erase(r.pending_pclass.begin());
+  } else {
+    out.run_warnings.push_back("Classification of " + r.label + " without a pending request");
+  }
+  const bool said_hazard = report.type == hazard::ObjectType::kHazard;
+  r.own.add_classification(said_hazard, pclass);
+  ++counters_.classify_answers;
+  out.events.push_back("Classified " + r.label + " as " + (said_hazard ? "hazard" : "benign") +
+                       ": P(hazard)=" + hazard::fmt(logistic(log_odds(r)), 3));
+  return out;
+}
+
+Outputs HazardManager::on_mission_params(const MissionParams& params) {
+  Outputs out;
+  if (params.penalty_missed_hazard < 0.0 || params.penalty_false_alarm < 0.0) {
+    out.run_warnings.push_back("UHZ_MISSION_PARAMS with a negative penalty ignored");
+    return out;
+  }
+  penalties_ = Penalties{params.penalty_missed_hazard, params.penalty_false_alarm};
+  transit_half_width_m_ = params.transit_path_width_m;
+  if (params.search_region) {
+    auto parsed = ConvexPolygon::parse(*params.search_region);
+    if (auto* poly = std::get_if<ConvexPolygon>(&parsed)) params_region_ = *poly;
+  }
+  return out;
+}
+
+Outputs HazardManager::on_handover(const Handover& handover, double /*now_s*/) {
+  Outputs out;
+  if (handover.dest != config_.vname || handover.source == config_.vname) {
+    out.run_warnings.push_back("HAZARD_HANDOVER from '" + handover.source + "' to '" +
+                               handover.dest + "' ignored (this vehicle is '" + config_.vname +
+                               "')");
+    return out;
+  }
+  for (const std::string& w : handover.warnings) out.run_warnings.push_back(w);
+  for (const HandoverObject& o : handover.objects) {
+    Record& r = records_[find_or_add(o.label, {o.x_m, o.y_m})];
+    r.imported[handover.source] = o.evidence;
+    r.handed_over = true;
+  }
+  out.events.push_back("Hand-over from " + handover.source + ": " +
+                       std::to_string(handover.objects.size()) + " objects");
+  return out;
+}
+
+HazardsetReport HazardManager::make_report() const {
+  HazardsetReport report;
+  report.source = config_.vname;
+  report.name = config_.report_name;
+  std::vector<glm::dvec2> reported;
+  for (const Record& r : records_) {
+    if (!should_report(logistic(log_odds(r)), penalties_)) continue;
+    report.objects.push_back({r.label, r.position_m.x, r.position_m.y, r.aspect_deg,
+                              r.aspect_min_deg, r.aspect_max_deg});
+    reported.push_back(r.position_m);
+  }
+  const std::optional<ConvexPolygon>& region = config_.region ? config_.region : params_region_;
+  if (config_.report_xpath && region && transit_half_width_m_ > 0.0) {
+    const auto lane = min_hazard_lane(*region, reported, transit_half_width_m_);
+    if (lane) report.xpath_m = lane->x_m;
+  }
+  return report;
+}
+
+Outputs HazardManager::on_hazardset_request(double /*now_s*/) {
+  Outputs out;
+  const HazardsetReport report = make_report();
+  out.post(kHazardsetReportVar, format_hazardset_report(report));
+  out.events.push_back("HAZARDSET_REPORT posted with " + std::to_string(report.objects.size()) +
+                       " of " + std::to_string(records_.size()) + " objects");
+  return out;
+}
+
+Handover HazardManager::make_handover(std::string_view dest) const {
+  Handover h;
+  h.source = config_.vname;
+  h.dest = std::string(dest);
+  h.prior_hazard = config_.prior_hazard;
+  for (const Record& r : records_) {
+    HandoverObject o{r.label, r.position_m.x, r.position_m.y, r.own};
+    for (const auto& entry : r.imported) {
+      o.evidence.log_lr += entry.second.log_lr;
+      o.evidence.detections += entry.second.detections;
+      o.evidence.missed_passes += entry.second.missed_passes;
+      o.evidence.said_hazard += entry.second.said_hazard;
+      o.evidence.said_benign += entry.second.said_benign;
+    }
+    h.objects.push_back(std::move(o));
+  }
+  return h;
+}
+
+Outputs HazardManager::handover_to(std::string_view dest) const {
+  Outputs out;
+  const std::string text = format_handover(make_handover(dest));
+  out.post(kHazardHandoverVar, text);
+  out.post(handover_variable_for(dest), text);
+  out.events.push_back("Hand-over to " + std::string(dest) + ": " +
+                       std::to_string(records_.size()) + " objects");
+  return out;
+}
+
+std::vector<glm::dvec2> HazardManager::reacquire_route(glm::dvec2 start_m,
+                                                       const ReacquireOptions& options) const {
+  const bool any_handed = std::any_of(records_.begin(), records_.end(),
+                                      [](const Record& r) { return r.handed_over; });
+  std::vector<glm::dvec2> objects;
+  for (const Record& r : records_)
+    if (r.handed_over || !any_handed) objects.push_back(r.position_m);
+  return plan_reacquire_route(start_m, objects, options);
+}
+
+ObjectBelief HazardManager::view(const Record& r) const {
+  ObjectBelief b;
+  b.label = r.label;
+  b.position_m = r.position_m;
+  b.p_hazard = logistic(log_odds(r));
+  b.own = r.own;
+  for (const auto& entry : r.imported) b.imported_log_lr += entry.second.log_lr;
+  b.handed_over = r.handed_over;
+  b.reported = should_report(b.p_hazard, penalties_);
+  b.classify_priority = setting_ ? classification_priority(b.p_hazard, setting_->pclass, penalties_,
+                                                           config_.classify_lookahead)
+                                  : 0.0;
+  return b;
+}
+
+std::vector<ObjectBelief> HazardManager::beliefs() const {
+  std::vector<ObjectBelief> out;
+  for (const Record& r : records_) out.push_back(view(r));
+  return out;
+}
+
+std::optional<ObjectBelief> HazardManager::belief(std::string_view label) const {
+  const auto id = find(label);
+  if (!id) return std::nullopt;
+  return view(records_[*id]);
+}
+
+}  // namespace mission
