@@ -1,0 +1,133 @@
+#include "HazardSensor.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <exception>
+#include <filesystem>
+#include <fstream>
+#include <ostream>
+#include <random>
+#include <sstream>
+
+#include "HazardSensor_Info.hpp"
+#include "hazard/report.hpp"
+#include "moos/alog.hpp"
+#include "moos/text.hpp"
+
+namespace ufld_hazard_sensor {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<hazard::ConfigEntry> to_entries(const std::vector<moos::ConfigLine>& lines) {
+  std::vector<hazard::ConfigEntry> out;
+  out.reserve(lines.size());
+  for (const moos::ConfigLine& l : lines) out.push_back({l.key, l.value, l.file, l.line});
+  return out;
+}
+
+/// The engine reads text: strings and binary values as they are, doubles in their shortest
+/// exact form (a NODE_REPORT posted as a double then fails to parse, with a warning).
+std::string mail_text(const moos::Message& m) {
+  return m.is_double() ? moos::text::format_shortest(m.dval) : m.sval;
+}
+
+}  // namespace
+
+moos::AppTraits hazard_sensor_traits() {
+  moos::AppTraits t;
+  t.default_name = kAppName;
+  t.default_app_tick_hz = hazard::EngineConfig().app_tick_hz;
+  t.default_max_appcast_events = kDefaultMaxAppCastEvents;
+  t.repeated_parameters = moos::RepeatedParameter::kLastWinsWithWarning;
+  return t;
+}
+
+std::uint64_t operating_system_seed() {
+  try {
+    std::random_device device;
+    return (static_cast<std::uint64_t>(device()) << 32) ^ static_cast<std::uint64_t>(device());
+  } catch (const std::exception&) {
+    return static_cast<std::uint64_t>(
+        std::chrono::system_clock::now().time_since_epoch().count());
+  }
+}
+
+HazardSensor::HazardSensor(HazardSensorOptions options)
+    : moos::MoosApp(hazard_sensor_traits()), options_(std::move(options)) {
+  if (!options_.os_seed) options_.os_seed = operating_system_seed;
+}
+
+std::optional<std::string> HazardSensor::read_hazard_file(const std::string& path) const {
+  const fs::path p(path);
+  const fs::path full = p.is_relative() ? fs::path(options_.mission_directory) / p : p;
+  std::ifstream in(full, std::ios::binary);
+  if (!in) return std::nullopt;
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) return std::nullopt;
+  return text.str();
+}
+
+bool HazardSensor::on_start_up() {
+  hazard::EngineSetup setup = hazard::load_configuration(
+      to_entries(config_lines()), [this](const std::string& path) { return read_hazard_file(path); });
+  const hazard::SeedChoice seed = hazard::resolve_seed(std::nullopt, setup.config, options_.os_seed);
+  engine_.emplace(std::move(setup), seed);
+  for (const hazard::InterfaceVariable& v : hazard::Engine::subscriptions()) {
+    register_variable(std::string(v.name));
+  }
+  last_engine_time_s_ = cycle_time_s();
+  if (options_.verbose) *options_.verbose << moos::alog_header(app_name(), last_engine_time_s_);
+  publish(engine_->start(last_engine_time_s_), last_engine_time_s_);
+  return true;
+}
+
+void HazardSensor::on_new_mail(const std::vector<moos::Message>& mail) {
+  const double cycle_s = cycle_time_s();
+  for (const moos::Message& m : mail) {
+    const double t = std::max(last_engine_time_s_, std::min(m.time, cycle_s));
+    last_engine_time_s_ = t;
+    publish(engine_->on_mail(m.key, mail_text(m), t), t);
+  }
+}
+
+void HazardSensor::iterate() {
+  const double now_s = std::max(last_engine_time_s_, cycle_time_s());
+  last_engine_time_s_ = now_s;
+  publish(engine_->step(now_s), now_s);
+}
+
+std::string HazardSensor::build_report() {
+  if (!engine_) return {};
+  return hazard::format_report(hazard::collect_report_data(*engine_));
+}
+
+void HazardSensor::publish(const hazard::Outputs& out, double now_s) {
+  for (const hazard::Posting& p : out.postings) {
+    notify(p.variable, p.value);
+    write_verbose(now_s, p.variable, p.value);
+  }
+  using Report = void (HazardSensor::*)(const std::string&);
+  const auto report = [&](const std::vector<std::string>& texts, Report to_appcast,
+                          const char* verbose_variable) {
+    for (const std::string& t : texts) {
+      (this->*to_appcast)(t);
+      write_verbose(now_s, verbose_variable, t);
+    }
+  };
+  report(out.config_warnings, &HazardSensor::report_config_warning, kVerboseConfigWarning);
+  report(out.run_warnings, &HazardSensor::report_run_warning, kVerboseRunWarning);
+  report(out.retracted_run_warnings, &HazardSensor::retract_run_warning, kVerboseRetracted);
+  report(out.events, &HazardSensor::report_event, kVerboseEvent);
+}
+
+void HazardSensor::write_verbose(double now_s, const std::string& variable,
+                                 const std::string& value) const {
+  if (!options_.verbose) return;
+  *options_.verbose << moos::format_alog_line({now_s - start_time(), variable, app_name(), value});
+  options_.verbose->flush();
+}
+
+}  // namespace ufld_hazard_sensor

@@ -1,0 +1,89 @@
+#pragma once
+// HazardSensor: the uFldHazardSensor MOOS application, a thin adapter between libmoos's
+// application base and the pure engine (hazard::Engine). It holds no model logic.
+//
+// Contract:
+// - on_start_up: the app's block lines (framework keys already taken by libmoos) go to
+//   hazard::load_configuration in file order with their file and line; hazard files are read
+//   relative to the mission file's folder; the seed is resolved (random_seed, else seed_random:
+//   the operating system, else seed 1); the engine starts at the start-up time and its config
+//   warnings and object visuals are published; the engine's subscriptions are registered.
+//   Configuration problems never stop the app (D26).
+// - Mail: each message goes to Engine::on_mail with its own time stamp, clamped to
+//   [time given to the engine last, this cycle's time]: the engine needs non-decreasing times,
+//   and a foreign clock (skewed, unwarped) must not put mail in the future. Doubles are passed
+//   as text. Bad mail only yields a run warning (the engine's), never a stop.
+// - Iterate: Engine::step at this cycle's time (never earlier than the last mail time).
+// - Every engine output is published in order: postings with notify(), events, run warnings,
+//   retractions and config warnings to the AppCast. With a verbose stream, every posting and
+//   event (and warning) is also written there as an .alog line (time since start-up, variable,
+//   app name, value), after an .alog header written at start-up (D29).
+// - build_report: hazard::format_report (spec 11, seed and active effects in its header).
+// The app therefore posts exactly what the engine decided; hazard_replay drives the same engine
+// the same way (start, mail before the iteration of its time, step per AppTick).
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <iosfwd>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "hazard/engine.hpp"
+#include "moos/app.hpp"
+
+namespace ufld_hazard_sensor {
+
+/// Events kept in the AppCast unless max_appcast_events says otherwise (spec 3.4).
+inline constexpr std::size_t kDefaultMaxAppCastEvents = 20;
+
+/// Pseudo-variables of the verbose .alog stream for what is not a posting.
+inline constexpr const char* kVerboseEvent = "EVENT";
+inline constexpr const char* kVerboseRunWarning = "RUN_WARNING";
+inline constexpr const char* kVerboseRetracted = "RUN_WARNING_RETRACTED";
+inline constexpr const char* kVerboseConfigWarning = "CONFIG_WARNING";
+
+/// The framework defaults of this app: name, AppTick from the parameter table (so the app and
+/// hazard_replay iterate alike when a mission omits it), 20 AppCast events, and D36's rule for
+/// repeated framework parameters (the last one wins, with a warning).
+moos::AppTraits hazard_sensor_traits();
+
+/// A seed from the operating system (std::random_device; the clock only if that fails).
+std::uint64_t operating_system_seed();
+
+struct HazardSensorOptions {
+  /// The folder relative hazard_file paths are read from (the mission file's folder).
+  std::string mission_directory = ".";
+  /// Where --verbose writes its .alog lines; nullptr: not verbose.
+  std::ostream* verbose = nullptr;
+  /// The source of an operating-system seed (seed_random = true); empty: operating_system_seed.
+  std::function<std::uint64_t()> os_seed;
+};
+
+class HazardSensor final : public moos::MoosApp {
+ public:
+  explicit HazardSensor(HazardSensorOptions options = {});
+
+  /// The engine; nullptr until start-up has run.
+  const hazard::Engine* engine() const { return engine_ ? &*engine_ : nullptr; }
+
+ protected:
+  bool on_start_up() override;
+  void on_new_mail(const std::vector<moos::Message>& mail) override;
+  void iterate() override;
+  std::string build_report() override;
+
+ private:
+  /// The MOOS time of the running cycle (the time libmoos stamps events with).
+  double cycle_time_s() const { return start_time() + seconds_since_start(); }
+  std::optional<std::string> read_hazard_file(const std::string& path) const;
+  void publish(const hazard::Outputs& out, double now_s);
+  void write_verbose(double now_s, const std::string& variable, const std::string& value) const;
+
+  HazardSensorOptions options_;
+  std::optional<hazard::Engine> engine_;
+  double last_engine_time_s_ = 0.0;
+};
+
+}  // namespace ufld_hazard_sensor

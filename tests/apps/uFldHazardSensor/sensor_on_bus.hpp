@@ -1,0 +1,136 @@
+#pragma once
+// Test support: uFldHazardSensor (the app class) on libmoos's in-process bus with a manual
+// clock, so start-up, mail and iterations are instant and exact. A scratch folder holds the
+// mission file and hazard files, so hazard_file paths and file:line warnings are real.
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "HazardSensor.hpp"
+#include "moos/app.hpp"
+#include "moos/bus.hpp"
+#include "moos/clock.hpp"
+#include "moos/command_line.hpp"
+#include "moos/mission.hpp"
+
+namespace ufld_hazard_sensor::testing {
+
+namespace fs = std::filesystem;
+
+/// A fresh folder for the running test, removed when the object goes away.
+class ScratchDir {
+ public:
+  ScratchDir() {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    path_ = fs::temp_directory_path() /
+            ("uhz_app_" + std::to_string(::getpid()) + "_" + info->test_suite_name() + "_" +
+             info->name());
+    fs::remove_all(path_);
+    fs::create_directories(path_);
+  }
+  ~ScratchDir() {
+    std::error_code ignored;
+    fs::remove_all(path_, ignored);
+  }
+  ScratchDir(const ScratchDir&) = delete;
+  ScratchDir& operator=(const ScratchDir&) = delete;
+
+  fs::path operator/(const std::string& name) const { return path_ / name; }
+  const fs::path& path() const { return path_; }
+
+ private:
+  fs::path path_;
+};
+
+inline void write_file(const fs::path& path, const std::string& text) {
+  fs::create_directories(path.parent_path());
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+}
+
+inline std::string read_file(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+/// A mission file: the globals, then `ProcessConfig = <app>` with `block` (lines as written).
+/// The block's first line is line 6 of the file (kFirstBlockLine).
+inline std::string mission_text(const std::string& block, const std::string& app = "uFldHazardSensor") {
+  return "// uFldHazardSensor app tests\n"
+         "Community = shoreside\n"
+         "\n"
+         "ProcessConfig = " + app + "\n"
+         "{\n" + block + "}\n";
+}
+inline constexpr int kFirstBlockLine = 6;
+
+/// The app started on a bus (community "shoreside", warp 1) at ManualClock's default epoch.
+class SensorOnBus : public ::testing::Test {
+ protected:
+  static constexpr double kT0 = moos::ManualClock::kDefaultStartUnix_s;
+
+  /// Writes m.moos with `block` into the scratch folder, resolves the settings as main would
+  /// (libmoos's command line and mission reader) and starts the app.
+  void start(const std::string& block, HazardSensorOptions options = {},
+             std::vector<std::string> args = {}) {
+    start_mission(mission_text(block), std::move(options), std::move(args));
+  }
+
+  /// As start(), with the whole mission file given.
+  void start_mission(const std::string& mission_file, HazardSensorOptions options = {},
+                     std::vector<std::string> args = {}) {
+    write_file(dir / "m.moos", mission_file);
+    std::vector<moos::MissionError> errors;
+    mission = moos::MissionFile::load((dir / "m.moos").string(), {}, &errors);
+    ASSERT_TRUE(mission.has_value());
+    args.insert(args.begin(), {"uFldHazardSensor", (dir / "m.moos").string()});
+    moos::AppSettings settings = moos::resolve_app_settings(
+        hazard_sensor_traits(), moos::parse_command_line(args), &*mission, errors);
+    settings.time_warp = bus.time_warp();
+    if (options.os_seed == nullptr) options.os_seed = [] { return std::uint64_t{424242}; };
+    options.mission_directory = dir.path().string();
+    app.emplace(std::move(options));
+    comms = bus.connect(settings.moos_name);
+    ASSERT_TRUE(comms);
+    ASSERT_TRUE(app->start(*comms, std::move(settings)));
+  }
+
+  /// Runs the app's cycles for `moos_s` seconds (at its AppTick).
+  void run_for(double moos_s) { app->run_for(moos_s); }
+
+  void post(const std::string& var, const std::string& value) {
+    ASSERT_TRUE(vehicle->notify(var, value));
+  }
+
+  /// The values the app posted to `var`, in order.
+  std::vector<std::string> values_of(const std::string& var) const {
+    std::vector<std::string> out;
+    for (const auto& m : bus.postings_of(var)) {
+      if (m.source == app->settings().moos_name) out.push_back(m.sval);
+    }
+    return out;
+  }
+
+  const hazard::Engine& engine() const { return *app->engine(); }
+  const moos::AppCast& appcast() const { return app->appcast(); }
+
+  ScratchDir dir;
+  moos::ManualClock clock{kT0};
+  moos::InProcessBus bus{clock, moos::InProcessBus::Options{"shoreside", 1.0}};
+  std::unique_ptr<moos::BusClient> vehicle = bus.connect("vehicle");
+  std::unique_ptr<moos::BusClient> comms;
+  std::optional<moos::MissionFile> mission;
+  std::optional<HazardSensor> app;
+};
+
+}  // namespace ufld_hazard_sensor::testing
