@@ -1,0 +1,150 @@
+#pragma once
+// Engine: the simulated hazard sensor (manual 3-9, spec 6-10 as amended by the rulings).
+//
+// Contract: pure and deterministic. Time comes in as `now_s` (seconds, any origin, non-
+// decreasing); randomness comes only from Dice keyed by (seed, vehicle, object, pass, purpose);
+// every output is returned as an Outputs value. One entry point for mail (on_mail) serves the
+// app and hazard_replay alike, so the two cannot differ. Mail stamped at or before an
+// iteration's time must be delivered before step() for that time (the caller's loop).
+// step(now) runs three phases in order: post the options summary when due; sense (per active
+// vehicle in name order: automatic default setting, gates, swath, entry events, detection dice);
+// release classification answers (per vehicle in name order, rate-limited).
+// Scale: a sensing vehicle queries the spatial grid for its swath's bounding box only; per-
+// (vehicle, object) state exists only for objects that vehicle has had in its swath.
+// Rejected alternative: evaluating every object per vehicle per iteration (the original, spec 17).
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+#include "hazard/config.hpp"
+#include "hazard/dice.hpp"
+#include "hazard/effects.hpp"
+#include "hazard/messages/classify_request.hpp"
+#include "hazard/messages/config_request.hpp"
+#include "hazard/messages/node_report.hpp"
+#include "hazard/outputs.hpp"
+#include "hazard/swath.hpp"
+#include "hazard/vehicle_state.hpp"
+
+namespace hazard {
+
+/// A sensor request keeps the sensor on this long (spec 8.1, D12).
+inline constexpr double kSensorActiveWindow_s = 600.0;
+/// Default pd of a vehicle that never chose one (manual 4.2, D4).
+inline constexpr double kDefaultPd = 0.9;
+/// Longest mail value handled; longer values are refused with a warning (bad-input guard).
+inline constexpr std::size_t kMaxMailValueBytes = 64 * 1024;
+
+/// A MOOS variable of the interface, with an example payload (for --interface and the docs).
+struct InterfaceVariable {
+  std::string_view name;
+  std::string_view example;
+  std::string_view meaning;
+};
+
+/// One die outcome (for determinism checks and diagnostics; not an output of the app). The
+/// names are valid during the observer call only.
+struct Decision {
+  std::string_view vehicle;
+  std::string_view label;
+  std::uint32_t pass = 0;
+  DiePurpose purpose = DiePurpose::kDetection;
+  /// Detection: true if reported. Classification: true if the answer is correct.
+  bool outcome = false;
+};
+
+class Engine {
+ public:
+  Engine(EngineSetup setup, SeedChoice seed);
+
+  /// Start-up: the loader's config warnings and, if show_hazards, the object visuals.
+  /// Records `now_s` as the start time (the report's relative times).
+  Outputs start(double now_s);
+  /// One piece of mail. Unknown variables are ignored; malformed mail gives a run warning
+  /// naming the variable and the value, and changes nothing else.
+  Outputs on_mail(std::string_view variable, std::string_view value, double now_s);
+  /// One iteration at `now_s`.
+  Outputs step(double now_s);
+
+  static const std::vector<InterfaceVariable>& subscriptions();
+  static const std::vector<InterfaceVariable>& publications();
+
+  const EngineConfig& config() const { return config_; }
+  const HazardField& field() const { return field_; }
+  const Effects& effects() const { return effects_; }
+  const SeedChoice& seed() const { return seed_; }
+  const std::vector<HazardFileStatus>& hazard_files() const { return hazard_files_; }
+  std::optional<double> start_time_s() const { return start_time_s_; }
+
+  std::optional<VehicleId> find_vehicle(std::string_view name) const;
+  const VehicleState& vehicle(VehicleId id) const { return vehicles_[id]; }
+  /// Vehicle ids in name order.
+  const std::vector<VehicleId>& vehicles_by_name() const { return by_name_; }
+
+  /// Checks the engine's internal invariants (style practice 3; run by the tests after each
+  /// step): name order, sorted inside-lists of known objects with a pass each, credits in pass
+  /// order not beyond the passes made, settings consistent with their option. Empty when sound.
+  std::vector<std::string> invariant_violations() const;
+
+  /// Called for every die rolled (tests pin determinism with it). Empty by default.
+  void set_decision_observer(std::function<void(const Decision&)> observer) {
+    observer_ = std::move(observer);
+  }
+
+ private:
+  // Mail handlers, one per message type.
+  void handle_node_report(const NodeReport& report, double now_s, Outputs& out);
+  void handle_sensor_request(std::string_view vname, double now_s);
+  void handle_config_request(const ConfigRequest& request, double now_s, Outputs& out);
+  void handle_classify_request(const ClassifyRequest& request, double now_s, Outputs& out);
+  void clear_queue(std::string_view vname, Outputs& out);
+  void post_object_visuals(Outputs& out) const;
+
+  // Settings (D3, D4, D11, D20).
+  void apply_default_setting(VehicleState& v, double now_s, Outputs& out);
+  OptionIndex option_or_smallest(std::optional<OptionIndex> choice, const VehicleState& v,
+                                 Outputs& out) const;
+  void record_width_setting(VehicleState& v, double now_s, bool opens_window);
+  void set_option(VehicleState& v, OptionIndex option, double pd);
+  bool option_full(OptionIndex option, VehicleId asking, double now_s) const;
+  std::optional<OptionIndex> choose_option(double width_m, VehicleId asking, double now_s) const;
+  void post_ack(const VehicleState& v, Outputs& out) const;
+
+  // The phases of step().
+  void post_options_summary_if_due(double now_s, Outputs& out);
+  void sense(VehicleState& v, double now_s, Outputs& out);
+  bool sensor_on(const VehicleState& v) const;
+  void post_swath(const VehicleState& v, const Swath& swath, bool on, Outputs& out) const;
+  void update_entries(VehicleState& v, const Swath& swath, double now_s, Outputs& out);
+  void roll_detection(VehicleState& v, ObjectId id, double now_s, Outputs& out);
+  void release_classifications(double now_s, Outputs& out);
+
+  bool active(const VehicleState& v, double now_s) const;
+  double degradation(const HazardObject& o, double heading_deg) const;
+  VehicleState& vehicle_named(std::string_view name);
+  void notify(const VehicleState& v, ObjectId id, std::uint32_t pass, DiePurpose purpose,
+              bool outcome) const;
+
+  EngineConfig config_;
+  HazardField field_;
+  std::vector<std::string> setup_warnings_;
+  std::vector<HazardFileStatus> hazard_files_;
+  Effects effects_;
+  SeedChoice seed_;
+  Dice dice_;
+
+  std::vector<VehicleState> vehicles_;
+  std::unordered_map<std::string, VehicleId> vehicle_ids_;
+  std::vector<VehicleId> by_name_;
+  std::optional<double> start_time_s_;
+  std::optional<double> last_summary_s_;
+  std::vector<ObjectId> scratch_inside_;  ///< reused by update_entries
+  std::function<void(const Decision&)> observer_;
+};
+
+}  // namespace hazard

@@ -1,0 +1,37 @@
+#pragma once
+// Heading history and turn rate (manual 8, spec 8.2, N4).
+//
+// Contract: samples (heading, receipt time) are kept only while they can matter: those within
+// kTurnWindow_s of the newest sample (at most kMaxSamples). A sample is added only if its time is
+// strictly after the newest (several reports in one mail batch count once). The turn rate is the
+// sum of absolute heading steps |norm180(h_i - h_(i-1))| over the samples inside the window,
+// divided by the time from the oldest sample inside the window to the newest; 0 when that time
+// is 0 (one sample). It is anchored at the newest sample, not at "now" (frozen if reports stop),
+// and it wraps correctly across 0/360.
+
+#include <cstddef>
+#include <deque>
+
+namespace hazard {
+
+class HeadingHistory {
+ public:
+  /// Turn-rate window (manual 8: "defined over the previous 2 seconds").
+  static constexpr double kTurnWindow_s = 2.0;
+  /// Bound on memory if reports arrive absurdly fast.
+  static constexpr std::size_t kMaxSamples = 1000;
+
+  void add(double heading_deg, double time_s);
+  /// deg/s, >= 0.
+  double turn_rate_dps() const;
+  std::size_t size() const { return samples_.size(); }
+
+ private:
+  struct Sample {
+    double heading_deg;
+    double time_s;
+  };
+  std::deque<Sample> samples_;  ///< oldest first
+};
+
+}  // namespace hazard

@@ -1,0 +1,34 @@
+#pragma once
+// UHZ_DETECTION_REPORT and UHZ_DETECTION_REPORT_<V> (rulings D24, "Report payloads").
+//
+// Examples: UHZ_DETECTION_REPORT        = vname=archie,x=-52,y=-290,label=75
+//           UHZ_DETECTION_REPORT_ARCHIE = x=-52,y=-290,label=75
+//           with aspect data:
+//             vname=archie,x=37,y=-207,label=99,aspect=57,aspect_min=20,aspect_max=45
+//
+// vname first when present (the general variable), then x, y (FMT(.,2)), label, then the aspect
+// fields the object has. The parser accepts both variants (vname optional) and ignores unknown
+// keys; x, y and label are required.
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "hazard/messages/parsed.hpp"
+
+namespace hazard {
+
+struct DetectionReport {
+  std::optional<std::string> vname;  ///< set in the general variant only
+  double x_m = 0.0;
+  double y_m = 0.0;
+  std::string label;
+  std::optional<double> aspect_deg;
+  std::optional<double> aspect_min_deg;
+  std::optional<double> aspect_max_deg;
+};
+
+Parsed<DetectionReport> parse_detection_report(std::string_view text);
+std::string format_detection_report(const DetectionReport& report);
+
+}  // namespace hazard

@@ -1,0 +1,37 @@
+#pragma once
+// NODE_REPORT (spec 6): a vehicle's pose, from the vehicle, bridged to the shoreside.
+//
+// Example: NAME=archie,X=10,Y=-5,LAT=43.8,LON=-70.3,SPD=1.5,HDG=90,TIME=123,TYPE=kayak
+//
+// Keys are case-insensitive; commas inside {...} do not split. NAME, X, Y, SPD (or SPEED) and
+// HDG (or HEADING) are required and must be finite numbers; the heading is normalised to
+// [0, 360). LAT, LON and TIME are kept when they are numbers; other keys are ignored (node
+// reports carry many). A LAT/LON-only report is rejected (geodesy seam: a later issue converts
+// it around LatOrigin/LongOrigin).
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "hazard/messages/parsed.hpp"
+
+namespace hazard {
+
+struct NodeReport {
+  std::string name;          ///< vehicle name, case-sensitive
+  double x_m = 0.0;          ///< local east
+  double y_m = 0.0;          ///< local north
+  double speed_mps = 0.0;
+  double heading_deg = 0.0;  ///< [0, 360)
+  std::optional<double> lat_deg;
+  std::optional<double> lon_deg;
+  std::optional<double> time_s;     ///< the report's own time stamp (unused by the sensor)
+  std::optional<std::string> type;  ///< platform type (unused by the sensor)
+};
+
+Parsed<NodeReport> parse_node_report(std::string_view text);
+/// NAME=..,X=FMT(x,2),Y=FMT(y,2),SPD=FMT(s,2),HDG=FMT(h,2)
+///   [,LAT=..,LON=..][,TIME=FMT(t,3)][,TYPE=..]
+std::string format_node_report(const NodeReport& report);
+
+}  // namespace hazard

@@ -1,0 +1,93 @@
+#pragma once
+// VehicleState: everything the engine knows about one vehicle, in one record (style practice 7).
+//
+// Contract: a vehicle is found by a small id (VehicleId, assigned in order of first appearance);
+// its name appears only at the message edge. Per-(vehicle, object) state lives inside the
+// vehicle's record keyed by ObjectId, so together the key is the integer pair (vehicle id, object
+// id), never a joined string (N14); it exists only for objects this vehicle has had in its swath.
+// Timers are std::optional: nullopt means "never happened" (N11).
+// Hot part (read every sensing iteration): pose, setting, sensor-request time, the sorted list of
+// objects currently inside the swath. Cold part: pass counts, credits, queue, counters.
+
+#include <cstdint>
+#include <deque>
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+#include "hazard/classify_queue.hpp"
+#include "hazard/hazard_field.hpp"
+#include "hazard/heading_history.hpp"
+#include "hazard/sensor_options.hpp"
+
+namespace hazard {
+
+using VehicleId = std::uint32_t;
+
+/// The latest valid node report.
+struct Pose {
+  glm::dvec2 position_m{0.0, 0.0};
+  double heading_deg = 0.0;  ///< [0, 360)
+  double speed_mps = 0.0;
+};
+
+/// The setting in force (manual 4): an option plus the chosen pd.
+struct SensorSetting {
+  OptionIndex option = 0;
+  double width_m = 0.0;
+  double exp = 1.0;
+  double pclass = 0.5;
+  double pd = 0.0;
+  double pfa = 0.0;  ///< pd^exp
+};
+
+/// Report counters (spec 11, D32).
+struct VehicleCounters {
+  int sensor_requests = 0;
+  int width_attempts = 0;  ///< incl. the automatic default and denied requests
+  int width_resets = 0;    ///< successful width settings, incl. the automatic default
+  std::optional<double> last_width_reset_s;
+  int pd_resets = 0;
+  std::optional<double> last_pd_reset_s;
+  int detections = 0;
+  int hazard_chances = 0;
+  int hazard_reports = 0;
+  int benign_chances = 0;
+  int benign_reports = 0;
+  int classify_requests = 0;  ///< all, including refused ones
+  int answers = 0;            ///< released
+};
+
+struct VehicleState {
+  std::string name;
+  std::string variable_suffix;  ///< "_" + upper-cased name
+  std::uint64_t name_hash = 0;  ///< dice key
+
+  std::optional<Pose> pose;
+  std::optional<double> last_sensor_request_s;
+  std::optional<SensorSetting> setting;
+  /// Start of the min_reset_interval window: the last width change by request (never by the
+  /// automatic default, D4).
+  std::optional<double> width_window_start_s;
+  /// Only when the turn_blackout effect is on.
+  std::optional<HeadingHistory> heading_history;
+  /// Objects inside the swath at the last sensor-on iteration, sorted.
+  std::vector<ObjectId> inside;
+
+  /// Sensor events so far per object (the pass number of the latest event).
+  std::unordered_map<ObjectId, std::uint32_t> passes;
+  /// Unused classification credits per object, oldest first (D7).
+  std::unordered_map<ObjectId, std::deque<Credit>> credits;
+  ClassifyQueue queue;
+  std::optional<double> last_release_s;
+  std::optional<double> last_top_s;
+
+  VehicleCounters counters;
+  bool warned_no_node_report = false;
+  bool warned_no_setting = false;
+};
+
+}  // namespace hazard

@@ -1,0 +1,33 @@
+#include "HazardReplay_Info.hpp"
+
+namespace hazard_replay {
+
+std::string usage_line() {
+  return "Usage: hazard_replay CONFIG.moos INPUT.alog [--alias=NAME] [--seed=N] [--until=T] "
+         "[--output=OUT.alog]";
+}
+
+std::string help_text() {
+  return usage_line() +
+         "\n"
+         "\n"
+         "Runs the uFldHazardSensor engine offline, without MOOS: reads the\n"
+         "`ProcessConfig = uFldHazardSensor` block of CONFIG.moos (hazard files relative to\n"
+         "the mission file), delivers each line of INPUT.alog at its time, iterates at the\n"
+         "block's AppTick (default 4 Hz) from the first input to the last, and writes every\n"
+         "posting as an .alog line (time, variable, source, value).\n"
+         "\n"
+         "Options:\n"
+         "  --alias=NAME       read `ProcessConfig = NAME` instead; NAME is also the source\n"
+         "                     column of the output\n"
+         "  --seed=N           dice seed, a whole number (beats random_seed and seed_random)\n"
+         "  --until=T          stop at time T (input time base) instead of the last input\n"
+         "  --output=OUT.alog  write the postings to OUT.alog instead of standard output\n"
+         "  --help, -h         this text\n"
+         "\n"
+         "Same inputs and seed give the same output, byte for byte. Warnings, events and the\n"
+         "seed in use go to standard error. Exit status: 0 done, 1 a file or block problem,\n"
+         "2 a bad command line.\n";
+}
+
+}  // namespace hazard_replay

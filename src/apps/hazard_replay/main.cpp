@@ -1,0 +1,36 @@
+// hazard_replay: the uFldHazardSensor engine driven offline by an .alog of inputs.
+#include <fstream>
+#include <iostream>
+
+#include "HazardReplay_Info.hpp"
+#include "replay.hpp"
+
+int main(int argc, char** argv) {
+  // Events can be many (one per detection): buffer standard error instead of one write each.
+  std::ios::sync_with_stdio(false);
+  std::cerr.unsetf(std::ios::unitbuf);
+  const std::vector<std::string> args(argv + 1, argv + argc);
+  const hazard_replay::ParsedArgs parsed = hazard_replay::parse_args(args);
+  if (!parsed.options) {
+    std::cerr << "hazard_replay: " << parsed.error << "\n" << hazard_replay::usage_line() << "\n";
+    return 2;
+  }
+  const hazard_replay::Options& options = *parsed.options;
+  if (options.help) {
+    std::cout << hazard_replay::help_text();
+    return 0;
+  }
+  if (!options.output_path) return hazard_replay::run(options, std::cout, std::cerr);
+  std::ofstream file(*options.output_path, std::ios::binary | std::ios::trunc);
+  if (!file) {
+    std::cerr << "hazard_replay: cannot write --output file '" << *options.output_path << "'\n";
+    return 1;
+  }
+  const int status = hazard_replay::run(options, file, std::cerr);
+  file.close();
+  if (!file) {
+    std::cerr << "hazard_replay: writing '" << *options.output_path << "' failed\n";
+    return 1;
+  }
+  return status;
+}

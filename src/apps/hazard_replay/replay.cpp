@@ -1,0 +1,214 @@
+#include "replay.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <ostream>
+#include <random>
+#include <sstream>
+
+#include "hazard/config.hpp"
+#include "hazard/engine.hpp"
+#include "hazard/text.hpp"
+#include "moos/alog.hpp"
+#include "moos/mission.hpp"
+
+namespace hazard_replay {
+
+namespace {
+
+namespace fs = std::filesystem;
+using hazard::fix;
+
+std::optional<std::string> read_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return std::nullopt;
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) return std::nullopt;
+  return text.str();
+}
+
+// The one conversion the app will do too: a mission line to an engine configuration entry.
+std::vector<hazard::ConfigEntry> to_entries(const moos::ProcessBlock& block) {
+  std::vector<hazard::ConfigEntry> out;
+  out.reserve(block.lines.size());
+  for (const moos::ConfigLine& l : block.lines) out.push_back({l.key, l.value, l.file, l.line});
+  return out;
+}
+
+std::uint64_t operating_system_seed() {
+  std::random_device device;
+  return (static_cast<std::uint64_t>(device()) << 32) ^ device();
+}
+
+struct Input {
+  std::vector<moos::AlogEntry> entries;  // time order
+  double logstart_s = 0.0;
+};
+
+std::optional<Input> read_input(const std::string& path, std::ostream& err) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return std::nullopt;
+  Input input;
+  std::string line;
+  int number = 0;
+  while (std::getline(in, line)) {
+    ++number;
+    const moos::AlogParse p = moos::parse_alog_line(line);
+    if (p.kind == moos::AlogLineKind::kEntry) {
+      input.entries.push_back(p.entry);
+    } else if (p.kind == moos::AlogLineKind::kHeader) {
+      if (const auto start = moos::alog_logstart(line)) input.logstart_s = *start;
+    } else if (p.kind == moos::AlogLineKind::kMalformed) {
+      err << path << ":" << number << ": warning: " << p.error << "; line skipped\n";
+    }
+  }
+  std::stable_sort(input.entries.begin(), input.entries.end(),
+                   [](const moos::AlogEntry& a, const moos::AlogEntry& b) {
+                     return a.time_s < b.time_s;
+                   });
+  return input;
+}
+
+// Writes one engine call's outputs: postings to the log, the rest to the error stream.
+class Writer {
+ public:
+  Writer(std::ostream& out, std::ostream& err, std::string source)
+      : out_(out), err_(err), source_(std::move(source)) {}
+
+  void write(const hazard::Outputs& o, double time_s) {
+    for (const hazard::Posting& p : o.postings) {
+      out_ << moos::format_alog_line({time_s, p.variable, source_, p.value});
+    }
+    const std::string when = "[" + fix(time_s, 3) + "] ";
+    for (const auto& w : o.config_warnings) err_ << when << "config warning: " << w << "\n";
+    for (const auto& w : o.run_warnings) err_ << when << "run warning: " << w << "\n";
+    for (const auto& w : o.retracted_run_warnings) err_ << when << "resolved: " << w << "\n";
+    for (const auto& e : o.events) err_ << when << "event: " << e << "\n";
+  }
+
+ private:
+  std::ostream& out_;
+  std::ostream& err_;
+  std::string source_;
+};
+
+
+// A guard against a mistyped --until (1e12 s at 4 Hz would never finish).
+constexpr double kMaxIterations = 1e8;
+
+}  // namespace
+
+ParsedArgs parse_args(const std::vector<std::string>& args) {
+  Options o;
+  std::vector<std::string> positional;
+  auto fail = [](std::string why) { return ParsedArgs{std::nullopt, std::move(why)}; };
+  for (const std::string& a : args) {
+    const auto eq = a.find('=');
+    const std::string name = a.substr(0, eq);
+    const std::string value = eq == std::string::npos ? "" : a.substr(eq + 1);
+    if (a == "--help" || a == "-h") {
+      o.help = true;
+    } else if (name == "--alias" && eq != std::string::npos) {
+      if (value.empty()) return fail("--alias needs a name: '" + a + "'");
+      o.app_name = value;
+    } else if (name == "--seed" && eq != std::string::npos) {
+      o.seed = hazard::parse_unsigned(value);
+      if (!o.seed) return fail("--seed needs a whole number in [0, 2^64): '" + a + "'");
+    } else if (name == "--until" && eq != std::string::npos) {
+      o.until_s = hazard::parse_number(value);
+      if (!o.until_s) return fail("--until needs a finite number of seconds: '" + a + "'");
+    } else if (name == "--output" && eq != std::string::npos) {
+      if (value.empty()) return fail("--output needs a file name: '" + a + "'");
+      o.output_path = value;
+    } else if (a.size() > 1 && a[0] == '-') {
+      return fail("unknown option '" + a + "'");
+    } else {
+      positional.push_back(a);
+    }
+  }
+  if (o.help) return ParsedArgs{o, {}};
+  if (positional.size() < 2) {
+    return fail(positional.empty() ? "missing CONFIG.moos and INPUT.alog" : "missing INPUT.alog");
+  }
+  if (positional.size() > 2) return fail("unexpected argument '" + positional[2] + "'");
+  o.config_path = positional[0];
+  o.input_path = positional[1];
+  return ParsedArgs{o, {}};
+}
+
+int run(const Options& options, std::ostream& out, std::ostream& err) {
+  std::vector<moos::MissionError> mission_errors;
+  const auto mission = moos::MissionFile::load(options.config_path, {}, &mission_errors);
+  if (!mission) {
+    err << "hazard_replay: cannot read mission file '" << options.config_path << "'\n";
+    return 1;
+  }
+  for (const moos::MissionError& e : mission_errors) {
+    if (e.block.empty() || hazard::iequals(e.block, options.app_name)) {
+      err << e.to_string() << "\n";
+    }
+  }
+  const moos::ProcessBlock* block = mission->block(options.app_name);
+  if (!block) {
+    err << "hazard_replay: no 'ProcessConfig = " << options.app_name << "' block in '"
+        << options.config_path << "'\n";
+    return 1;
+  }
+  const auto input = read_input(options.input_path, err);
+  if (!input) {
+    err << "hazard_replay: cannot read input log '" << options.input_path << "'\n";
+    return 1;
+  }
+
+  // Hazard files are named relative to the mission file.
+  const fs::path mission_dir(mission->directory());
+  hazard::EngineSetup setup =
+      hazard::load_configuration(to_entries(*block), [&](const std::string& path) {
+        const fs::path p(path);
+        return read_file((p.is_relative() ? mission_dir / p : p).string());
+      });
+  const double tick_hz = setup.config.app_tick_hz;
+  const hazard::SeedChoice seed =
+      hazard::resolve_seed(options.seed, setup.config, operating_system_seed);
+  hazard::Engine engine(std::move(setup), seed);
+  err << "hazard_replay: seed " << seed.seed << " (" << hazard::seed_source_name(seed.source)
+      << "), AppTick " << hazard::fmt(tick_hz) << " Hz\n";
+
+  const auto& mail = input->entries;
+  const double start_s = mail.empty() ? 0.0 : mail.front().time_s;
+  const double end_s = options.until_s.value_or(mail.empty() ? start_s : mail.back().time_s);
+  if ((end_s - start_s) * tick_hz > kMaxIterations) {
+    err << "hazard_replay: " << fix((end_s - start_s) * tick_hz, 0)
+        << " iterations from the first input to the end; more than " << fix(kMaxIterations, 0)
+        << " is refused (check --until and AppTick)\n";
+    return 1;
+  }
+  out << moos::alog_header(fs::path(options.input_path).filename().string(), input->logstart_s);
+  Writer writer(out, err, options.app_name);
+  if (mail.empty()) {
+    err << "hazard_replay: '" << options.input_path << "' holds no input lines\n";
+    return 0;
+  }
+  writer.write(engine.start(start_s), start_s);
+
+  std::size_t next = 0;
+  auto deliver_until = [&](double t) {
+    for (; next < mail.size() && mail[next].time_s <= t; ++next) {
+      const moos::AlogEntry& m = mail[next];
+      writer.write(engine.on_mail(m.variable, m.value, m.time_s), m.time_s);
+    }
+  };
+  for (long k = 0;; ++k) {
+    const double now_s = start_s + static_cast<double>(k) / tick_hz;
+    if (now_s > end_s) break;
+    deliver_until(now_s);
+    writer.write(engine.step(now_s), now_s);
+  }
+  deliver_until(end_s);
+  out.flush();
+  return 0;
+}
+
+}  // namespace hazard_replay

@@ -1,0 +1,46 @@
+#pragma once
+// Private helpers shared by the message modules: reading a key=value list with typed lookups
+// whose errors name the field and the value, and writing one.
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+#include "hazard/text.hpp"
+
+namespace hazard::detail {
+
+/// A parsed key=value list. Keys compare case-insensitively; a repeated key: the last one wins.
+class Fields {
+ public:
+  explicit Fields(std::string_view text, bool respect_braces = false)
+      : pieces_(split_key_values(text, ',', respect_braces)) {}
+
+  std::optional<std::string_view> get(std::string_view key) const;
+  /// A finite number, nullopt if absent; sets `error` (if empty) when present but not a number.
+  std::optional<double> number(std::string_view key, std::string& error) const;
+  /// Keys present that are not in `known` (for strict messages).
+  std::vector<std::string_view> unknown_keys(const std::vector<std::string_view>& known) const;
+  const std::vector<KeyValue>& pieces() const { return pieces_; }
+
+ private:
+  std::vector<KeyValue> pieces_;
+};
+
+/// "field 'pd' value 'abc'".
+std::string field_value(std::string_view key, std::string_view value);
+/// "missing field 'vname'".
+std::string missing_field(std::string_view key);
+
+/// Appends ",key=value" (no comma when `out` is empty).
+void append_field(std::string& out, std::string_view key, std::string_view value);
+
+/// "{x1,y1:x2,y2}" with FMT(., decimals) coordinates.
+std::string format_points(const std::vector<glm::dvec2>& points, int decimals);
+/// Parses "{x1,y1:x2,y2:...}" (braces optional); nullopt if any coordinate is bad.
+std::optional<std::vector<glm::dvec2>> parse_points(std::string_view text);
+
+}  // namespace hazard::detail

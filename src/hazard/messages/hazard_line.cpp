@@ -1,0 +1,194 @@
+#include "hazard/messages/hazard_line.hpp"
+
+#include <set>
+
+#include "hazard/style.hpp"
+#include "hazard/text.hpp"
+
+namespace hazard {
+
+namespace {
+
+// Ranges from the rulings' validation table (D27, D28).
+constexpr double kMaxAspectDeg = 360.0;       // aspect in [0, 360)
+constexpr double kMaxAspectWindowDeg = 90.0;  // aspect_min, aspect_max in [0, 90], sum <= 90
+
+std::string quoted(std::string_view s) { return "'" + std::string(s) + "'"; }
+
+std::string field_value(std::string_view key, std::string_view value) {
+  return "field " + quoted(key) + " value " + quoted(excerpt(value));
+}
+
+// Collects what parse_hazard_line finds, field by field.
+struct LineReader {
+  HazardLineParse result;
+  HazardObject object;
+  std::optional<double> x, y;
+  std::optional<std::string> label;
+  std::optional<ObjectType> type;
+  std::optional<ObjectType> type_from_hazard_key;
+  bool has_lat_lon = false;
+
+  void reject(std::string why) {
+    if (result.error.empty()) result.error = std::move(why);
+  }
+
+  std::optional<double> number(std::string_view key, std::string_view value) {
+    const auto v = parse_number(value);
+    if (!v) reject(field_value(key, value) + " is not a number");
+    return v;
+  }
+
+  std::optional<double> ranged(std::string_view key, std::string_view value, double lo, double hi,
+                               bool hi_inclusive) {
+    const auto v = number(key, value);
+    if (!v) return std::nullopt;
+    if (*v < lo || *v > hi || (!hi_inclusive && *v == hi)) {
+      reject(field_value(key, value) + " is outside [" + fmt(lo) + ", " + fmt(hi) +
+             (hi_inclusive ? "]" : ")"));
+      return std::nullopt;
+    }
+    return v;
+  }
+
+  void read(std::string_view raw_key, std::string_view value) {
+    const std::string key = to_lower(raw_key);
+    if (key == "x") {
+      x = number(key, value);
+    } else if (key == "y") {
+      y = number(key, value);
+    } else if (key == "label") {
+      label = std::string(value);
+    } else if (key == "type") {
+      if (iequals(value, "hazard")) {
+        type = ObjectType::kHazard;
+      } else if (iequals(value, "benign")) {
+        type = ObjectType::kBenign;
+      } else {
+        reject(field_value(key, value) + " is neither 'hazard' nor 'benign'");
+      }
+    } else if (key == "hazard") {
+      const auto b = parse_bool(value);
+      if (!b) reject(field_value(key, value) + " is not a boolean word");
+      if (b) type_from_hazard_key = *b ? ObjectType::kHazard : ObjectType::kBenign;
+    } else if (key == "hr") {
+      object.resemblance = ranged(key, value, 0.0, 1.0, true);
+    } else if (key == "aspect") {
+      object.aspect_deg = ranged(key, value, 0.0, kMaxAspectDeg, false);
+    } else if (key == "aspect_min") {
+      object.aspect_min_deg = ranged(key, value, 0.0, kMaxAspectWindowDeg, true);
+    } else if (key == "aspect_max") {
+      object.aspect_max_deg = ranged(key, value, 0.0, kMaxAspectWindowDeg, true);
+    } else if (key == "color") {
+      if (is_known_color(value)) {
+        object.color = std::string(value);
+      } else {
+        result.warnings.push_back(field_value(key, value) + " is not a known colour; hint ignored");
+      }
+    } else if (key == "shape") {
+      const std::string shape = to_lower(value);
+      if (is_known_shape(shape)) {
+        object.shape = shape;
+      } else {
+        result.warnings.push_back(field_value(key, value) + " is not a known shape; hint ignored");
+      }
+    } else if (key == "width") {
+      const auto w = parse_number(value);
+      if (w && *w >= 0.0) {
+        object.marker_width_m = *w;
+      } else {
+        result.warnings.push_back(field_value(key, value) +
+                                  " is not a number >= 0; hint ignored");
+      }
+    } else if (key == "source") {
+      object.source = std::string(value);
+    } else if (key == "lat" || key == "lon") {
+      // Geodesy seam: a later issue converts lat/lon around LatOrigin/LongOrigin. Until then
+      // such a line needs x and y as well.
+      has_lat_lon = true;
+    } else {
+      result.warnings.push_back("unknown key " + quoted(raw_key) + " (value " +
+                                quoted(excerpt(value)) + ") ignored");
+    }
+  }
+
+  void check_aspect_window() {
+    const auto& lo = object.aspect_min_deg;
+    const auto& hi = object.aspect_max_deg;
+    if (lo && hi && *lo > *hi) {
+      reject("aspect_min " + fmt(*lo) + " is greater than aspect_max " + fmt(*hi));
+    } else if (lo && hi && *lo + *hi > kMaxAspectWindowDeg) {
+      reject("aspect_min + aspect_max = " + fmt(*lo + *hi) + " exceeds 90");
+    }
+    const int present = static_cast<int>(object.aspect_deg.has_value()) +
+                        static_cast<int>(lo.has_value()) + static_cast<int>(hi.has_value());
+    if (present > 0 && present < 3) {
+      result.warnings.push_back(
+          "partial aspect data (aspect, aspect_min and aspect_max are needed together); the "
+          "object loads without aspect sensitivity");
+    }
+  }
+
+  void finish() {
+    if (!result.error.empty()) return;
+    if (!x || !y) {
+      if (has_lat_lon) {
+        reject("position given only as lat/lon; x and y are required (no geodesy yet)");
+      } else {
+        reject(std::string("missing field '") + (!x ? "x" : "y") + "'");
+      }
+      return;
+    }
+    if (!type) type = type_from_hazard_key;
+    if (!type) return reject("missing field 'type'");
+    if (!label || label->empty()) return reject("missing field 'label'");
+    check_aspect_window();
+    if (!result.error.empty()) return;
+    object.x_m = *x;
+    object.y_m = *y;
+    object.label = *label;
+    object.type = *type;
+    result.object = std::move(object);
+  }
+};
+
+}  // namespace
+
+const char* type_name(ObjectType type) {
+  return type == ObjectType::kHazard ? "hazard" : "benign";
+}
+
+HazardLineParse parse_hazard_line(std::string_view spec) {
+  LineReader reader;
+  std::set<std::string> seen;
+  for (const KeyValue& kv : split_key_values(spec)) {
+    if (!kv.has_equals) {
+      reader.result.warnings.push_back("piece " + quoted(excerpt(kv.key)) +
+                                       " has no '='; ignored");
+      continue;
+    }
+    if (!seen.insert(to_lower(kv.key)).second) {
+      reader.result.warnings.push_back("key " + quoted(kv.key) +
+                                       " repeated; the later value is used");
+    }
+    reader.read(kv.key, kv.value);
+  }
+  reader.finish();
+  if (!reader.result.error.empty()) reader.result.object.reset();
+  return std::move(reader.result);
+}
+
+std::string format_hazard_line(const HazardObject& o) {
+  std::string out = "x=" + fmt(o.x_m, 2) + ",y=" + fmt(o.y_m, 2) + ",label=" + o.label +
+                    ",type=" + type_name(o.type);
+  if (o.color) out += ",color=" + *o.color;
+  if (o.shape) out += ",shape=" + *o.shape;
+  if (o.marker_width_m) out += ",width=" + fmt(*o.marker_width_m);
+  if (o.resemblance && !o.is_hazard()) out += ",hr=" + fmt(*o.resemblance);
+  if (o.aspect_deg) out += ",aspect=" + fmt(*o.aspect_deg);
+  if (o.aspect_min_deg) out += ",aspect_min=" + fmt(*o.aspect_min_deg);
+  if (o.aspect_max_deg) out += ",aspect_max=" + fmt(*o.aspect_max_deg);
+  return out;
+}
+
+}  // namespace hazard

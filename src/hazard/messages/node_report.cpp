@@ -1,0 +1,83 @@
+#include "hazard/messages/node_report.hpp"
+
+#include "fields.hpp"
+
+namespace hazard {
+
+using detail::Fields;
+using detail::missing_field;
+
+namespace {
+
+// A coordinate given as LAT/LON keeps its precision (about 1 mm at 8 decimals).
+constexpr int kLatLonDecimals = 8;
+
+std::optional<std::string_view> either(const Fields& f, std::string_view a, std::string_view b) {
+  auto v = f.get(a);
+  return v ? v : f.get(b);
+}
+
+std::optional<double> optional_number(const Fields& f, std::string_view key) {
+  const auto text = f.get(key);
+  return text ? parse_number(*text) : std::nullopt;
+}
+
+}  // namespace
+
+Parsed<NodeReport> parse_node_report(std::string_view text) {
+  const Fields f(text, /*respect_braces=*/true);
+  NodeReport r;
+  const auto name = f.get("NAME");
+  if (!name || name->empty()) return Parsed<NodeReport>::fail(missing_field("NAME"));
+  r.name = std::string(*name);
+
+  std::string error;
+  const auto x = f.number("X", error);
+  const auto y = f.number("Y", error);
+  const auto spd_text = either(f, "SPD", "SPEED");
+  const auto hdg_text = either(f, "HDG", "HEADING");
+  const auto spd = spd_text ? parse_number(*spd_text) : std::nullopt;
+  const auto hdg = hdg_text ? parse_number(*hdg_text) : std::nullopt;
+  if (!error.empty()) return Parsed<NodeReport>::fail(error);
+  if (spd_text && !spd) {
+    return Parsed<NodeReport>::fail(detail::field_value("SPD", *spd_text) +
+                                    " is not a finite number");
+  }
+  if (hdg_text && !hdg) {
+    return Parsed<NodeReport>::fail(detail::field_value("HDG", *hdg_text) +
+                                    " is not a finite number");
+  }
+  if (!x || !y) {
+    if (f.get("LAT") && f.get("LON")) {
+      return Parsed<NodeReport>::fail("LAT/LON without X/Y is not supported (no geodesy yet)");
+    }
+    return Parsed<NodeReport>::fail(missing_field(!x ? "X" : "Y"));
+  }
+  if (!spd) return Parsed<NodeReport>::fail(missing_field("SPD"));
+  if (!hdg) return Parsed<NodeReport>::fail(missing_field("HDG"));
+  r.x_m = *x;
+  r.y_m = *y;
+  r.speed_mps = *spd;
+  r.heading_deg = norm360(*hdg);
+  r.lat_deg = optional_number(f, "LAT");
+  r.lon_deg = optional_number(f, "LON");
+  r.time_s = optional_number(f, "TIME");
+  if (const auto type = f.get("TYPE"); type && !type->empty()) r.type = std::string(*type);
+  return Parsed<NodeReport>::ok(std::move(r));
+}
+
+std::string format_node_report(const NodeReport& r) {
+  std::string out;
+  detail::append_field(out, "NAME", r.name);
+  detail::append_field(out, "X", fmt(r.x_m, 2));
+  detail::append_field(out, "Y", fmt(r.y_m, 2));
+  detail::append_field(out, "SPD", fmt(r.speed_mps, 2));
+  detail::append_field(out, "HDG", fmt(r.heading_deg, 2));
+  if (r.lat_deg) detail::append_field(out, "LAT", fmt(*r.lat_deg, kLatLonDecimals));
+  if (r.lon_deg) detail::append_field(out, "LON", fmt(*r.lon_deg, kLatLonDecimals));
+  if (r.time_s) detail::append_field(out, "TIME", fmt(*r.time_s, 3));
+  if (r.type) detail::append_field(out, "TYPE", *r.type);
+  return out;
+}
+
+}  // namespace hazard

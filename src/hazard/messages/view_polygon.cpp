@@ -1,0 +1,43 @@
+#include "hazard/messages/view_polygon.hpp"
+
+#include <algorithm>
+
+#include "fields.hpp"
+
+namespace hazard {
+
+using Result = Parsed<ViewPolygon>;
+
+Result parse_view_polygon(std::string_view text) {
+  const detail::Fields f(text, /*respect_braces=*/true);
+  ViewPolygon p;
+  const auto pts = f.get("pts");
+  if (!pts) return Result::fail(detail::missing_field("pts"));
+  auto points = detail::parse_points(*pts);
+  if (!points) return Result::fail(detail::field_value("pts", *pts) + " is not a point list");
+  p.points = std::move(*points);
+  p.label = std::string(f.get("label").value_or(""));
+  p.msg = std::string(f.get("msg").value_or(""));
+  p.edge_color = std::string(f.get("edge_color").value_or(""));
+  p.fill_color = std::string(f.get("fill_color").value_or(""));
+  std::string error;
+  p.vertex_size = f.number("vertex_size", error).value_or(0.0);
+  p.edge_size = f.number("edge_size", error).value_or(0.0);
+  p.fill_transparency = f.number("fill_transparency", error).value_or(0.0);
+  if (!error.empty()) return Result::fail(error);
+  return Result::ok(std::move(p));
+}
+
+std::string format_view_polygon(const ViewPolygon& p) {
+  std::string out = "pts=" + detail::format_points(p.points, 1);
+  if (!p.label.empty()) detail::append_field(out, "label", p.label);
+  if (!p.msg.empty()) detail::append_field(out, "msg", p.msg);
+  if (!p.edge_color.empty()) detail::append_field(out, "edge_color", p.edge_color);
+  if (!p.fill_color.empty()) detail::append_field(out, "fill_color", p.fill_color);
+  detail::append_field(out, "vertex_size", fmt(p.vertex_size, 1));
+  detail::append_field(out, "edge_size", fmt(p.edge_size, 1));
+  detail::append_field(out, "fill_transparency", fmt(std::clamp(p.fill_transparency, 0.0, 1.0), 2));
+  return out;
+}
+
+}  // namespace hazard

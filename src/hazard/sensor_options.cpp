@@ -1,0 +1,114 @@
+#include "hazard/sensor_options.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "hazard/text.hpp"
+
+namespace hazard {
+
+namespace {
+
+// Range limits of the rulings' validation table.
+constexpr double kMinExp = 1.0;
+constexpr double kMinPclass = 0.5;
+constexpr double kMaxPclass = 1.0;
+
+std::string field_value(std::string_view key, std::string_view value) {
+  return "field '" + std::string(key) + "' value '" + excerpt(value) + "'";
+}
+
+}  // namespace
+
+SensorConfigParse parse_sensor_config(std::string_view value) {
+  SensorConfigParse out;
+  std::optional<std::string_view> width, exp, pclass, max;
+  for (const KeyValue& kv : split_key_values(value)) {
+    const std::string key = to_lower(kv.key);
+    if (!kv.has_equals) {
+      out.warnings.push_back("piece '" + excerpt(kv.key) + "' has no '='; ignored");
+    } else if (key == "width") {
+      width = kv.value;
+    } else if (key == "exp") {
+      exp = kv.value;
+    } else if (key == "pclass" || key == "class") {
+      pclass = kv.value;
+    } else if (key == "max") {
+      max = kv.value;
+    } else {
+      out.warnings.push_back("unknown key '" + std::string(kv.key) + "' (value '" +
+                             excerpt(kv.value) + "') ignored");
+    }
+  }
+  auto fail = [&](std::string why) {
+    out.error = std::move(why);
+    return out;
+  };
+  if (!width) return fail("missing field 'width'");
+  if (!exp) return fail("missing field 'exp'");
+  if (!pclass) return fail("missing field 'pclass'");
+  SensorOption o;
+  const auto w = parse_number(*width);
+  if (!w || !(*w > 0.0)) return fail(field_value("width", *width) + " is not a number > 0");
+  const auto e = parse_number(*exp);
+  if (!e || !(*e >= kMinExp)) return fail(field_value("exp", *exp) + " is not a number >= 1");
+  const auto p = parse_number(*pclass);
+  if (!p || !(*p >= kMinPclass && *p <= kMaxPclass)) {
+    return fail(field_value("pclass", *pclass) + " is not a number in [0.5, 1]");
+  }
+  if (max) {
+    const auto m = parse_unsigned(*max);
+    if (!m || *m > static_cast<std::uint64_t>(std::numeric_limits<int>::max())) {
+      return fail(field_value("max", *max) + " is not a whole number >= 0");
+    }
+    o.max_vehicles = static_cast<int>(*m);
+  }
+  o.width_m = *w;
+  o.exp = *e;
+  o.pclass = *p;
+  o.as_written = OptionsSummaryEntry{std::string(*width), std::string(*exp),
+                                     std::string(*pclass), o.max_vehicles};
+  out.option = std::move(o);
+  return out;
+}
+
+std::optional<std::string> SensorOptions::add(SensorOption option) {
+  for (const SensorOption& o : sorted_) {
+    if (std::fabs(o.width_m - option.width_m) <= kWidthMatchTolerance_m) {
+      return "width " + fmt(option.width_m) + " is already configured";
+    }
+  }
+  config_order_.push_back(option.as_written);
+  const auto pos = std::upper_bound(
+      sorted_.begin(), sorted_.end(), option.width_m,
+      [](double w, const SensorOption& o) { return w < o.width_m; });
+  sorted_.insert(pos, std::move(option));
+  return std::nullopt;
+}
+
+OptionsSummary SensorOptions::summary() const { return OptionsSummary{config_order_}; }
+
+double SensorOptions::default_width_m() const {
+  const double average_m = (sorted_.front().width_m + sorted_.back().width_m) / 2.0;
+  double best = sorted_.front().width_m;
+  for (const SensorOption& o : sorted_) {
+    if (o.width_m <= average_m + kWidthMatchTolerance_m) best = o.width_m;
+  }
+  return best;
+}
+
+std::optional<OptionIndex> SensorOptions::choose(
+    double requested_width_m, const std::function<bool(OptionIndex)>& is_full) const {
+  std::optional<OptionIndex> lower, higher;
+  for (OptionIndex i = 0; i < sorted_.size(); ++i) {
+    if (is_full(i)) continue;
+    const double w = sorted_[i].width_m;
+    if (std::fabs(w - requested_width_m) <= kWidthMatchTolerance_m) return i;
+    if (w < requested_width_m) lower = i;            // ascending: the last one is the nearest
+    if (w > requested_width_m && !higher) higher = i;  // the first one is the nearest
+  }
+  return lower ? lower : higher;
+}
+
+}  // namespace hazard

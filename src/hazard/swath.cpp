@@ -1,0 +1,62 @@
+#include "hazard/swath.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "hazard/text.hpp"
+
+namespace hazard {
+
+SinCos sin_cos_deg(double angle_deg) {
+  const double a = norm360(angle_deg);
+  if (a == 0.0) return {0.0, 1.0};
+  if (a == 90.0) return {1.0, 0.0};
+  if (a == 180.0) return {0.0, -1.0};
+  if (a == 270.0) return {-1.0, 0.0};
+  constexpr double kRadPerDeg = 3.14159265358979323846 / 180.0;
+  return {std::sin(a * kRadPerDeg), std::cos(a * kRadPerDeg)};
+}
+
+Swath::Swath(glm::dvec2 center_m, double heading_deg, double half_width_m, double length_m)
+    : center_(center_m), half_width_m_(half_width_m), half_length_m_(length_m / 2.0) {
+  const SinCos sc = sin_cos_deg(heading_deg);
+  forward_ = {sc.sin, sc.cos};     // heading 0 -> +y, 90 -> +x
+  starboard_ = {sc.cos, -sc.sin};  // heading 0 -> +x, 90 -> -y
+}
+
+bool Swath::contains(glm::dvec2 point_m) const {
+  const glm::dvec2 d = point_m - center_;
+  const double along = d.x * forward_.x + d.y * forward_.y;
+  const double across = d.x * starboard_.x + d.y * starboard_.y;
+  return std::fabs(along) <= half_length_m_ && std::fabs(across) <= half_width_m_;
+}
+
+std::array<glm::dvec2, 4> Swath::corners() const {
+  const glm::dvec2 side = starboard_ * half_width_m_;
+  const glm::dvec2 fore = forward_ * half_length_m_;
+  return {center_ + side + fore, center_ + side - fore, center_ - side - fore,
+          center_ - side + fore};
+}
+
+Box Swath::bounds() const {
+  const auto c = corners();
+  Box b{c[0].x, c[0].y, c[0].x, c[0].y};
+  for (const auto& p : c) {
+    b.min_x = std::min(b.min_x, p.x);
+    b.min_y = std::min(b.min_y, p.y);
+    b.max_x = std::max(b.max_x, p.x);
+    b.max_y = std::max(b.max_y, p.y);
+  }
+  // contains() rounds differently from the corner sums; a relative margin far above double
+  // rounding (1e-16) keeps every contained point inside the box.
+  constexpr double kRelativeMargin = 1e-9;
+  const double margin = kRelativeMargin * (std::fabs(center_.x) + std::fabs(center_.y) +
+                                           half_width_m_ + half_length_m_ + 1.0);
+  b.min_x -= margin;
+  b.min_y -= margin;
+  b.max_x += margin;
+  b.max_y += margin;
+  return b;
+}
+
+}  // namespace hazard

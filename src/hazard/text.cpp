@@ -1,0 +1,183 @@
+#include "hazard/text.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+
+namespace hazard {
+
+namespace {
+
+constexpr std::string_view kTrimmed = " \t\r\n";
+constexpr int kMaxDecimals = 30;
+
+bool is_digit(char c) { return c >= '0' && c <= '9'; }
+
+char lower_ascii(char c) { return static_cast<char>(std::tolower(static_cast<unsigned char>(c))); }
+char upper_ascii(char c) { return static_cast<char>(std::toupper(static_cast<unsigned char>(c))); }
+
+// Accepts exactly the grammar of parse_number's contract.
+bool is_decimal_number(std::string_view s) {
+  std::size_t i = 0;
+  if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
+  std::size_t mantissa_digits = 0;
+  while (i < s.size() && is_digit(s[i])) ++i, ++mantissa_digits;
+  if (i < s.size() && s[i] == '.') {
+    ++i;
+    while (i < s.size() && is_digit(s[i])) ++i, ++mantissa_digits;
+  }
+  if (mantissa_digits == 0) return false;
+  if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
+    ++i;
+    if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
+    std::size_t exponent_digits = 0;
+    while (i < s.size() && is_digit(s[i])) ++i, ++exponent_digits;
+    if (exponent_digits == 0) return false;
+  }
+  return i == s.size();
+}
+
+}  // namespace
+
+std::string fix(double value, int decimals) {
+  decimals = std::clamp(decimals, 0, kMaxDecimals);
+  // std::to_chars with a precision is specified "as if by printf" in the C locale, and is much
+  // faster than glibc's printf; the large buffer only matters for values near 1e308.
+  char small[64];
+  auto r = std::to_chars(small, small + sizeof small, value, std::chars_format::fixed, decimals);
+  if (r.ec == std::errc()) return std::string(small, r.ptr);
+  std::string big(400, '\0');
+  r = std::to_chars(big.data(), big.data() + big.size(), value, std::chars_format::fixed, decimals);
+  big.resize(static_cast<std::size_t>(r.ptr - big.data()));
+  return big;
+}
+
+std::string fmt(double value, int decimals) {
+  std::string s = fix(value, decimals);
+  if (s.find('.') != std::string::npos) {
+    while (!s.empty() && s.back() == '0') s.pop_back();
+    if (!s.empty() && s.back() == '.') s.pop_back();
+  }
+  if (s == "-0") s = "0";
+  return s;
+}
+
+std::string_view trim(std::string_view text) {
+  const auto first = text.find_first_not_of(kTrimmed);
+  if (first == std::string_view::npos) return {};
+  const auto last = text.find_last_not_of(kTrimmed);
+  return text.substr(first, last - first + 1);
+}
+
+bool iequals(std::string_view a, std::string_view b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (lower_ascii(a[i]) != lower_ascii(b[i])) return false;
+  }
+  return true;
+}
+
+std::string to_lower(std::string_view text) {
+  std::string out(text);
+  for (char& c : out) c = lower_ascii(c);
+  return out;
+}
+
+std::string to_upper(std::string_view text) {
+  std::string out(text);
+  for (char& c : out) c = upper_ascii(c);
+  return out;
+}
+
+std::optional<double> parse_number(std::string_view text) {
+  text = trim(text);
+  if (!is_decimal_number(text)) return std::nullopt;
+  // strtod needs a terminated string; the grammar check above makes it locale-safe in the
+  // "C" locale that our programs never change. Underflow (1e-400) yields a finite 0 and is kept.
+  const std::string copy(text);
+  errno = 0;
+  char* end = nullptr;
+  const double v = std::strtod(copy.c_str(), &end);
+  if (end != copy.c_str() + copy.size() || !std::isfinite(v)) return std::nullopt;
+  return v;
+}
+
+std::optional<std::uint64_t> parse_unsigned(std::string_view text) {
+  text = trim(text);
+  if (!text.empty() && text.front() == '+') text.remove_prefix(1);
+  if (text.empty() || !std::all_of(text.begin(), text.end(), is_digit)) return std::nullopt;
+  std::uint64_t v = 0;
+  const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (ec != std::errc() || ptr != text.data() + text.size()) return std::nullopt;
+  return v;
+}
+
+std::optional<bool> parse_bool(std::string_view text) {
+  text = trim(text);
+  if (iequals(text, "true") || iequals(text, "yes") || iequals(text, "on")) return true;
+  if (iequals(text, "false") || iequals(text, "no") || iequals(text, "off")) return false;
+  return std::nullopt;
+}
+
+std::vector<KeyValue> split_key_values(std::string_view text, char separator, bool respect_braces) {
+  std::vector<KeyValue> out;
+  std::size_t start = 0;
+  int depth = 0;
+  for (std::size_t i = 0; i <= text.size(); ++i) {
+    const bool at_end = i == text.size();
+    if (!at_end) {
+      const char c = text[i];
+      if (respect_braces && c == '{') ++depth;
+      if (respect_braces && c == '}' && depth > 0) --depth;
+      if (c != separator || depth > 0) continue;
+    }
+    const std::string_view piece = trim(text.substr(start, i - start));
+    start = i + 1;
+    if (piece.empty()) continue;
+    const auto eq = piece.find('=');
+    if (eq == std::string_view::npos) {
+      out.push_back(KeyValue{piece, {}, false});
+    } else {
+      out.push_back(KeyValue{trim(piece.substr(0, eq)), trim(piece.substr(eq + 1)), true});
+    }
+  }
+  return out;
+}
+
+std::vector<std::string_view> split_trimmed(std::string_view text, char separator) {
+  std::vector<std::string_view> out;
+  std::size_t start = 0;
+  while (true) {
+    const auto pos = text.find(separator, start);
+    if (pos == std::string_view::npos) {
+      out.push_back(trim(text.substr(start)));
+      return out;
+    }
+    out.push_back(trim(text.substr(start, pos - start)));
+    start = pos + 1;
+  }
+}
+
+double norm360(double angle_deg) {
+  double r = std::fmod(angle_deg, 360.0);
+  if (r < 0) r += 360.0;
+  if (r >= 360.0) r = 0.0;  // -1e-17 + 360 rounds to 360
+  return r;
+}
+
+double norm180(double angle_deg) {
+  const double r = norm360(angle_deg);
+  return r > 180.0 ? r - 360.0 : r;
+}
+
+std::string excerpt(std::string_view text, std::size_t max_chars) {
+  if (text.size() <= max_chars) return std::string(text);
+  std::string out(text.substr(0, max_chars));
+  out += " ... (" + std::to_string(text.size()) + " bytes)";
+  return out;
+}
+
+}  // namespace hazard

@@ -1,0 +1,67 @@
+// hazard_replay's command line: exactly the issue's form; each bad option named.
+#include <gtest/gtest.h>
+
+#include "HazardReplay_Info.hpp"
+#include "replay.hpp"
+
+namespace hazard_replay {
+namespace {
+
+TEST(ReplayArgs, IssueFormWithEveryOption) {
+  const ParsedArgs p = parse_args({"m.moos", "in.alog", "--alias=shore", "--seed=42",
+                                   "--until=120.5", "--output=out.alog"});
+  ASSERT_TRUE(p.options) << p.error;
+  EXPECT_EQ(p.options->config_path, "m.moos");
+  EXPECT_EQ(p.options->input_path, "in.alog");
+  EXPECT_EQ(p.options->app_name, "shore");
+  EXPECT_EQ(p.options->seed, 42u);
+  EXPECT_EQ(p.options->until_s, 120.5);
+  EXPECT_EQ(p.options->output_path, "out.alog");
+}
+
+TEST(ReplayArgs, Defaults) {
+  const ParsedArgs p = parse_args({"m.moos", "in.alog"});
+  ASSERT_TRUE(p.options);
+  EXPECT_EQ(p.options->app_name, "uFldHazardSensor");
+  EXPECT_FALSE(p.options->seed);
+  EXPECT_FALSE(p.options->until_s);
+  EXPECT_FALSE(p.options->output_path);
+}
+
+TEST(ReplayArgs, BadArgumentsAreNamed) {
+  struct Case {
+    std::vector<std::string> args;
+    const char* error;
+  };
+  const Case cases[] = {
+      {{}, "missing CONFIG.moos and INPUT.alog"},
+      {{"m.moos"}, "missing INPUT.alog"},
+      {{"m.moos", "in.alog", "extra"}, "unexpected argument 'extra'"},
+      {{"m.moos", "in.alog", "--seed=abc"}, "'--seed=abc'"},
+      {{"m.moos", "in.alog", "--seed=-1"}, "'--seed=-1'"},
+      {{"m.moos", "in.alog", "--until=nan"}, "'--until=nan'"},
+      {{"m.moos", "in.alog", "--until=1e999"}, "'--until=1e999'"},
+      {{"m.moos", "in.alog", "--alias="}, "'--alias='"},
+      {{"m.moos", "in.alog", "--output="}, "'--output='"},
+      {{"m.moos", "in.alog", "--verbose"}, "unknown option '--verbose'"},
+      {{"m.moos", "in.alog", "--seed"}, "unknown option '--seed'"},
+  };
+  for (const Case& c : cases) {
+    const ParsedArgs p = parse_args(c.args);
+    EXPECT_FALSE(p.options);
+    EXPECT_NE(p.error.find(c.error), std::string::npos) << p.error;
+  }
+}
+
+TEST(ReplayArgs, HelpNeedsNoFiles) {
+  for (const char* h : {"--help", "-h"}) {
+    const ParsedArgs p = parse_args({h});
+    ASSERT_TRUE(p.options);
+    EXPECT_TRUE(p.options->help);
+  }
+  EXPECT_NE(help_text().find(usage_line()), std::string::npos);
+  EXPECT_NE(help_text().find("--until=T"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace hazard_replay

@@ -1,0 +1,165 @@
+#pragma once
+// Test helpers shared by the engine suites: configuration blocks written as text, an engine
+// driver with a manual clock, and output filters. Header-only (one test executable).
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "hazard/config.hpp"
+#include "hazard/engine.hpp"
+#include "hazard/messages/node_report.hpp"
+#include "hazard/text.hpp"
+
+namespace hazard::testing {
+
+/// "key = value" lines (one per line, `//` comments and blank lines skipped) as config entries
+/// of file "test.moos".
+inline std::vector<ConfigEntry> entries(std::string_view block) {
+  std::vector<ConfigEntry> out;
+  int line = 0;
+  for (std::string_view raw : split_trimmed(block, '\n')) {
+    ++line;
+    std::string_view text = raw.substr(0, raw.find("//"));
+    text = trim(text);
+    const auto eq = text.find('=');
+    if (text.empty() || eq == std::string_view::npos) continue;
+    out.push_back({std::string(trim(text.substr(0, eq))), std::string(trim(text.substr(eq + 1))),
+                   "test.moos", line});
+  }
+  return out;
+}
+
+/// Loads a block; `files` maps hazard_file paths to their text.
+inline EngineSetup setup_from(std::string_view block,
+                        const std::map<std::string, std::string>& files = {}) {
+  return load_configuration(entries(block),
+                            [files](const std::string& path) -> std::optional<std::string> {
+                              const auto it = files.find(path);
+                              if (it == files.end()) return std::nullopt;
+                              return it->second;
+                            });
+}
+
+/// A block with every gate and visual off, one option (W 25, exp 4, pclass 0.8), swath_length
+/// 10 and no classify interval; `extra` lines are appended (later lines win, with a warning).
+inline std::string quiet_block(std::string_view extra = {}) {
+  return "sensor_config = width=25, exp=4, pclass=0.8\n"
+         "swath_length = 10\n"
+         "min_classify_interval = 0\n"
+         "max_turn_rate = off\n"
+         "max_vehicle_speed = off\n"
+         "show_swath = false\n"
+         "show_hazards = false\n"
+         "show_detections = 0\n" +
+         std::string(extra);
+}
+
+inline std::string node_report(std::string name, double x, double y, double heading_deg = 0.0,
+                               double speed_mps = 1.0) {
+  NodeReport r;
+  r.name = std::move(name);
+  r.x_m = x;
+  r.y_m = y;
+  r.heading_deg = heading_deg;
+  r.speed_mps = speed_mps;
+  return format_node_report(r);
+}
+
+inline std::vector<std::string> values_of(const Outputs& out, std::string_view variable) {
+  std::vector<std::string> v;
+  for (const Posting& p : out.postings) {
+    if (p.variable == variable) v.push_back(p.value);
+  }
+  return v;
+}
+
+inline void append(Outputs& into, const Outputs& from) {
+  into.postings.insert(into.postings.end(), from.postings.begin(), from.postings.end());
+  into.events.insert(into.events.end(), from.events.begin(), from.events.end());
+  into.run_warnings.insert(into.run_warnings.end(), from.run_warnings.begin(),
+                           from.run_warnings.end());
+  into.retracted_run_warnings.insert(into.retracted_run_warnings.end(),
+                                     from.retracted_run_warnings.begin(),
+                                     from.retracted_run_warnings.end());
+  into.config_warnings.insert(into.config_warnings.end(), from.config_warnings.begin(),
+                              from.config_warnings.end());
+}
+
+inline bool contains(const std::vector<std::string>& texts, std::string_view needle) {
+  for (const auto& t : texts) {
+    if (t.find(needle) != std::string::npos) return true;
+  }
+  return false;
+}
+
+/// An engine with a manual clock; every output is also collected in `all`.
+class Driver {
+ public:
+  explicit Driver(std::string_view block, const std::map<std::string, std::string>& files = {},
+                  std::uint64_t seed = 1, double start_s = 0.0)
+      : engine(setup_from(block, files), SeedChoice{seed, SeedSource::kCommandLine}),
+        now(start_s) {
+    append(all, engine.start(now));
+  }
+
+  Outputs mail(std::string_view variable, std::string_view value) {
+    Outputs out = engine.on_mail(variable, value, now);
+    append(all, out);
+    return out;
+  }
+  Outputs tick() {
+    Outputs out = engine.step(now);
+    append(all, out);
+    const auto violations = engine.invariant_violations();
+    EXPECT_TRUE(violations.empty()) << violations.front();
+    return out;
+  }
+  /// Advances the clock and runs one iteration.
+  Outputs tick_at(double t) {
+    now = t;
+    return tick();
+  }
+  Outputs pose(const std::string& name, double x, double y, double heading_deg = 0.0,
+               double speed_mps = 1.0) {
+    return mail("NODE_REPORT", node_report(name, x, y, heading_deg, speed_mps));
+  }
+  Outputs sensor_on(const std::string& name) {
+    return mail("UHZ_SENSOR_REQUEST", "vname=" + name);
+  }
+
+  const VehicleState& vehicle(std::string_view name) const {
+    return engine.vehicle(*engine.find_vehicle(name));
+  }
+
+  Engine engine;
+  double now;
+  Outputs all;
+};
+
+/// The first label "<prefix><i>" (i = 0, 1, ...) whose pass-1 dice for `vehicle` under `seed`
+/// satisfy wanted(u, v), u the detection die and v the classification die: tests that need a
+/// given outcome pick their object this way instead of hard-coding one.
+template <class Wanted>
+std::string first_label(std::uint64_t seed, const std::string& vehicle, const std::string& prefix,
+                        Wanted wanted) {
+  constexpr int kMaxTries = 1000000;
+  const Dice dice(seed);
+  const std::uint64_t v = hash_name(vehicle);
+  for (int i = 0; i < kMaxTries; ++i) {
+    const std::string label = prefix + std::to_string(i);
+    const std::uint64_t l = hash_name(label);
+    if (wanted(dice.detection_u(v, l, 1), dice.classification_v(v, l, 1))) return label;
+  }
+  ADD_FAILURE() << "no label with the wanted dice";
+  return prefix;
+}
+
+/// Binomial 5-sigma check helper: |k/n - p| <= 5 sqrt(p(1-p)/n).
+inline double five_sigma(double p, double n) { return 5.0 * std::sqrt(p * (1.0 - p) / n); }
+
+}  // namespace hazard::testing
