@@ -3,13 +3,12 @@
 // only when everything succeeded, so a bad argument never leaves a half-written file.
 // Exit codes: see options.hpp (0 ok, 1 output not writable, 2 bad input).
 
-#include <chrono>
 #include <cstdio>
-#include <random>
 #include <string>
 #include <variant>
 #include <vector>
 
+#include "app_support.hpp"
 #include "GenHazards_Info.hpp"
 #include "generator.hpp"
 #include "options.hpp"
@@ -21,17 +20,6 @@ using namespace gen_hazards;
 
 void print_error(const std::string& message) {
   std::fprintf(stderr, "gen_hazards: error: %s\n", message.c_str());
-}
-
-/// A seed from the operating system's entropy source (the clock only if that is missing).
-std::uint64_t os_seed() {
-  try {
-    std::random_device device;
-    return (static_cast<std::uint64_t>(device()) << 32) ^ static_cast<std::uint64_t>(device());
-  } catch (const std::exception&) {
-    return static_cast<std::uint64_t>(
-        std::chrono::system_clock::now().time_since_epoch().count());
-  }
 }
 
 int write_stdout(const std::string& text) {
@@ -51,7 +39,7 @@ int main(int argc, char** argv) {
   for (const auto& error : cli.errors) print_error(error);
   if (!cli.errors.empty()) return kExitBadInput;
 
-  cli.config.seed = cli.seed ? *cli.seed : os_seed();
+  cli.config.seed = cli.seed ? *cli.seed : app_support::operating_system_seed();
   const auto file = build_hazard_file(header_line(cli.recorded_args, cli.config.seed), cli.config);
   if (const auto* error = std::get_if<GenerationError>(&file)) {
     print_error(error->message);

@@ -4,9 +4,9 @@
 #include <filesystem>
 #include <fstream>
 #include <ostream>
-#include <random>
 #include <sstream>
 
+#include "app_support.hpp"
 #include "hazard/config.hpp"
 #include "hazard/engine.hpp"
 #include "hazard/text.hpp"
@@ -19,28 +19,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using hazard::fix;
-
-std::optional<std::string> read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) return std::nullopt;
-  return text.str();
-}
-
-// The one conversion the app will do too: a mission line to an engine configuration entry.
-std::vector<hazard::ConfigEntry> to_entries(const moos::ProcessBlock& block) {
-  std::vector<hazard::ConfigEntry> out;
-  out.reserve(block.lines.size());
-  for (const moos::ConfigLine& l : block.lines) out.push_back({l.key, l.value, l.file, l.line});
-  return out;
-}
-
-std::uint64_t operating_system_seed() {
-  std::random_device device;
-  return (static_cast<std::uint64_t>(device()) << 32) ^ device();
-}
 
 struct Input {
   std::vector<moos::AlogEntry> entries;  // time order
@@ -163,15 +141,12 @@ int run(const Options& options, std::ostream& out, std::ostream& err) {
   }
 
   // Hazard files are named relative to the mission file.
-  const fs::path mission_dir(mission->directory());
   hazard::EngineSetup setup =
-      hazard::load_configuration(to_entries(*block), [&](const std::string& path) {
-        const fs::path p(path);
-        return read_file((p.is_relative() ? mission_dir / p : p).string());
-      });
+      hazard::load_configuration(app_support::to_config_entries(block->lines),
+                                 app_support::mission_relative_reader(mission->directory()));
   const double tick_hz = setup.config.app_tick_hz;
   const hazard::SeedChoice seed =
-      hazard::resolve_seed(options.seed, setup.config, operating_system_seed);
+      hazard::resolve_seed(options.seed, setup.config, app_support::operating_system_seed);
   hazard::Engine engine(std::move(setup), seed);
   err << "hazard_replay: seed " << seed.seed << " (" << hazard::seed_source_name(seed.source)
       << "), AppTick " << hazard::fmt(tick_hz) << " Hz\n";

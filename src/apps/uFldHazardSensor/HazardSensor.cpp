@@ -1,15 +1,10 @@
 #include "HazardSensor.hpp"
 
 #include <algorithm>
-#include <chrono>
-#include <exception>
-#include <filesystem>
-#include <fstream>
 #include <ostream>
-#include <random>
-#include <sstream>
 
 #include "HazardSensor_Info.hpp"
+#include "app_support.hpp"
 #include "hazard/report.hpp"
 #include "moos/alog.hpp"
 #include "moos/text.hpp"
@@ -18,14 +13,6 @@ namespace ufld_hazard_sensor {
 
 namespace {
 
-namespace fs = std::filesystem;
-
-std::vector<hazard::ConfigEntry> to_entries(const std::vector<moos::ConfigLine>& lines) {
-  std::vector<hazard::ConfigEntry> out;
-  out.reserve(lines.size());
-  for (const moos::ConfigLine& l : lines) out.push_back({l.key, l.value, l.file, l.line});
-  return out;
-}
 
 /// The engine reads text: strings and binary values as they are, doubles in their shortest
 /// exact form (a NODE_REPORT posted as a double then fails to parse, with a warning).
@@ -44,35 +31,15 @@ moos::AppTraits hazard_sensor_traits() {
   return t;
 }
 
-std::uint64_t operating_system_seed() {
-  try {
-    std::random_device device;
-    return (static_cast<std::uint64_t>(device()) << 32) ^ static_cast<std::uint64_t>(device());
-  } catch (const std::exception&) {
-    return static_cast<std::uint64_t>(
-        std::chrono::system_clock::now().time_since_epoch().count());
-  }
-}
-
 HazardSensor::HazardSensor(HazardSensorOptions options)
     : moos::MoosApp(hazard_sensor_traits()), options_(std::move(options)) {
-  if (!options_.os_seed) options_.os_seed = operating_system_seed;
-}
-
-std::optional<std::string> HazardSensor::read_hazard_file(const std::string& path) const {
-  const fs::path p(path);
-  const fs::path full = p.is_relative() ? fs::path(options_.mission_directory) / p : p;
-  std::ifstream in(full, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) return std::nullopt;
-  return text.str();
+  if (!options_.os_seed) options_.os_seed = app_support::operating_system_seed;
 }
 
 bool HazardSensor::on_start_up() {
   hazard::EngineSetup setup = hazard::load_configuration(
-      to_entries(config_lines()), [this](const std::string& path) { return read_hazard_file(path); });
+      app_support::to_config_entries(config_lines()),
+      app_support::mission_relative_reader(options_.mission_directory));
   const hazard::SeedChoice seed = hazard::resolve_seed(std::nullopt, setup.config, options_.os_seed);
   engine_.emplace(std::move(setup), seed);
   for (const hazard::InterfaceVariable& v : hazard::Engine::subscriptions()) {

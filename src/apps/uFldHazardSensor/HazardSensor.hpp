@@ -49,15 +49,12 @@ inline constexpr const char* kVerboseConfigWarning = "CONFIG_WARNING";
 /// repeated framework parameters (the last one wins, with a warning).
 moos::AppTraits hazard_sensor_traits();
 
-/// A seed from the operating system (std::random_device; the clock only if that fails).
-std::uint64_t operating_system_seed();
-
 struct HazardSensorOptions {
   /// The folder relative hazard_file paths are read from (the mission file's folder).
   std::string mission_directory = ".";
   /// Where --verbose writes its .alog lines; nullptr: not verbose.
   std::ostream* verbose = nullptr;
-  /// The source of an operating-system seed (seed_random = true); empty: operating_system_seed.
+  /// The source of an operating-system seed (seed_random = true); empty: app_support::operating_system_seed.
   std::function<std::uint64_t()> os_seed;
 };
 
@@ -77,7 +74,6 @@ class HazardSensor final : public moos::MoosApp {
  private:
   /// The MOOS time of the running cycle (the time libmoos stamps events with).
   double cycle_time_s() const { return start_time() + seconds_since_start(); }
-  std::optional<std::string> read_hazard_file(const std::string& path) const;
   void publish(const hazard::Outputs& out, double now_s);
   void write_verbose(double now_s, const std::string& variable, const std::string& value) const;
 

@@ -8,6 +8,7 @@
 #include <limits>
 #include <set>
 
+#include "app_support.hpp"
 #include "hazard/config.hpp"
 #include "hazard/engine.hpp"
 #include "hazard/text.hpp"
@@ -358,7 +359,7 @@ TEST_F(SensorOnBus, SeedRandomByDefaultTakesTheOperatingSystemsSeed_D16) {
 
 TEST(OperatingSystemSeed, TwoDrawsDiffer) {
   // 64-bit draws from std::random_device: equal only with probability 2^-64.
-  EXPECT_NE(operating_system_seed(), operating_system_seed());
+  EXPECT_NE(app_support::operating_system_seed(), app_support::operating_system_seed());
 }
 
 // ---- hazard files (manual 5) -------------------------------------------------------------------

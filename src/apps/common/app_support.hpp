@@ -1,0 +1,29 @@
+#pragma once
+// Edge helpers shared by the programs (uFldHazardSensor, hazard_replay, gen_hazards, the
+// mission apps): the I/O and operating-system pieces that the pure libraries leave to callers.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "hazard/config.hpp"
+#include "moos/mission.hpp"
+
+namespace app_support {
+
+/// A seed from the operating system's entropy source (std::random_device); the wall clock
+/// only if that source is unavailable. Used when `seed_random = true` (rulings "Seeds").
+std::uint64_t operating_system_seed();
+
+/// The whole file as bytes, or nullopt if it cannot be opened or read.
+std::optional<std::string> read_text_file(const std::string& path);
+
+/// A hazard-file reader for the engine's configuration loader: relative paths are resolved
+/// against `mission_directory` (the folder of the .moos file), as the original does.
+hazard::HazardFileReader mission_relative_reader(std::string mission_directory);
+
+/// A ProcessConfig block's lines as engine configuration entries (key, value, file, line).
+std::vector<hazard::ConfigEntry> to_config_entries(const std::vector<moos::ConfigLine>& lines);
+
+}  // namespace app_support
