@@ -134,6 +134,9 @@ class MoosApp {
   std::uint64_t iteration() const { return iteration_; }
   double moos_time() const;
   double start_time() const { return start_time_; }
+  /// The MOOS time of the running cycle: sampled once when the cycle starts, so mail handling
+  /// and iterate() in one cycle see the same time (libMOOS m_curr_time).
+  double cycle_time() const { return curr_time_; }
   /// The current `<APPNAME>_STATUS` text (spec 7.1).
   std::string status_string() const;
   /// Builds the report now (calls build_report) and returns the terminal frame.

@@ -45,14 +45,14 @@ bool HazardSensor::on_start_up() {
   for (const hazard::InterfaceVariable& v : hazard::Engine::subscriptions()) {
     register_variable(std::string(v.name));
   }
-  last_engine_time_s_ = cycle_time_s();
+  last_engine_time_s_ = cycle_time();
   if (options_.verbose) *options_.verbose << moos::alog_header(app_name(), last_engine_time_s_);
   publish(engine_->start(last_engine_time_s_), last_engine_time_s_);
   return true;
 }
 
 void HazardSensor::on_new_mail(const std::vector<moos::Message>& mail) {
-  const double cycle_s = cycle_time_s();
+  const double cycle_s = cycle_time();
   for (const moos::Message& m : mail) {
     const double t = std::max(last_engine_time_s_, std::min(m.time, cycle_s));
     last_engine_time_s_ = t;
@@ -61,7 +61,7 @@ void HazardSensor::on_new_mail(const std::vector<moos::Message>& mail) {
 }
 
 void HazardSensor::iterate() {
-  const double now_s = std::max(last_engine_time_s_, cycle_time_s());
+  const double now_s = std::max(last_engine_time_s_, cycle_time());
   last_engine_time_s_ = now_s;
   publish(engine_->step(now_s), now_s);
 }

@@ -72,8 +72,6 @@ class HazardSensor final : public moos::MoosApp {
   std::string build_report() override;
 
  private:
-  /// The MOOS time of the running cycle (the time libmoos stamps events with).
-  double cycle_time_s() const { return start_time() + seconds_since_start(); }
   void publish(const hazard::Outputs& out, double now_s);
   void write_verbose(double now_s, const std::string& variable, const std::string& value) const;
 
