@@ -10,7 +10,10 @@
 //   in C++ default stream formatting (6 significant digits), as libMOOS does.
 // - parse_wildcard_spec accepts commas or blanks between items (pymoos2 uses spaces, spec 5.5);
 //   a missing pattern is "" (matches only the empty string); a missing or unreadable interval
-//   is 0.
+//   is 0. Like the reference DB it skips what it cannot read; when `problem` is given, the
+//   first skipped item is described there (an item without '=', an unknown key — keys are
+//   case-sensitive —, or an interval that is not a finite number >= 0), so a server can refuse
+//   the registration with a reason instead.
 
 #include <string>
 #include <string_view>
@@ -29,6 +32,6 @@ struct WildcardSpec {
 };
 
 std::string format_wildcard_spec(const WildcardSpec& spec);
-WildcardSpec parse_wildcard_spec(std::string_view text);
+WildcardSpec parse_wildcard_spec(std::string_view text, std::string* problem = nullptr);
 
 }  // namespace moos

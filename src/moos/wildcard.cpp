@@ -40,8 +40,11 @@ std::string format_wildcard_spec(const WildcardSpec& spec) {
          ",Interval=" + text::format_g(spec.interval_s);
 }
 
-WildcardSpec parse_wildcard_spec(std::string_view input) {
+WildcardSpec parse_wildcard_spec(std::string_view input, std::string* problem) {
   WildcardSpec spec;
+  auto note = [problem](std::string text) {
+    if (problem && problem->empty()) *problem = std::move(text);
+  };
   std::size_t pos = 0;
   while (pos < input.size()) {
     const auto start = input.find_first_not_of(", \t\r\n", pos);
@@ -51,7 +54,10 @@ WildcardSpec parse_wildcard_spec(std::string_view input) {
     const std::string_view item = input.substr(start, end - start);
     pos = end;
     const auto eq = item.find('=');
-    if (eq == std::string_view::npos) continue;
+    if (eq == std::string_view::npos) {
+      note("item '" + std::string(item) + "' has no '='");
+      continue;
+    }
     const std::string_view key = item.substr(0, eq);
     const std::string_view value = item.substr(eq + 1);
     if (key == "AppPattern") {
@@ -60,7 +66,11 @@ WildcardSpec parse_wildcard_spec(std::string_view input) {
       spec.var_pattern = std::string(value);
     } else if (key == "Interval") {
       const auto interval = text::parse_number(value);
+      if (!interval || *interval < 0.0)
+        note("Interval '" + std::string(value) + "' is not a number >= 0");
       spec.interval_s = interval && *interval > 0 ? *interval : 0.0;
+    } else {
+      note("unknown item '" + std::string(key) + "' (expected AppPattern, VarPattern, Interval)");
     }
   }
   return spec;

@@ -21,7 +21,6 @@
 
 #include "database.hpp"
 
-#include "patterns.hpp"
 
 #include <algorithm>
 #include <cassert>
@@ -336,9 +335,10 @@ void Database::handle_unregister(ClientId id, const Message& msg) {
 }
 
 void Database::handle_wildcard_register(ClientId id, const Message& msg, double now) {
-  if (const auto problem = wildcard_spec_problem(msg.sval))
-    return refuse(id, "WILDCARD_REGISTER \"" + msg.sval + "\" refused: " + *problem);
-  const moos::WildcardSpec spec = moos::parse_wildcard_spec(msg.sval);
+  std::string problem;
+  const moos::WildcardSpec spec = moos::parse_wildcard_spec(msg.sval, &problem);
+  if (!problem.empty())
+    return refuse(id, "WILDCARD_REGISTER \"" + msg.sval + "\" refused: " + problem);
   auto& filters = clients_.at(id).filters;
   const bool known = std::any_of(filters.begin(), filters.end(), [&](const moos::WildcardSpec& f) {
     return same_patterns(f, spec);
@@ -350,9 +350,10 @@ void Database::handle_wildcard_register(ClientId id, const Message& msg, double 
 }
 
 void Database::handle_wildcard_unregister(ClientId id, const Message& msg) {
-  if (const auto problem = wildcard_spec_problem(msg.sval))
-    return refuse(id, "WILDCARD_UNREGISTER \"" + msg.sval + "\" refused: " + *problem);
-  const moos::WildcardSpec spec = moos::parse_wildcard_spec(msg.sval);
+  std::string problem;
+  const moos::WildcardSpec spec = moos::parse_wildcard_spec(msg.sval, &problem);
+  if (!problem.empty())
+    return refuse(id, "WILDCARD_UNREGISTER \"" + msg.sval + "\" refused: " + problem);
   Client& client = clients_.at(id);
   auto& filters = client.filters;
   const auto same = std::find_if(filters.begin(), filters.end(), [&](const moos::WildcardSpec& f) {

@@ -12,7 +12,7 @@
 #include "hub.hpp"
 #include "moos/codec.hpp"
 #include "moos/message.hpp"
-#include "patterns.hpp"
+#include "moos/text.hpp"
 
 namespace moosdb_lite {
 
@@ -55,26 +55,26 @@ const std::vector<IgnoredSwitch>& ignored_globals() {
 }
 
 std::optional<int> parse_port(std::string_view text) {
-  const auto value = parse_finite_number(text);
+  const auto value = moos::text::parse_number(text);
   if (!value || *value != std::floor(*value) || *value < 0 || *value > kMaxPort)
     return std::nullopt;
   return static_cast<int>(*value);
 }
 
 std::optional<double> parse_warp(std::string_view text) {
-  const auto value = parse_finite_number(text);
+  const auto value = moos::text::parse_number(text);
   if (!value || *value <= 0.0 || *value > kMaxTimeWarp) return std::nullopt;
   return value;
 }
 
 std::optional<double> parse_non_negative(std::string_view text) {
-  const auto value = parse_finite_number(text);
+  const auto value = moos::text::parse_number(text);
   if (!value || *value < 0.0) return std::nullopt;
   return value;
 }
 
 std::optional<double> parse_positive(std::string_view text) {
-  const auto value = parse_finite_number(text);
+  const auto value = moos::text::parse_number(text);
   if (!value || *value <= 0.0) return std::nullopt;
   return value;
 }
