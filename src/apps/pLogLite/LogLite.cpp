@@ -1,0 +1,145 @@
+#include "LogLite.hpp"
+
+#include <ctime>
+#include <filesystem>
+
+#include "hazard/text.hpp"
+#include "moos/alog.hpp"
+#include "moos/wildcard.hpp"
+
+namespace plog_lite {
+
+moos::AppTraits logger_traits() { return mission_app::mission_traits(kAppName, kDefaultAppTick_hz); }
+
+std::optional<LogRequest> parse_log_request(std::string_view text) {
+  LogRequest r;
+  const auto at = text.find('@');
+  r.variable = std::string(hazard::trim(text.substr(0, at)));
+  if (r.variable.empty() || r.variable.find_first_of(" \t,") != std::string::npos) return std::nullopt;
+  if (at != std::string_view::npos) {
+    const auto interval = hazard::parse_number(hazard::trim(text.substr(at + 1)));
+    if (!interval || *interval < 0.0) return std::nullopt;
+    r.interval_s = *interval;
+  }
+  return r;
+}
+
+std::string file_time_stamp(double unix_s) {
+  const std::time_t t = static_cast<std::time_t>(unix_s);
+  std::tm local{};
+  ::localtime_r(&t, &local);
+  char text[64];
+  std::strftime(text, sizeof text, "_%Y_%m_%d_____%H_%M_%S", &local);
+  return text;
+}
+
+LogLite::LogLite() : mission_app::MissionApp(logger_traits()) {}
+
+LogLite::~LogLite() { close(); }
+
+void LogLite::close() {
+  if (out_) std::fclose(out_);
+  out_ = nullptr;
+}
+
+std::optional<std::string> LogLite::apply(const moos::ConfigLine& line) {
+  const std::string key = hazard::to_lower(line.key);
+  const std::string& value = line.value;
+  auto boolean = [&](bool& field) -> std::string {
+    const auto b = hazard::parse_bool(value);
+    if (!b) return "parameter " + key + "='" + value + "' is not true or false";
+    field = *b;
+    return {};
+  };
+  if (key == "path") {
+    if (value.empty()) return "parameter path is empty";
+    path_ = value;
+  } else if (key == "file") {
+    if (value.empty() || value.find('/') != std::string::npos)
+      return "parameter file='" + value + "' is not a file name";
+    file_ = value;
+  } else if (key == "file_timestamp" || key == "filetimestamp") {
+    return boolean(file_timestamp_);
+  } else if (key == "wildcard_logging" || key == "wildcardlogging") {
+    return boolean(wildcard_logging_);
+  } else if (key == "async_log" || key == "asynclog") {
+    bool async = true;
+    std::string problem = boolean(async);
+    if (problem.empty() && !async) problem = "async_log = false (synchronous logs) is not supported";
+    return problem;
+  } else if (key == "log") {
+    auto request = parse_log_request(value);
+    if (!request) return "parameter log='" + value + "' is not VAR @ interval";
+    requests_.push_back(*request);
+  } else if (key == "wildcard_omit_pattern" || key == "wildcardomitpattern") {
+    for (std::string_view p : hazard::split_trimmed(value, ','))
+      if (!p.empty()) omit_patterns_.emplace_back(p);
+  } else {
+    return "unknown parameter '" + line.key + "'";
+  }
+  return std::string();
+}
+
+bool LogLite::on_start_up() {
+  for (const moos::ConfigLine& line : config_lines()) {
+    const std::optional<std::string> problem = apply(line);
+    if (problem && !problem->empty()) warn_at(line, *problem);
+  }
+  if (!wildcard_logging_ && requests_.empty())
+    report_config_warning("nothing to log: set wildcard_logging = true or add log = VAR lines");
+
+  const std::string name = file_ + (file_timestamp_ ? file_time_stamp(start_time() / comms().time_warp()) : "");
+  const std::filesystem::path folder(path_);
+  std::error_code ignored;
+  std::filesystem::create_directories(folder, ignored);
+  file_path_ = (folder / (name + ".alog")).string();
+  out_ = std::fopen(file_path_.c_str(), "w");
+  if (!out_) {
+    report_config_warning("cannot create the log file '" + file_path_ + "'");
+    return false;
+  }
+  const std::string header = moos::alog_header(name + ".alog", start_time());
+  std::fwrite(header.data(), 1, header.size(), out_);
+
+  if (wildcard_logging_) register_wildcard("*", "*");
+  for (const LogRequest& r : requests_) register_variable(r.variable, r.interval_s);
+  return true;
+}
+
+bool LogLite::omitted(const std::string& variable) const {
+  for (const std::string& p : omit_patterns_)
+    if (moos::wildcard_match(p, variable)) return true;
+  return false;
+}
+
+void LogLite::on_new_mail(const std::vector<moos::Message>& mail) {
+  if (!out_) return;
+  for (const moos::Message& m : mail) {
+    if (omitted(m.key)) continue;
+    const std::string line = moos::format_alog_line(moos::alog_entry(m, start_time()));
+    if (std::fwrite(line.data(), 1, line.size(), out_) != line.size() && !write_failed_) {
+      write_failed_ = true;
+      report_run_warning("cannot write to " + file_path_);
+    }
+    ++lines_written_;
+  }
+}
+
+void LogLite::iterate() {
+  if (out_ && std::fflush(out_) != 0 && !write_failed_) {
+    write_failed_ = true;
+    report_run_warning("cannot write to " + file_path_);
+  }
+}
+
+std::string LogLite::build_report() {
+  std::string out;
+  out += "File:     " + file_path_ + "\n";
+  out += "Lines:    " + std::to_string(lines_written_) + "\n";
+  out += std::string("Logging:  ") + (wildcard_logging_ ? "every variable" : "listed variables") +
+         ", " + std::to_string(requests_.size()) + " log lines, " +
+         std::to_string(omit_patterns_.size()) + " omit patterns\n";
+  return out;
+}
+
+}  // namespace plog_lite

@@ -1,0 +1,87 @@
+#include "HazardMetric.hpp"
+
+#include "app_support.hpp"
+#include "hazard/text.hpp"
+#include "mission/messages/hazard_search.hpp"
+#include "mission/messages/hazardset_report.hpp"
+
+namespace ufld_hazard_metric {
+
+moos::AppTraits metric_traits() { return mission_app::mission_traits(kAppName, kDefaultAppTick_hz); }
+
+HazardMetricApp::HazardMetricApp(mission_app::MissionContext context)
+    : mission_app::MissionApp(metric_traits()), context_(std::move(context)) {}
+
+void HazardMetricApp::load_hazard_file(const moos::ConfigLine& line, const std::string& file) {
+  hazard_files_.push_back(file);
+  const auto text = app_support::mission_relative_reader(context_.directory)(file);
+  if (!text) {
+    report_run_warning(mission::HazardMetric::hazard_file_missing(file));
+    report_config_warning(mission_app::at_line(line, "cannot read hazard_file '" + file + "'"));
+    return;
+  }
+  for (const std::string& w : metric_.load_hazard_file(file, *text)) report_config_warning(w);
+}
+
+bool HazardMetricApp::on_start_up() {
+  for (const moos::ConfigLine& line : config_lines()) {
+    const mission::HazardMetric::ConfigResult r = metric_.configure(line.key, line.value);
+    if (!r.warning.empty()) warn_at(line, r.warning);
+    if (r.hazard_file) load_hazard_file(line, *r.hazard_file);
+  }
+  register_variable(mission::kHazardsetReportVar);
+  register_variable(mission::kHazardSearchStartVar);
+  publish(metric_.start(cycle_time()));
+  return true;
+}
+
+void HazardMetricApp::on_new_mail(const std::vector<moos::Message>& mail) {
+  const double now_s = cycle_time();
+  for (const moos::Message& m : mail) {
+    const std::string text = mission_app::mail_text(m);
+    if (m.key == mission::kHazardsetReportVar) {
+      publish(metric_.on_hazardset_report(text, now_s));
+    } else if (m.key == mission::kHazardSearchStartVar) {
+      publish(metric_.on_search_start(now_s));
+    }
+  }
+}
+
+void HazardMetricApp::iterate() {
+  flush_unsent();
+  publish(metric_.iterate(static_cast<long>(iteration()), cycle_time()));
+}
+
+std::string HazardMetricApp::build_report() {
+  const mission::MetricConfig& c = metric_.config();
+  std::string out;
+  out += "Hazard file:  " + (metric_.source().empty() ? std::string("(none)") : metric_.source()) +
+         "\n";
+  out += "    Hazard:   " + std::to_string(metric_.truth().hazard_count()) + "\n";
+  out += "    Benign:   " + std::to_string(metric_.truth().benign_count()) + "\n";
+  out += "Penalties:    missed hazard " + hazard::fmt(c.penalty_missed_hazard) + ", false alarm " +
+         hazard::fmt(c.penalty_false_alarm) + ", max_time " + hazard::fmt(c.max_time_s, 2) +
+         " (over " + hazard::fmt(c.penalty_max_time_over) + ", rate " +
+         hazard::fmt(c.penalty_max_time_rate) + ")\n";
+  out += "Worst score:  " + hazard::fmt(metric_.worst_score(), 2) + "\n";
+  out += "Search start: " +
+         (metric_.search_start_s()
+              ? hazard::fmt(*metric_.search_start_s() - start_time(), 2) + " s after start-up"
+              : std::string("not started")) +
+         "\n\n";
+  out += "Source      Reports  Score   Correct  Missed  False alarms\n";
+  out += "----------  -------  ------  -------  ------  ------------\n";
+  auto col = [](const std::string& s, std::size_t w) {
+    return s + std::string(s.size() < w ? w - s.size() : 1, ' ');
+  };
+  for (const auto& [source, record] : metric_.sources()) {
+    const mission::HazardsetEval& e = record.eval;
+    out += col(source, 12) + col(std::to_string(record.reports_received), 9) +
+           col(hazard::fmt(e.norm_score, 2), 8) + col(std::to_string(e.correct_hazards), 9) +
+           col(std::to_string(e.missed_hazards), 8) + std::to_string(e.false_alarms) + "\n";
+  }
+  if (metric_.sources().empty()) out += "(no reports yet)\n";
+  return out;
+}
+
+}  // namespace ufld_hazard_metric

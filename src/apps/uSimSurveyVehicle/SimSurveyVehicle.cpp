@@ -1,0 +1,230 @@
+#include "SimSurveyVehicle.hpp"
+
+#include <cmath>
+
+#include "hazard/messages/node_report.hpp"
+#include "hazard/text.hpp"
+#include "mission/polygon.hpp"
+#include "survey_route.hpp"
+
+namespace usim_survey_vehicle {
+
+namespace {
+
+/// Node reports may come this fraction of a report interval early (the cycle grid jitters).
+constexpr double kReportIntervalTolerance = 1e-6;
+
+const std::vector<mission::ParamInfo> kAppParameters = {
+    {"vname", "", "vehicle name (default: the community name)"},
+    {"node_report_var", "NODE_REPORT", "variable of the node reports"},
+    {"vehicle_type", "UUV", "TYPE field of the node reports"},
+    {"deploy", "false", "follow the route at once (else wait for DEPLOY, DEPLOY_ALL, DEPLOY_<V>)"},
+    {"done_flag", "", "VAR=value posted when the route is done (repeatable)"},
+};
+
+}  // namespace
+
+const std::vector<mission::ParamInfo>& app_parameters() { return kAppParameters; }
+
+moos::AppTraits sim_traits() { return mission_app::mission_traits(kAppName, kDefaultAppTick_hz); }
+
+std::optional<Flag> parse_flag(std::string_view text) {
+  const auto eq = text.find('=');
+  if (eq == std::string_view::npos) return std::nullopt;
+  Flag f{std::string(hazard::trim(text.substr(0, eq))),
+         std::string(hazard::trim(text.substr(eq + 1))), std::nullopt};
+  if (!mission_app::is_name(f.variable)) return std::nullopt;
+  f.number = hazard::parse_number(f.value);
+  return f;
+}
+
+SimSurveyVehicle::SimSurveyVehicle(mission_app::MissionContext context)
+    : mission_app::MissionApp(sim_traits()), context_(std::move(context)) {}
+
+std::optional<std::string> SimSurveyVehicle::apply_app_param(const moos::ConfigLine& line) {
+  const std::string key = hazard::to_lower(line.key);
+  const std::string& value = line.value;
+  if (key == "vname") {
+    if (!mission_app::is_name(value)) return "parameter vname='" + value + "' is not a vehicle name";
+    vname_ = value;
+  } else if (key == "node_report_var") {
+    if (!mission_app::is_name(value)) return "parameter node_report_var='" + value + "' is not a variable";
+    node_report_var_ = value;
+  } else if (key == "vehicle_type") {
+    if (!mission_app::is_name(value)) return "parameter vehicle_type='" + value + "' is not a type name";
+    vehicle_type_ = value;
+  } else if (key == "deploy") {
+    const auto b = hazard::parse_bool(value);
+    if (!b) return "parameter deploy='" + value + "' is not true or false";
+    deployed_ = *b;
+  } else if (key == "done_flag") {
+    auto flag = parse_flag(value);
+    if (!flag) return "parameter done_flag='" + value + "' is not VAR=value";
+    done_flags_.push_back(std::move(*flag));
+  } else {
+    return std::nullopt;
+  }
+  return std::string();
+}
+
+bool SimSurveyVehicle::on_start_up() {
+  for (const moos::ConfigLine& line : config_lines()) {
+    std::optional<std::string> problem = apply_app_param(line);
+    if (!problem) problem = mission::apply_survey_vehicle_param(config_, line.key, line.value);
+    if (!problem->empty()) warn_at(line, *problem);
+  }
+  if (vname_.empty()) vname_ = community();
+  if (!mission_app::is_name(vname_)) {
+    report_config_warning("no vehicle name: set vname (the community name '" + vname_ +
+                          "' is not one)");
+    vname_ = kAppName;
+  }
+  if (const std::string problem = mission::validate(config_.vehicle); !problem.empty()) {
+    report_config_warning(problem + "; the vehicle's defaults are used");
+    config_.vehicle = mission::VehicleParams{};
+  }
+  if (config_.report_interval_s * settings().app_tick_hz < 1.0 - kReportIntervalTolerance) {
+    report_config_warning("report_interval " + hazard::fmt(config_.report_interval_s, 3) +
+                          " s is shorter than an iteration (AppTick " +
+                          hazard::fmt(settings().app_tick_hz, 3) +
+                          "): one node report per iteration");
+  }
+  if (context_.lat_origin_deg && context_.lon_origin_deg) {
+    geodesy_.emplace(mission::GeoPoint{*context_.lat_origin_deg, *context_.lon_origin_deg});
+  }
+
+  auto route = mission::plan_route(config_);
+  if (auto* error = std::get_if<std::string>(&route)) {
+    report_config_warning("no route: " + *error);
+  } else {
+    route_m_ = std::get<std::vector<glm::dvec2>>(std::move(route));
+  }
+  const double now_s = cycle_time();
+  last_pose_ = mission::Pose{config_.start_m, hazard::norm360(config_.start_heading_deg), 0.0, now_s};
+  vehicle_.emplace(config_.vehicle, last_pose_);
+
+  register_variable("DEPLOY");
+  register_variable("DEPLOY_ALL");
+  register_variable("DEPLOY_" + hazard::to_upper(vname_));
+  register_variable(survey_route_variable_for(vname_));
+  start_route_if_ready();
+  return true;
+}
+
+void SimSurveyVehicle::on_new_mail(const std::vector<moos::Message>& mail) {
+  const std::string route_var = survey_route_variable_for(vname_);
+  for (const moos::Message& m : mail) {
+    if (m.key == route_var) {
+      on_route(m);
+    } else if (m.key == "DEPLOY" || m.key == "DEPLOY_ALL" ||
+               m.key == "DEPLOY_" + hazard::to_upper(vname_)) {
+      on_deploy(m);
+    }
+  }
+}
+
+void SimSurveyVehicle::on_deploy(const moos::Message& m) {
+  const auto b = hazard::parse_bool(mission_app::mail_text(m));
+  if (!b) {
+    report_run_warning(m.key + "='" + hazard::excerpt(mission_app::mail_text(m)) + "' is not true or false");
+    return;
+  }
+  if (!*b) return;  // DEPLOY=false before deployment: nothing to stop
+  if (!deployed_) report_event("Deployed (" + m.key + ")");
+  deployed_ = true;
+  start_route_if_ready();
+}
+
+void SimSurveyVehicle::on_route(const moos::Message& m) {
+  auto points = mission::parse_points(mission_app::mail_text(m));
+  if (auto* error = std::get_if<mission::ConvexPolygon::Error>(&points)) {
+    report_run_warning(m.key + " ignored: " + error->message);
+    return;
+  }
+  route_m_ = std::get<std::vector<glm::dvec2>>(std::move(points));
+  route_started_ = false;
+  ++routes_received_;
+  report_event("New route with " + std::to_string(route_m_.size()) + " waypoints");
+  start_route_if_ready();
+}
+
+void SimSurveyVehicle::start_route_if_ready() {
+  if (!deployed_ || route_started_ || route_m_.empty() || !vehicle_) return;
+  vehicle_->set_waypoints(route_m_);
+  route_started_ = true;
+  done_posted_ = false;
+}
+
+void SimSurveyVehicle::iterate() {
+  flush_unsent();
+  const double now_s = cycle_time();
+  last_pose_ = vehicle_->advance_to(now_s);
+  if (!last_report_s_ ||
+      now_s - *last_report_s_ >= config_.report_interval_s * (1.0 - kReportIntervalTolerance)) {
+    post_node_report(last_pose_);
+    last_report_s_ = now_s;
+  }
+  if (route_started_ && vehicle_->done() && !done_posted_) post_done_flags();
+}
+
+void SimSurveyVehicle::post_node_report(const mission::Pose& pose) {
+  hazard::NodeReport r;
+  r.name = vname_;
+  r.x_m = pose.position_m.x;
+  r.y_m = pose.position_m.y;
+  r.speed_mps = pose.speed_mps;
+  r.heading_deg = pose.heading_deg;
+  if (geodesy_) {
+    const mission::GeoPoint geo = geodesy_->to_geo(pose.position_m);
+    r.lat_deg = geo.lat_deg;
+    r.lon_deg = geo.lon_deg;
+  }
+  r.time_s = pose.time_s;
+  r.type = vehicle_type_;
+  mission::Outputs out;
+  out.post(node_report_var_, hazard::format_node_report(r));
+  publish(out);
+  ++node_reports_posted_;
+}
+
+void SimSurveyVehicle::post_done_flags() {
+  done_posted_ = true;
+  mission::Outputs out;
+  for (const Flag& f : done_flags_) {
+    if (f.number) {
+      out.post_double(f.variable, *f.number);
+    } else {
+      out.post(f.variable, f.value);
+    }
+  }
+  out.events.push_back("Route done at " + hazard::fmt(seconds_since_start(), 1) + " s");
+  publish(out);
+}
+
+std::string SimSurveyVehicle::build_report() {
+  if (!vehicle_) return {};
+  std::string state;
+  if (!deployed_) {
+    state = "waiting for DEPLOY";
+  } else if (!route_started_) {
+    state = "idle, waiting for " + survey_route_variable_for(vname_);
+  } else if (vehicle_->done()) {
+    state = "done";
+  } else {
+    state = "waypoint " + std::to_string(vehicle_->waypoints_reached() + 1) + " of " +
+            std::to_string(vehicle_->waypoints().size());
+  }
+  std::string out;
+  out += "Vehicle:  " + vname_ + " (" + vehicle_type_ + ")\n";
+  out += "State:    " + state + "\n";
+  out += "Pose:     x=" + hazard::fmt(last_pose_.position_m.x, 1) +
+         " y=" + hazard::fmt(last_pose_.position_m.y, 1) +
+         " hdg=" + hazard::fmt(last_pose_.heading_deg, 1) +
+         " spd=" + hazard::fmt(last_pose_.speed_mps, 2) + "\n";
+  out += "Reports:  " + std::to_string(node_reports_posted_) + " " + node_report_var_ + "\n";
+  out += "Routes:   " + std::to_string(routes_received_) + " received\n";
+  out += std::string("Geodesy:  ") + (geodesy_ ? "LAT/LON from LatOrigin/LongOrigin" : "no origin, no LAT/LON") + "\n";
+  return out;
+}
+
+}  // namespace usim_survey_vehicle

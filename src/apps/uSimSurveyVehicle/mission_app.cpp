@@ -1,0 +1,331 @@
+#include "mission_app.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <csignal>
+#include <iostream>
+
+#include "hazard/text.hpp"
+#include "hazard/version.hpp"
+#include "moos/mission.hpp"
+#include "moos/tcp_client.hpp"
+#include "moos/text.hpp"
+
+namespace mission_app {
+
+namespace {
+
+/// Width of the '=' rules of the MOOS-IvP information screens.
+constexpr std::size_t kRuleWidth = 63;
+/// Width of the '-' rule under an --interface section title.
+constexpr std::size_t kSectionRuleWidth = 40;
+/// ANSI colours of the launch line (green on a terminal, as MOOS-IvP apps print it).
+constexpr const char* kGreen = "\x1b[32m";
+constexpr const char* kPlain = "\x1b[0m";
+
+std::optional<LaunchAction> information_switch(std::string_view arg) {
+  if (arg == "-e" || arg == "--example" || arg == "-example") return LaunchAction::kExample;
+  if (arg == "-h" || arg == "--help" || arg == "-help") return LaunchAction::kHelp;
+  if (arg == "-i" || arg == "--interface") return LaunchAction::kInterface;
+  if (arg == "-v" || arg == "--version" || arg == "-version") return LaunchAction::kVersion;
+  return std::nullopt;
+}
+
+/// libMOOS's switch for the pause after each packet (wire spec 4.3 step 4, 6.4).
+constexpr std::string_view kTwDelayFactorSwitch = "moos_tw_delay_factor";
+/// Decimals of a double handed to a text parser (a pose or a flag never needs more).
+constexpr int kMailDoubleDecimals = 6;
+/// libMOOS waits this many MOOS seconds for the first connection (wire spec 7.1).
+constexpr double kConnectWait_moos_s = 5.0;
+/// Blank lines that scroll the previous terminal report away (libMOOS).
+constexpr std::size_t kTerminalScrollLines = 9;
+
+std::atomic<bool> g_stop{false};
+extern "C" void mission_app_on_stop_signal(int) { g_stop = true; }
+
+int print(const std::string& text) {
+  std::cout << text << std::flush;
+  return std::cout ? 0 : 1;
+}
+
+std::string padded(std::string_view text, std::size_t width) {
+  return std::string(text) + std::string(width > text.size() ? width - text.size() : 0, ' ');
+}
+
+std::string interface_section(const std::string& title,
+                              const std::vector<InterfaceVariable>& variables) {
+  std::string out = title + "\n" + std::string(kSectionRuleWidth, '-') + "\n";
+  for (const InterfaceVariable& v : variables)
+    out += "  " + v.name + " = " + v.example + "\n      " + v.meaning + "\n";
+  return out;
+}
+
+}  // namespace
+
+LaunchAction decide_launch(const moos::CommandLine& cl) {
+  for (const std::string& arg : cl.unhandled)
+    if (auto info = information_switch(arg)) return *info;
+  return cl.mission_file ? LaunchAction::kRun : LaunchAction::kHelp;
+}
+
+MissionContext read_mission_context(const moos::CommandLine& cl) {
+  MissionContext context;
+  if (!cl.mission_file) return context;
+  moos::MissionOptions options;
+  options.substitutions = cl.substitutions;
+  std::vector<moos::MissionError> ignored;  // run_app reports them when it loads the file again
+  const auto mission = moos::MissionFile::load(*cl.mission_file, options, &ignored);
+  if (!mission) return context;
+  context.directory = mission->directory();
+  context.lat_origin_deg = mission->global_double("LatOrigin");
+  context.lon_origin_deg = mission->global_double("LongOrigin");
+  return context;
+}
+
+int run_main(int argc, char** argv, const std::string& app_name, const InfoTexts& texts,
+             const AppFactory& make_app) {
+  const moos::CommandLine cl = moos::parse_command_line(argc, argv);
+  switch (decide_launch(cl)) {
+    case LaunchAction::kHelp: return print(texts.help());
+    case LaunchAction::kExample: return print(texts.example());
+    case LaunchAction::kInterface: return print(texts.interface());
+    case LaunchAction::kVersion: return print(texts.version());
+    case LaunchAction::kRun: break;
+  }
+  const bool terminal = ::isatty(STDOUT_FILENO) != 0;
+  std::cout << (terminal ? kGreen : "") << app_name << " launching as "
+            << moos::app_name_from(cl, app_name) << (terminal ? kPlain : "") << "\n\n"
+            << std::flush;
+  const std::unique_ptr<moos::MoosApp> app = make_app(read_mission_context(cl));
+  return run_mission_app(*app, cl, std::cout, std::cerr, terminal);
+}
+
+std::optional<double> tw_delay_factor_ms(const moos::CommandLine& cl, std::string* error) {
+  const auto it = cl.moos_switches.find(std::string(kTwDelayFactorSwitch));
+  if (it == cl.moos_switches.end()) return moos::TcpClientOptions{}.tw_delay_factor_ms;
+  const auto factor = moos::text::parse_number(it->second);
+  if (!factor || *factor < 0.0) {
+    *error = "--" + std::string(kTwDelayFactorSwitch) + "=" + it->second +
+             ": the factor must be a number >= 0";
+    return std::nullopt;
+  }
+  return *factor;
+}
+
+int run_mission_app(moos::MoosApp& app, const moos::CommandLine& cl, std::ostream& out,
+            std::ostream& err, bool out_is_terminal) {
+  if (!cl.mission_file) {
+    err << "no mission file given\n";
+    return 1;
+  }
+  std::string error;
+  const std::optional<double> factor = tw_delay_factor_ms(cl, &error);
+  if (!factor) {
+    err << error << "\n";
+    return 1;
+  }
+  moos::MissionOptions mission_options;
+  mission_options.substitutions = cl.substitutions;
+  std::vector<moos::MissionError> mission_errors;
+  const auto mission = moos::MissionFile::load(*cl.mission_file, mission_options, &mission_errors);
+  if (!mission) {
+    for (const auto& e : mission_errors) err << e.to_string() << "\n";
+    return 1;
+  }
+  moos::AppSettings settings = moos::resolve_app_settings(app.traits(), cl, &*mission, mission_errors);
+
+  moos::TcpClientOptions client_options;
+  client_options.host = settings.server_host;
+  client_options.port = settings.server_port;
+  client_options.name = settings.moos_name;
+  client_options.time_warp = settings.time_warp;
+  client_options.tw_delay_factor_ms = *factor;
+  moos::TcpClient client(client_options);
+  if (!client.start()) {
+    err << "cannot start the MOOS client: " << client.last_error() << "\n";
+    return 1;
+  }
+  // libMOOS waits up to 5 MOOS seconds for the first connection (wire spec 7.1).
+  client.wait_until_connected(kConnectWait_moos_s / settings.time_warp);
+  if (client.state() == moos::ConnectionState::kPoisoned) {
+    err << client.last_error() << "\n";
+    return 1;
+  }
+  if (!client.is_connected())
+    err << "not connected to " << settings.server_host << ":" << settings.server_port
+        << " yet (" << client.last_error() << "); still trying\n";
+  if (settings.term_reporting.value_or(out_is_terminal)) {
+    app.set_terminal_output([&out](const std::string& frame) {
+      out << std::string(kTerminalScrollLines, '\n') << frame << std::flush;
+    });
+  }
+  if (!app.start(client, std::move(settings))) {
+    err << app.settings().app_name << ": start-up failed\n";
+    for (const auto& w : app.appcast().config_warnings()) err << "  " << w << "\n";
+    return 1;
+  }
+  g_stop = false;
+  std::signal(SIGINT, mission_app_on_stop_signal);
+  std::signal(SIGTERM, mission_app_on_stop_signal);
+  app.run_until_stopped(&g_stop);
+  client.close();
+  return 0;
+}
+
+// ---- text frames ---------------------------------------------------------------------------
+
+std::string rule() { return std::string(kRuleWidth, '=') + "\n"; }
+
+std::string banner(const std::string& title) { return rule() + title + "\n" + rule(); }
+
+std::string help_text(const std::string& app_name, const std::string& description,
+                      const std::string& app_options) {
+  return banner("Usage: " + app_name + " file.moos [OPTIONS]") + "\n" + description +
+         "\n"
+         "Options:\n" +
+         app_options +
+         "  --alias=<ProcessName>\n"
+         "      Launch " + app_name + " with the given process\n"
+         "      name rather than " + app_name + ".\n"
+         "  --example, -e\n"
+         "      Display example MOOS configuration block.\n"
+         "  --help, -h\n"
+         "      Display this help message.\n"
+         "  --interface, -i\n"
+         "      Display MOOS publications and subscriptions.\n"
+         "  --version,-v\n"
+         "      Display release version of " + app_name + ".\n"
+         "  --NAME=value\n"
+         "      Replaces $(NAME) in the mission file.\n"
+         "  --moos_host=HOST, --moos_port=PORT, --moos_time_warp=W,\n"
+         "  --moos_app_tick=HZ, --moos_name=NAME\n"
+         "      Generic MOOS switches; they override the mission file.\n"
+         "\n"
+         "Note: If argv[2] does not otherwise match a known option,\n"
+         "      then it will be interpreted as a run alias. This is\n"
+         "      to support pAntler launching conventions.\n"
+         "\n"
+         "Exit codes: 0 after SIGINT/SIGTERM or an information switch; 1 if the\n"
+         "mission file cannot be read, the MOOSDB refuses the name or start-up fails.\n";
+}
+
+std::string example_body(double app_tick_hz, const std::vector<ParameterSection>& sections,
+                         const std::map<std::string, std::string>& examples) {
+  const std::string tick = moos::text::format_g(app_tick_hz);
+  std::string out = "  AppTick   = " + tick + "\n  CommsTick = " + tick + "\n";
+  for (const ParameterSection& s : sections)
+    out += "\n  // " + s.title + "\n" + parameter_lines(*s.params, examples);
+  return out;
+}
+
+std::string example_text(const std::string& app_name, const std::string& body) {
+  std::string out;
+  for (const std::string& line : {rule(), app_name + " Example MOOS Configuration\n", rule()})
+    out += "// " + line;
+  return out + "\nProcessConfig = " + app_name + "\n{\n" + body + "}\n";
+}
+
+std::string parameter_lines(const std::vector<mission::ParamInfo>& params,
+                            const std::map<std::string, std::string>& examples) {
+  struct Line {
+    std::string key, value, help;
+    bool commented;
+  };
+  std::vector<Line> lines;
+  for (const mission::ParamInfo& p : params) {
+    const auto example = examples.find(p.name);
+    const bool has_default = p.default_text[0] != '\0';
+    const std::string value =
+        has_default ? p.default_text : (example != examples.end() ? example->second : "");
+    lines.push_back({p.name, value, p.help, !has_default && example == examples.end()});
+  }
+  std::size_t key_width = 0, value_width = 0;
+  for (const Line& l : lines) {
+    key_width = std::max(key_width, l.key.size() + (l.commented ? 3 : 0));
+    value_width = std::max(value_width, l.value.size());
+  }
+  std::string out;
+  for (const Line& l : lines) {
+    const std::string key = (l.commented ? "// " : "") + l.key;
+    out += "  " + padded(key, key_width) + " = " + padded(l.value, value_width) + "  // " +
+           l.help + "\n";
+  }
+  return out;
+}
+
+std::string interface_text(const std::string& app_name,
+                           const std::vector<InterfaceVariable>& subscriptions,
+                           const std::vector<InterfaceVariable>& publications,
+                           const std::string& notes) {
+  return banner(app_name + " INTERFACE") + "\n" + interface_section("SUBSCRIPTIONS:", subscriptions) +
+         "\n" + interface_section("PUBLICATIONS:", publications) + (notes.empty() ? "" : "\n") +
+         notes;
+}
+
+std::vector<InterfaceVariable> framework_publications(const std::string& app_name) {
+  const std::string upper = moos::text::to_upper(app_name);
+  return {
+      {"APPCAST", "proc=" + app_name + "!@#iter=12!@#node=jake!@#...",
+       "the AppCast report (the terminal report's content), while requested (APPCAST_REQ)"},
+      {upper + "_STATUS",
+       "AppErrorFlag=false,Uptime=12.3,MOOSName=" + app_name + ",Publishing=\"...\",...",
+       "<APPNAME>_STATUS: the process status, every 2 s"},
+  };
+}
+
+std::string version_text(const std::string& app_name) {
+  return app_name + " " + std::string(hazard::release_version()) + " (HazardSensor)\n";
+}
+
+// ---- the application base ----------------------------------------------------------------
+
+std::string at_line(const moos::ConfigLine& line, const std::string& text) {
+  if (line.file.empty()) return text;
+  return line.file + ":" + std::to_string(line.line) + ": " + text;
+}
+
+moos::AppTraits mission_traits(const std::string& app_name, double app_tick_hz) {
+  moos::AppTraits t;
+  t.default_name = app_name;
+  t.default_app_tick_hz = app_tick_hz;
+  t.post_iteration_timing = false;
+  t.repeated_parameters = moos::RepeatedParameter::kLastWinsWithWarning;
+  return t;
+}
+
+bool is_name(std::string_view text) {
+  return !text.empty() && text.find_first_of(" \t,=#") == std::string_view::npos;
+}
+
+std::string mail_text(const moos::Message& m) {
+  return m.is_double() ? hazard::fmt(m.dval, kMailDoubleDecimals) : m.sval;
+}
+
+bool MissionApp::send(const mission::Posting& p) {
+  return p.number ? notify(p.variable, *p.number) : notify(p.variable, p.text);
+}
+
+void MissionApp::publish(const mission::Outputs& out) {
+  for (const mission::Posting& p : out.postings) {
+    // Keep the order: once one posting waits, every later one waits behind it.
+    if (!unsent_.empty() || !send(p)) unsent_.push_back(p);
+  }
+  for (const std::string& w : out.config_warnings) report_config_warning(w);
+  for (const std::string& w : out.run_warnings) report_run_warning(w);
+  for (const std::string& e : out.events) report_event(e);
+}
+
+bool MissionApp::flush_unsent() {
+  std::size_t sent = 0;
+  while (sent < unsent_.size() && send(unsent_[sent])) ++sent;
+  unsent_.erase(unsent_.begin(), unsent_.begin() + static_cast<std::ptrdiff_t>(sent));
+  return unsent_.empty();
+}
+
+void MissionApp::warn_at(const moos::ConfigLine& line, const std::string& text) {
+  report_config_warning(at_line(line, text));
+}
+
+}  // namespace mission_app

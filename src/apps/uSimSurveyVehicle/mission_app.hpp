@@ -1,0 +1,164 @@
+#pragma once
+// What the mission helper applications (uSimSurveyVehicle, pHazardMgr, uFldHazardMetric, pLogLite)
+// share: the MOOS-IvP shape of main (information switches, run alias, TCP client), the frames of
+// their information texts, and a MoosApp base that publishes a libmission Outputs value.
+//
+// Contract
+// - Command line (the convention of uFldHazardSensor, spec 2): the first information switch
+//   decides (-e/--example/-example, -h/--help/-help, -i/--interface, -v/--version/-version);
+//   without one and without a mission file, the help is shown. The mission file, the run alias
+//   (argv[2] or --alias=) and the --moos_* switches are libmoos's parse_command_line's.
+// - run_main prints the chosen text (exit 0), or loads the mission's context (its folder and the
+//   LatOrigin / LongOrigin globals), builds the app and runs it on a TCP client
+//   (run_mission_app: moos::run_app plus libMOOS's --moos_tw_delay_factor) until SIGINT or
+//   SIGTERM (exit 0; 1 if the mission file cannot be read, the MOOSDB refuses the name, or
+//   start-up fails).
+// - MissionApp::publish posts every posting of an Outputs value in order (doubles as MOOS doubles)
+//   and hands events and warnings to the AppCast. A posting that cannot be sent because the
+//   client is not connected yet is kept and sent, in order, by the next flush_unsent() (each app
+//   calls it first thing in iterate(), which libmoos runs only while connected): start-up
+//   postings are never lost to a slow first connection.
+
+#include <functional>
+#include <iosfwd>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "mission/outputs.hpp"
+#include "mission/params.hpp"
+#include "moos/app.hpp"
+#include "moos/command_line.hpp"
+
+namespace mission_app {
+
+enum class LaunchAction { kRun, kHelp, kExample, kInterface, kVersion };
+
+/// The action the command line asks for (see the contract).
+LaunchAction decide_launch(const moos::CommandLine& command_line);
+
+/// What main learns from the mission file before the app starts.
+struct MissionContext {
+  std::string directory = ".";           ///< relative paths in the block are read from here
+  std::optional<double> lat_origin_deg;  ///< global LatOrigin, when it is a number
+  std::optional<double> lon_origin_deg;  ///< global LongOrigin, when it is a number
+};
+
+/// The context of the mission file named on the command line (defaults when none can be read).
+MissionContext read_mission_context(const moos::CommandLine& command_line);
+
+/// The information texts of one application.
+struct InfoTexts {
+  std::string (*help)();
+  std::string (*example)();
+  std::string (*interface)();
+  std::string (*version)();
+};
+
+using AppFactory = std::function<std::unique_ptr<moos::MoosApp>(const MissionContext&)>;
+
+/// The whole of main for a mission helper (see the contract). `app_name` is the default process
+/// name, printed in the launch line.
+int run_main(int argc, char** argv, const std::string& app_name, const InfoTexts& texts,
+             const AppFactory& make_app);
+
+/// libMOOS's pause after each packet sent, in ms per unit of time warp (wire spec 4.3 step 4):
+/// `--moos_tw_delay_factor=F` (a number >= 0), else libmoos's default. nullopt with `error`
+/// set when the value is not a number >= 0.
+std::optional<double> tw_delay_factor_ms(const moos::CommandLine& command_line,
+                                         std::string* error);
+
+/// moos::run_app, plus libMOOS's `--moos_tw_delay_factor` switch (moos::run_app does not read
+/// it yet). Why it matters: after each packet a libMOOS client pauses W x F ms (W the warp,
+/// F = 0.2 by default), 80 ms at W = 400, so a simulator's node reports reach the sensor in
+/// bursts of 32 simulated seconds and the sensor, which evaluates the latest pose once per
+/// iteration, skips over objects; with F = 0 every iteration's postings leave at once.
+int run_mission_app(moos::MoosApp& app, const moos::CommandLine& command_line, std::ostream& out,
+            std::ostream& err, bool out_is_terminal);
+
+// ---- text frames ---------------------------------------------------------------------------
+
+/// A line of 63 '=' (the MOOS-IvP information screens, manual listings 10.3 and 11.4).
+std::string rule();
+/// `title` between two rules.
+std::string banner(const std::string& title);
+
+/// --help: the usage banner, `description` (lines ending in '\n'), the application's own
+/// command-line options (may be empty) and the standard ones, the pAntler note and exit codes.
+std::string help_text(const std::string& app_name, const std::string& description,
+                      const std::string& app_options = {});
+
+/// One titled group of parameters of an --example block.
+struct ParameterSection {
+  std::string title;  ///< a comment line, e.g. "The application"
+  const std::vector<mission::ParamInfo>* params;
+};
+/// The body of an --example block: AppTick / CommsTick, then each section's parameter_lines.
+std::string example_body(double app_tick_hz, const std::vector<ParameterSection>& sections,
+                         const std::map<std::string, std::string>& examples = {});
+
+/// --example: the commented banner and `ProcessConfig = app_name { body }`.
+std::string example_text(const std::string& app_name, const std::string& body);
+
+/// Example lines for a parameter table, `=` and `//` aligned: `  name = default  // help`.
+/// A parameter without a default shows its value from `examples` when there is one, else it is
+/// shown commented out with an empty value.
+std::string parameter_lines(const std::vector<mission::ParamInfo>& params,
+                            const std::map<std::string, std::string>& examples = {});
+
+/// One variable of --interface.
+struct InterfaceVariable {
+  std::string name;
+  std::string example;
+  std::string meaning;
+};
+/// --interface: subscriptions and publications with example payloads, then `notes`.
+std::string interface_text(const std::string& app_name,
+                           const std::vector<InterfaceVariable>& subscriptions,
+                           const std::vector<InterfaceVariable>& publications,
+                           const std::string& notes = {});
+/// The framework's own publications of an app (APPCAST, <APP>_STATUS), for --interface.
+std::vector<InterfaceVariable> framework_publications(const std::string& app_name);
+
+/// One line: "<app> <release> (HazardSensor)".
+std::string version_text(const std::string& app_name);
+
+// ---- the application base ----------------------------------------------------------------
+
+/// The framework settings the mission apps share: the process name, AppTick (MOOS-time Hz),
+/// D36's rule for repeated framework parameters, and no `<APP>_ITER_GAP` / `_ITER_LEN`: at a high
+/// warp those two postings per iteration would outnumber everything the mission says (libmoos
+/// still posts `<APP>_STATUS`).
+moos::AppTraits mission_traits(const std::string& app_name, double app_tick_hz);
+
+/// A name for a vehicle, variable or type: non-empty, without blanks, ',', '=' or '#' (the
+/// separators of MOOS strings).
+bool is_name(std::string_view text);
+
+/// A message's value as text: strings as they are, doubles as FMT(., 6).
+std::string mail_text(const moos::Message& message);
+
+/// "file:line: text" for a configuration line (the place of a configuration warning).
+std::string at_line(const moos::ConfigLine& line, const std::string& text);
+
+class MissionApp : public moos::MoosApp {
+ public:
+  using moos::MoosApp::MoosApp;
+
+ protected:
+  /// Posts `out` in order and reports its events and warnings (see the contract).
+  void publish(const mission::Outputs& out);
+  /// Sends the postings kept while the client was not connected; false if some are still kept.
+  bool flush_unsent();
+  /// A configuration warning naming the line.
+  void warn_at(const moos::ConfigLine& line, const std::string& text);
+
+ private:
+  bool send(const mission::Posting& posting);
+  std::vector<mission::Posting> unsent_;
+};
+
+}  // namespace mission_app

@@ -1,0 +1,141 @@
+#pragma once
+// Test support for the mission helper applications (uSimSurveyVehicle, pHazardMgr,
+// uFldHazardMetric, pLogLite): the app class started on libmoos's in-process bus with a manual
+// clock, as main would start it (libmoos's command line and mission reader), from a mission
+// file written into a scratch folder. Cycles are instant and exact; a peer client posts mail and
+// reads the app's postings.
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "moos/app.hpp"
+#include "moos/bus.hpp"
+#include "moos/clock.hpp"
+#include "moos/command_line.hpp"
+#include "moos/mission.hpp"
+
+namespace mission_test {
+
+namespace fs = std::filesystem;
+
+/// A fresh folder for the running test, removed when the object goes away.
+class ScratchDir {
+ public:
+  ScratchDir() {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    path_ = fs::temp_directory_path() / ("mission_app_" + std::to_string(::getpid()) + "_" +
+                                         info->test_suite_name() + "_" + info->name());
+    fs::remove_all(path_);
+    fs::create_directories(path_);
+  }
+  ~ScratchDir() {
+    std::error_code ignored;
+    fs::remove_all(path_, ignored);
+  }
+  ScratchDir(const ScratchDir&) = delete;
+  ScratchDir& operator=(const ScratchDir&) = delete;
+
+  fs::path operator/(const std::string& name) const { return path_ / name; }
+  const fs::path& path() const { return path_; }
+
+ private:
+  fs::path path_;
+};
+
+inline void write_file(const fs::path& path, const std::string& text) {
+  fs::create_directories(path.parent_path());
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+}
+
+inline std::string read_file(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+/// Lines 1-5 of every test mission: globals, then the block header. The block's first line is
+/// line kFirstBlockLine of the file.
+inline std::string mission_text(const std::string& app, const std::string& block,
+                                const std::string& globals = "LatOrigin = 43.8253\nLongOrigin = -70.3304\n") {
+  return "Community = jake\n" + globals + "ProcessConfig = " + app + "\n{\n" + block + "}\n";
+}
+inline int first_block_line(const std::string& globals_lines = "LatOrigin = 43.8253\nLongOrigin = -70.3304\n") {
+  int lines = 0;
+  for (char c : globals_lines) lines += c == '\n';
+  return 4 + lines;
+}
+
+/// The bus, its clock and a peer client; one app at a time.
+class Bus {
+ public:
+  static constexpr double kT0 = moos::ManualClock::kDefaultStartUnix_s;
+
+  Bus() = default;
+
+  /// Writes m.moos (`mission_file`) into the scratch folder and starts `app` under `app_name`
+  /// (its block) as main would. Returns false if on_start_up failed.
+  bool start(moos::MoosApp& app, const std::string& app_name, const std::string& mission_file) {
+    write_file(dir / "m.moos", mission_file);
+    std::vector<moos::MissionError> errors;
+    mission = moos::MissionFile::load((dir / "m.moos").string(), {}, &errors);
+    EXPECT_TRUE(mission.has_value());
+    const std::vector<std::string> args = {app_name, (dir / "m.moos").string(), app_name};
+    moos::AppSettings settings = moos::resolve_app_settings(
+        app.traits(), moos::parse_command_line(args), &*mission, errors);
+    settings.time_warp = bus.time_warp();
+    comms = bus.connect(settings.moos_name);
+    EXPECT_TRUE(comms);
+    return app.start(*comms, std::move(settings));
+  }
+
+  void post(const std::string& var, const std::string& value) { ASSERT_TRUE(peer->notify(var, value)); }
+  void post(const std::string& var, double value) { ASSERT_TRUE(peer->notify(var, value)); }
+
+  /// The string values `source` posted to `var`, in order.
+  std::vector<std::string> values_of(const std::string& var, const std::string& source) const {
+    std::vector<std::string> out;
+    for (const auto& m : bus.postings_of(var))
+      if (m.source == source) out.push_back(m.is_double() ? std::to_string(m.dval) : m.sval);
+    return out;
+  }
+  /// Every posting of `source`, in order (variable names).
+  std::vector<std::string> variables_posted_by(const std::string& source) const {
+    std::vector<std::string> out;
+    for (const auto& m : bus.postings())
+      if (m.source == source) out.push_back(m.key);
+    return out;
+  }
+
+  ScratchDir dir;
+  moos::ManualClock clock{kT0};
+  moos::InProcessBus bus{clock, moos::InProcessBus::Options{"jake", 1.0}};
+  std::unique_ptr<moos::BusClient> peer = bus.connect("peer");
+  std::unique_ptr<moos::BusClient> comms;
+  std::optional<moos::MissionFile> mission;
+};
+
+/// True if some text in `texts` contains `part`.
+inline bool any_contains(const std::vector<std::string>& texts, const std::string& part) {
+  for (const auto& t : texts)
+    if (t.find(part) != std::string::npos) return true;
+  return false;
+}
+
+/// Run warnings of an AppCast as a list of texts.
+inline std::vector<std::string> run_warning_texts(const moos::AppCast& cast) {
+  std::vector<std::string> out;
+  for (const auto& [text, count] : cast.run_warnings()) out.push_back(text);
+  return out;
+}
+
+}  // namespace mission_test
