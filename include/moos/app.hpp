@@ -211,12 +211,20 @@ class MoosApp {
   std::map<std::string, Request> requests_;  // by requester key
 };
 
+/// libMOOS's pause after each packet sent, in ms per unit of time warp (wire spec 4.3 step 4):
+/// `--moos_tw_delay_factor=F` (a number >= 0), else libMOOS's default 0.2. A high-warp mission
+/// passes 0: at warp 400 the default pauses 80 ms after every packet, so a vehicle's node reports
+/// reach the sensor in bursts of 32 simulated seconds. nullopt, with `error` naming the argument,
+/// when the value is not a number >= 0.
+std::optional<double> tw_delay_factor_ms(const CommandLine& command_line, std::string* error);
+
 /// The whole life of an app as a MOOS process over TCP (spec 7.1): loads the mission named on
 /// the command line (with its `--NAME=value` substitutions), resolves the settings, connects a
 /// TcpClient, waits up to 5 MOOS s for the connection, calls start(), prints terminal reports to
 /// `out` (when TERM_REPORTING = true, or unset and `out_is_terminal`) and cycles until SIGINT or
 /// SIGTERM. Problems go to `err`. Returns the exit code: 0 after a signal, 1 if the mission cannot
-/// be read, the server refuses the name, or on_start_up() fails.
+/// be read, `--moos_tw_delay_factor` is not a number >= 0, the server refuses the name, or
+/// on_start_up() fails.
 int run_app(MoosApp& app, const CommandLine& command_line, std::ostream& out, std::ostream& err,
             bool out_is_terminal);
 

@@ -453,10 +453,28 @@ void MoosApp::report_event(const std::string& text) {
 
 // ---- run_app --------------------------------------------------------------------------------
 
+std::optional<double> tw_delay_factor_ms(const CommandLine& cl, std::string* error) {
+  static const std::string kSwitch = "moos_tw_delay_factor";
+  const auto it = cl.moos_switches.find(kSwitch);
+  if (it == cl.moos_switches.end()) return TcpClientOptions{}.tw_delay_factor_ms;
+  const auto factor = text::parse_number(it->second);
+  if (!factor || *factor < 0.0) {
+    *error = "--" + kSwitch + "=" + it->second + ": the factor must be a number >= 0";
+    return std::nullopt;
+  }
+  return *factor;
+}
+
 int run_app(MoosApp& app, const CommandLine& cl, std::ostream& out, std::ostream& err,
             bool out_is_terminal) {
   if (!cl.mission_file) {
     err << "no mission file given\n";
+    return 1;
+  }
+  std::string factor_error;
+  const std::optional<double> tw_delay_factor = tw_delay_factor_ms(cl, &factor_error);
+  if (!tw_delay_factor) {
+    err << factor_error << "\n";
     return 1;
   }
   MissionOptions mission_options;
@@ -474,6 +492,7 @@ int run_app(MoosApp& app, const CommandLine& cl, std::ostream& out, std::ostream
   client_options.port = settings.server_port;
   client_options.name = settings.moos_name;
   client_options.time_warp = settings.time_warp;
+  client_options.tw_delay_factor_ms = *tw_delay_factor;
   TcpClient client(client_options);
   if (!client.start()) {
     err << "cannot start the MOOS client: " << client.last_error() << "\n";

@@ -75,6 +75,22 @@ MissionFile mission(const std::string& text, std::vector<MissionError>* errors) 
   return MissionFile::parse(text, "m.moos", {}, errors);
 }
 
+TEST(RunApp, TwDelayFactorSwitchDefaultsToLibMoosAndRefusesBadValues_4_3) {
+  std::string error;
+  EXPECT_DOUBLE_EQ(*tw_delay_factor_ms(parse_command_line({"pEcho", "m.moos"}), &error), 0.2);
+  EXPECT_DOUBLE_EQ(
+      *tw_delay_factor_ms(parse_command_line({"pEcho", "m.moos", "--moos_tw_delay_factor=0"}), &error),
+      0.0);
+  EXPECT_DOUBLE_EQ(*tw_delay_factor_ms(
+                       parse_command_line({"pEcho", "m.moos", "--moos_tw_delay_factor=1.5"}), &error),
+                   1.5);
+  EXPECT_FALSE(
+      tw_delay_factor_ms(parse_command_line({"pEcho", "m.moos", "--moos_tw_delay_factor=-1"}), &error));
+  EXPECT_NE(error.find("--moos_tw_delay_factor=-1"), std::string::npos);
+  EXPECT_FALSE(tw_delay_factor_ms(
+      parse_command_line({"pEcho", "m.moos", "--moos_tw_delay_factor=fast"}), &error));
+}
+
 TEST(AppSettingsResolve, PrecedenceOfWarpTickHostAndPort_6_4) {
   std::vector<MissionError> errors;
   const auto m = mission("Community = alpha\nServerHost = 10.0.0.9\nServerPort = 9100\n"

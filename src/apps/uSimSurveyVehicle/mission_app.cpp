@@ -3,14 +3,11 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <atomic>
-#include <csignal>
 #include <iostream>
 
 #include "hazard/text.hpp"
 #include "hazard/version.hpp"
 #include "moos/mission.hpp"
-#include "moos/tcp_client.hpp"
 #include "moos/text.hpp"
 
 namespace mission_app {
@@ -33,18 +30,8 @@ std::optional<LaunchAction> information_switch(std::string_view arg) {
   return std::nullopt;
 }
 
-/// libMOOS's switch for the pause after each packet (wire spec 4.3 step 4, 6.4).
-constexpr std::string_view kTwDelayFactorSwitch = "moos_tw_delay_factor";
 /// Decimals of a double handed to a text parser (a pose or a flag never needs more).
 constexpr int kMailDoubleDecimals = 6;
-/// libMOOS waits this many MOOS seconds for the first connection (wire spec 7.1).
-constexpr double kConnectWait_moos_s = 5.0;
-/// Blank lines that scroll the previous terminal report away (libMOOS).
-constexpr std::size_t kTerminalScrollLines = 9;
-
-std::atomic<bool> g_stop{false};
-extern "C" void mission_app_on_stop_signal(int) { g_stop = true; }
-
 int print(const std::string& text) {
   std::cout << text << std::flush;
   return std::cout ? 0 : 1;
@@ -99,79 +86,7 @@ int run_main(int argc, char** argv, const std::string& app_name, const InfoTexts
             << moos::app_name_from(cl, app_name) << (terminal ? kPlain : "") << "\n\n"
             << std::flush;
   const std::unique_ptr<moos::MoosApp> app = make_app(read_mission_context(cl));
-  return run_mission_app(*app, cl, std::cout, std::cerr, terminal);
-}
-
-std::optional<double> tw_delay_factor_ms(const moos::CommandLine& cl, std::string* error) {
-  const auto it = cl.moos_switches.find(std::string(kTwDelayFactorSwitch));
-  if (it == cl.moos_switches.end()) return moos::TcpClientOptions{}.tw_delay_factor_ms;
-  const auto factor = moos::text::parse_number(it->second);
-  if (!factor || *factor < 0.0) {
-    *error = "--" + std::string(kTwDelayFactorSwitch) + "=" + it->second +
-             ": the factor must be a number >= 0";
-    return std::nullopt;
-  }
-  return *factor;
-}
-
-int run_mission_app(moos::MoosApp& app, const moos::CommandLine& cl, std::ostream& out,
-            std::ostream& err, bool out_is_terminal) {
-  if (!cl.mission_file) {
-    err << "no mission file given\n";
-    return 1;
-  }
-  std::string error;
-  const std::optional<double> factor = tw_delay_factor_ms(cl, &error);
-  if (!factor) {
-    err << error << "\n";
-    return 1;
-  }
-  moos::MissionOptions mission_options;
-  mission_options.substitutions = cl.substitutions;
-  std::vector<moos::MissionError> mission_errors;
-  const auto mission = moos::MissionFile::load(*cl.mission_file, mission_options, &mission_errors);
-  if (!mission) {
-    for (const auto& e : mission_errors) err << e.to_string() << "\n";
-    return 1;
-  }
-  moos::AppSettings settings = moos::resolve_app_settings(app.traits(), cl, &*mission, mission_errors);
-
-  moos::TcpClientOptions client_options;
-  client_options.host = settings.server_host;
-  client_options.port = settings.server_port;
-  client_options.name = settings.moos_name;
-  client_options.time_warp = settings.time_warp;
-  client_options.tw_delay_factor_ms = *factor;
-  moos::TcpClient client(client_options);
-  if (!client.start()) {
-    err << "cannot start the MOOS client: " << client.last_error() << "\n";
-    return 1;
-  }
-  // libMOOS waits up to 5 MOOS seconds for the first connection (wire spec 7.1).
-  client.wait_until_connected(kConnectWait_moos_s / settings.time_warp);
-  if (client.state() == moos::ConnectionState::kPoisoned) {
-    err << client.last_error() << "\n";
-    return 1;
-  }
-  if (!client.is_connected())
-    err << "not connected to " << settings.server_host << ":" << settings.server_port
-        << " yet (" << client.last_error() << "); still trying\n";
-  if (settings.term_reporting.value_or(out_is_terminal)) {
-    app.set_terminal_output([&out](const std::string& frame) {
-      out << std::string(kTerminalScrollLines, '\n') << frame << std::flush;
-    });
-  }
-  if (!app.start(client, std::move(settings))) {
-    err << app.settings().app_name << ": start-up failed\n";
-    for (const auto& w : app.appcast().config_warnings()) err << "  " << w << "\n";
-    return 1;
-  }
-  g_stop = false;
-  std::signal(SIGINT, mission_app_on_stop_signal);
-  std::signal(SIGTERM, mission_app_on_stop_signal);
-  app.run_until_stopped(&g_stop);
-  client.close();
-  return 0;
+  return moos::run_app(*app, cl, std::cout, std::cerr, terminal);
 }
 
 // ---- text frames ---------------------------------------------------------------------------

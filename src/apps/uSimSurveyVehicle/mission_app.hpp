@@ -9,9 +9,8 @@
 //   without one and without a mission file, the help is shown. The mission file, the run alias
 //   (argv[2] or --alias=) and the --moos_* switches are libmoos's parse_command_line's.
 // - run_main prints the chosen text (exit 0), or loads the mission's context (its folder and the
-//   LatOrigin / LongOrigin globals), builds the app and runs it on a TCP client
-//   (run_mission_app: moos::run_app plus libMOOS's --moos_tw_delay_factor) until SIGINT or
-//   SIGTERM (exit 0; 1 if the mission file cannot be read, the MOOSDB refuses the name, or
+//   LatOrigin / LongOrigin globals), builds the app and runs it with moos::run_app until SIGINT
+//   or SIGTERM (exit 0; 1 if the mission file cannot be read, the MOOSDB refuses the name, or
 //   start-up fails).
 // - MissionApp::publish posts every posting of an Outputs value in order (doubles as MOOS doubles)
 //   and hands events and warnings to the AppCast. A posting that cannot be sent because the
@@ -64,20 +63,6 @@ using AppFactory = std::function<std::unique_ptr<moos::MoosApp>(const MissionCon
 /// name, printed in the launch line.
 int run_main(int argc, char** argv, const std::string& app_name, const InfoTexts& texts,
              const AppFactory& make_app);
-
-/// libMOOS's pause after each packet sent, in ms per unit of time warp (wire spec 4.3 step 4):
-/// `--moos_tw_delay_factor=F` (a number >= 0), else libmoos's default. nullopt with `error`
-/// set when the value is not a number >= 0.
-std::optional<double> tw_delay_factor_ms(const moos::CommandLine& command_line,
-                                         std::string* error);
-
-/// moos::run_app, plus libMOOS's `--moos_tw_delay_factor` switch (moos::run_app does not read
-/// it yet). Why it matters: after each packet a libMOOS client pauses W x F ms (W the warp,
-/// F = 0.2 by default), 80 ms at W = 400, so a simulator's node reports reach the sensor in
-/// bursts of 32 simulated seconds and the sensor, which evaluates the latest pose once per
-/// iteration, skips over objects; with F = 0 every iteration's postings leave at once.
-int run_mission_app(moos::MoosApp& app, const moos::CommandLine& command_line, std::ostream& out,
-            std::ostream& err, bool out_is_terminal);
 
 // ---- text frames ---------------------------------------------------------------------------
 

@@ -24,16 +24,6 @@ TEST(MissionAppLaunch, FirstInformationSwitchDecides_Spec2) {
   EXPECT_EQ(decide_launch(cl({"m.moos", "-help"})), LaunchAction::kHelp);
 }
 
-TEST(MissionAppLaunch, TwDelayFactorSwitch_WireSpec4_3) {
-  std::string error;
-  EXPECT_DOUBLE_EQ(*tw_delay_factor_ms(cl({"m.moos"}), &error), 0.2);  // libMOOS's default
-  EXPECT_DOUBLE_EQ(*tw_delay_factor_ms(cl({"m.moos", "--moos_tw_delay_factor=0"}), &error), 0.0);
-  EXPECT_DOUBLE_EQ(*tw_delay_factor_ms(cl({"m.moos", "--moos_tw_delay_factor=1.5"}), &error), 1.5);
-  EXPECT_FALSE(tw_delay_factor_ms(cl({"m.moos", "--moos_tw_delay_factor=-1"}), &error));
-  EXPECT_NE(error.find("--moos_tw_delay_factor=-1"), std::string::npos);
-  EXPECT_FALSE(tw_delay_factor_ms(cl({"m.moos", "--moos_tw_delay_factor=fast"}), &error));
-}
-
 TEST(MissionAppText, ParameterLinesAlignAndCommentOutWhatHasNoValue_Practice5) {
   const std::vector<mission::ParamInfo> params = {
       {"speed", "1.5", "cruise speed"}, {"region", "", "survey area"}, {"vname", "", "name"}};
