@@ -1,6 +1,9 @@
 #!/usr/bin/env bash
 # HazardSensor build driver. Installs what is missing, builds, and runs the job you name.
 #
+#   ./build.sh demo [WARP] [--seed=N] [--moosdb=lite|real]
+#                       install dependencies, build the programs, run the Jake mission headless;
+#                       ends with the score table and the picture's path (missions/jake/launch.sh)
 #   ./build.sh test     install dependencies, build (warnings as errors), run every test
 #   ./build.sh build    install dependencies and build only
 #   ./build.sh deps     install dependencies only
@@ -24,6 +27,9 @@ DEBIAN_PACKAGES=(
   librsvg2-bin
 )
 PYPI_PACKAGES=(pymoos2==0.1.0)
+# What the demo mission runs (missions/jake/launch.sh finds them under $BUILD_DIR/src/apps).
+DEMO_TARGETS=(moosdb-lite uFldHazardSensor uFldHazardMetric pHazardMgr uSimSurveyVehicle pLogLite
+              moos-cli gen_hazards hazard_replay)
 
 say() { printf '\033[1m[build.sh]\033[0m %s\n' "$*" >&2; }
 
@@ -65,11 +71,21 @@ install_dependencies() {
   install_python_packages
 }
 
-configure_and_build() {
+configure() {
   say "configuring ($PRESET) in $BUILD_DIR"
   cmake --preset "$PRESET" -DHAZARD_PYTHON="$PYENV_DIR/bin/python" >/dev/null
+}
+
+configure_and_build() {
+  configure
   say "building with $JOBS jobs"
-  cmake --build --preset "$PRESET" -j "$JOBS"
+  cmake --build --preset "$PRESET" -j "$JOBS" "$@"
+}
+
+run_demo() {
+  install_debian_packages
+  configure_and_build --target "${DEMO_TARGETS[@]}"
+  exec "$HERE/missions/jake/launch.sh" --bin-dir="$BUILD_DIR/src/apps" "$@"
 }
 
 run_tests() {
@@ -78,9 +94,10 @@ run_tests() {
 }
 
 case "${1:-build}" in
+  demo)  shift; run_demo "$@" ;;
   deps)  install_dependencies ;;
   build) install_dependencies; configure_and_build ;;
   test)  install_dependencies; configure_and_build; run_tests ;;
-  -h|--help|help) sed -n '2,10p' "$0" ;;
-  *) say "unknown job '$1' (try: test, build, deps)"; exit 2 ;;
+  -h|--help|help) sed -n '2,11p' "$0" ;;
+  *) say "unknown job '$1' (try: demo, test, build, deps)"; exit 2 ;;
 esac
