@@ -19,6 +19,7 @@
 #include <variant>
 #include <vector>
 
+#include "hazard/geodesy.hpp"
 #include "hazard/hazard_field.hpp"
 #include "hazard/sensor_options.hpp"
 
@@ -49,6 +50,13 @@ struct EngineConfig {
   std::optional<double> max_turn_rate_dps;     ///< nullopt: gate off
   std::optional<double> max_vehicle_speed_mps; ///< nullopt: gate off
   bool ignore_resemblances;
+  bool ignore_aspect;   ///< extension: the aspect effect off (effects.hpp)
+  bool swath_sweep;     ///< extension: the swept swath between node reports (sensing_track.hpp)
+  int swath_substeps;   ///< extension: 0 = sample at iterations; N = N poses per report interval
+  GeodesyMode geodesy;  ///< how LAT/LON-only input is placed (geodesy.hpp)
+  /// The mission's LatOrigin/LongOrigin (file globals, not the block): set by
+  /// load_configuration when both are given, numbers and in range; nullopt otherwise.
+  std::optional<GeodeticOrigin> origin;
   bool seed_random;
   std::optional<std::uint64_t> random_seed;
   bool show_hazards;
@@ -75,6 +83,8 @@ enum class ParamKind {
   kShape,           ///< a marker shape word
   kShowDetections,  ///< number >= 0 or nolimit/unlimited
   kSeed,            ///< whole number in [0, 2^64)
+  kCount,           ///< whole number within `range`
+  kGeodesy,         ///< a geodesy mode word (geodesy.hpp)
   kHazardFile,      ///< path, repeatable
   kHazardLine,      ///< object spec, repeatable
   kSensorConfig,    ///< sensor option, repeatable
@@ -94,7 +104,8 @@ struct ValueRange {
 using ParamTarget =
     std::variant<std::monostate, double EngineConfig::*, bool EngineConfig::*,
                  std::optional<double> EngineConfig::*, std::string EngineConfig::*,
-                 DetectionCircles EngineConfig::*, std::optional<std::uint64_t> EngineConfig::*>;
+                 DetectionCircles EngineConfig::*, std::optional<std::uint64_t> EngineConfig::*,
+                 int EngineConfig::*, GeodesyMode EngineConfig::*>;
 
 struct ParameterSpec {
   std::string_view name;
@@ -130,13 +141,38 @@ struct EngineSetup {
   HazardField field;
   std::vector<std::string> config_warnings;
   std::vector<HazardFileStatus> hazard_files;
+  /// How LAT/LON-only positions are placed (the projection, or why there is none).
+  GeoPlacement placement;
+};
+
+/// The mission file's LatOrigin and LongOrigin globals, as the program read them
+/// (moos::MissionFile::global_double for the number; global for the text, to name a value that
+/// is not a number). All empty: the mission gives no origin.
+struct MissionOrigin {
+  std::optional<double> lat_deg;
+  std::optional<double> lon_deg;
+  std::optional<std::string> lat_text;  ///< present when the global is written at all
+  std::optional<std::string> lon_text;
 };
 
 /// Reads a hazard file by the path written in the configuration; nullopt if it cannot be read.
 using HazardFileReader = std::function<std::optional<std::string>(const std::string& path)>;
 
+/// The MissionOrigin of a mission file: any `mission` with global_double(key) and global(key)
+/// (moos::MissionFile), read by the program (libhazard reads no files).
+template <class Mission>
+MissionOrigin mission_origin(const Mission& mission) {
+  return MissionOrigin{mission.global_double("LatOrigin"), mission.global_double("LongOrigin"),
+                       mission.global("LatOrigin"), mission.global("LongOrigin")};
+}
+
 EngineSetup load_configuration(const std::vector<ConfigEntry>& entries,
                                const HazardFileReader& read);
+/// The same with the mission's origin: a usable origin (both given, numbers, latitude in
+/// [-90, 90], longitude in [-180, 360]) and `geodesy` not `off` place LAT/LON-only positions;
+/// an origin given but unusable is a configuration warning naming the global and its value.
+EngineSetup load_configuration(const std::vector<ConfigEntry>& entries,
+                               const HazardFileReader& read, const MissionOrigin& origin);
 
 /// Where the seed in use came from (rulings "Seeds").
 enum class SeedSource { kCommandLine, kRandomSeed, kOperatingSystem, kFixed };

@@ -4,18 +4,24 @@
 // Contract: choose_effects() looks at the configuration and the field and switches on only what
 // the scene needs; the engine computes, stores and allocates nothing for an effect that is off
 // (no heading history without the turn gate, no aspect arithmetic without aspect objects, no
-// visual strings without the show_* switches). active_names() lists what is on, in a fixed
-// order, for the report header.
+// track of poses without sweeping or sub-stepping, no projection without geodesy, no visual
+// strings without the show_* switches). active_names() lists what is on, in a fixed order, for
+// the report header. Every effect has a switch, so a scene that does not use an effect gives
+// byte-identical outputs with the switch either way (tests/hazard/effects_switch_test.cpp):
 //   speed_gate         max_vehicle_speed is not `off`                      (manual 9)
 //   turn_blackout      max_turn_rate is not `off`; keeps a 2 s heading history (manual 8)
 //   resemblance        some benign object has hr and ignore_resemblances is false (manual 6)
-//   aspect             some object has aspect, aspect_min and aspect_max (manual 7)
+//   aspect             some object has aspect, aspect_min and aspect_max and ignore_aspect is
+//                      false (manual 7; ignore_aspect is an extension)
+//   swept_swath        swath_sweep = true: the swath swept between node reports (an extension)
+//   swath_substeps     swath_substeps = N > 0 and no sweep: N poses per report interval
+//   geodesy            the mission gives a usable LatOrigin/LongOrigin and geodesy is not `off`:
+//                      LAT/LON-only node reports are placed (lat/lon hazard lines are placed at
+//                      load time, by the same projection)
 //   swath_visuals      show_swath                                           (manual 7.5)
 //   detection_visuals  show_detections is not 0 (detection and classification circles)
 //   hazard_markers     show_hazards                                         (manual 7.6)
-// Seams for a later issue (never on yet): swept_swath (an object counts as entering when the
-// swath passed over it between two node reports) and geodesy (LAT/LON node reports and lat=/lon=
-// hazard lines through GeographicLib around LatOrigin/LongOrigin).
+// Costs per effect are measured in docs/effects.md (bench/engine/effects_bench).
 
 #include <string_view>
 #include <vector>
@@ -33,8 +39,9 @@ struct Effects {
   bool swath_visuals = false;
   bool detection_visuals = false;
   bool hazard_markers = false;
-  bool swept_swath = false;  ///< seam, not implemented
-  bool geodesy = false;      ///< seam, not implemented
+  bool swept_swath = false;
+  bool swath_substeps = false;
+  bool geodesy = false;
 
   std::vector<std::string_view> active_names() const;
 };

@@ -9,6 +9,11 @@
 // step(now) runs three phases in order: post the options summary when due; sense (per active
 // vehicle in name order: automatic default setting, gates, swath, entry events, detection dice);
 // release classification answers (per vehicle in name order, rate-limited).
+// The pipeline is assembled at construction from the configuration and the field (Effects):
+// what a scene does not use is not computed, stored or allocated. Entry events are sampled at
+// each iteration's latest pose (the original), or along the track of node reports when
+// sub-stepping or sweeping (sensing_track.hpp). LAT/LON-only node reports are placed through
+// the setup's GeoPlacement (geodesy.hpp). Interval rules use time_rules.hpp.
 // Scale: a sensing vehicle queries the spatial grid for its swath's bounding box only; per-
 // (vehicle, object) state exists only for objects that vehicle has had in its swath.
 // Rejected alternative: evaluating every object per vehicle per iteration (the original, spec 17).
@@ -24,6 +29,7 @@
 #include "hazard/config.hpp"
 #include "hazard/dice.hpp"
 #include "hazard/effects.hpp"
+#include "hazard/geodesy.hpp"
 #include "hazard/messages/classify_request.hpp"
 #include "hazard/messages/config_request.hpp"
 #include "hazard/messages/node_report.hpp"
@@ -39,6 +45,9 @@ inline constexpr double kSensorActiveWindow_s = 600.0;
 inline constexpr double kDefaultPd = 0.9;
 /// Longest mail value handled; longer values are refused with a warning (bad-input guard).
 inline constexpr std::size_t kMaxMailValueBytes = 64 * 1024;
+/// Node reports kept between two iterations when sub-stepping or sweeping; beyond this the
+/// oldest is dropped (a guard against reports arriving thousands of times per iteration).
+inline constexpr std::size_t kMaxTrackPoses = 4096;
 
 /// A MOOS variable of the interface, with an example payload (for --interface and the docs).
 struct InterfaceVariable {
@@ -77,6 +86,8 @@ class Engine {
   const EngineConfig& config() const { return config_; }
   const HazardField& field() const { return field_; }
   const Effects& effects() const { return effects_; }
+  /// How LAT/LON-only node reports are placed (a projection only with the geodesy effect).
+  const GeoPlacement& placement() const { return placement_; }
   const SeedChoice& seed() const { return seed_; }
   const std::vector<HazardFileStatus>& hazard_files() const { return hazard_files_; }
   std::optional<double> start_time_s() const { return start_time_s_; }
@@ -119,9 +130,15 @@ class Engine {
   void post_options_summary_if_due(double now_s, Outputs& out);
   void sense(VehicleState& v, double now_s, Outputs& out);
   bool sensor_on(const VehicleState& v) const;
+  bool gates_pass(double speed_mps, const std::optional<HeadingHistory>& history) const;
   void post_swath(const VehicleState& v, const Swath& swath, bool on, Outputs& out) const;
   void update_entries(VehicleState& v, const Swath& swath, double now_s, Outputs& out);
-  void roll_detection(VehicleState& v, ObjectId id, double now_s, Outputs& out);
+  bool track_mode() const { return effects_.swept_swath || effects_.swath_substeps; }
+  void add_to_track(VehicleState& v, Outputs& out);
+  void sense_track(VehicleState& v, double now_s, Outputs& out);
+  static void collapse_track(VehicleState& v);
+  void roll_detection(VehicleState& v, ObjectId id, double heading_deg, double now_s,
+                      Outputs& out);
   void release_classifications(double now_s, Outputs& out);
 
   bool active(const VehicleState& v, double now_s) const;
@@ -135,6 +152,7 @@ class Engine {
   std::vector<std::string> setup_warnings_;
   std::vector<HazardFileStatus> hazard_files_;
   Effects effects_;
+  GeoPlacement placement_;
   SeedChoice seed_;
   Dice dice_;
 
@@ -143,7 +161,9 @@ class Engine {
   std::vector<VehicleId> by_name_;
   std::optional<double> start_time_s_;
   std::optional<double> last_summary_s_;
-  std::vector<ObjectId> scratch_inside_;  ///< reused by update_entries
+  std::vector<ObjectId> scratch_inside_;          ///< reused by update_entries and sense_track
+  std::vector<ObjectId> scratch_candidates_;      ///< reused by sense_track
+  std::vector<std::uint32_t> scratch_event_pieces_;  ///< reused by sense_track
   std::function<void(const Decision&)> observer_;
 };
 

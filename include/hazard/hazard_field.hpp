@@ -17,6 +17,7 @@
 
 #include <glm/vec2.hpp>
 
+#include "hazard/geodesy.hpp"
 #include "hazard/hazard_object.hpp"
 #include "hazard/spatial_grid.hpp"
 
@@ -54,9 +55,10 @@ class HazardField {
 };
 
 /// Loads one `hazard =` spec found at `file`:`line`. Appends "file:line: ..." warnings.
-/// Returns true if an object was added.
+/// Returns true if an object was added. `placement` places lat/lon-only lines (nullptr: none).
 bool load_hazard_spec(std::string_view spec, std::string_view file, int line, HazardField& field,
-                      std::vector<std::string>& warnings);
+                      std::vector<std::string>& warnings,
+                      const GeoPlacement* placement = nullptr);
 
 /// Counts of one hazard file's accepted objects.
 struct HazardFileCounts {
@@ -67,6 +69,7 @@ struct HazardFileCounts {
 
 /// Loads every `hazard =` line of a hazard file's text (see the file comment).
 HazardFileCounts load_hazard_file_text(std::string_view text, std::string_view file,
-                                       HazardField& field, std::vector<std::string>& warnings);
+                                       HazardField& field, std::vector<std::string>& warnings,
+                                       const GeoPlacement* placement = nullptr);
 
 }  // namespace hazard

@@ -7,7 +7,8 @@
 // sum of absolute heading steps |norm180(h_i - h_(i-1))| over the samples inside the window,
 // divided by the time from the oldest sample inside the window to the newest; 0 when that time
 // is 0 (one sample). It is anchored at the newest sample, not at "now" (frozen if reports stop),
-// and it wraps correctly across 0/360.
+// and it wraps correctly across 0/360 (norm180 of each step: 359.9 -> 0.1 is a 0.2 deg step).
+// "Within the window" allows for clock rounding (time_rules.hpp).
 
 #include <cstddef>
 #include <deque>

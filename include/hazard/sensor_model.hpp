@@ -4,7 +4,8 @@
 
 namespace hazard {
 
-/// ROC curve (manual 4.2): pfa = pd^exp. pd in [0, 1], exp >= 1 -> result in [0, 1].
+/// ROC curve (manual 4.2): pfa = pd^exp. pd in [0, 1], exp >= 1 -> result in [0, 1]. A result
+/// below the smallest normal double (2.2e-308) is exactly 0 (no subnormals, N5).
 double roc_false_alarm_probability(double pd, double exp);
 
 /// Resemblance on detection (manual 6.1): a benign object with resemblance hr in [0, 1] is

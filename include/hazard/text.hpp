@@ -57,7 +57,8 @@ std::vector<KeyValue> split_key_values(std::string_view text, char separator = '
 /// Splits on every `separator`, trimming each piece; keeps empty pieces.
 std::vector<std::string_view> split_trimmed(std::string_view text, char separator);
 
-/// Angle in [0, 360). Finite input required (guaranteed by parse_number).
+/// Angle in [0, 360) (never -0.0), exact for every finite input, in one fmod (no loop, N3).
+/// Finite input required (guaranteed by parse_number).
 double norm360(double angle_deg);
 /// Angle in (-180, 180].
 double norm180(double angle_deg);

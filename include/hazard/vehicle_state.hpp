@@ -21,6 +21,7 @@
 #include "hazard/classify_queue.hpp"
 #include "hazard/hazard_field.hpp"
 #include "hazard/heading_history.hpp"
+#include "hazard/sensing_track.hpp"
 #include "hazard/sensor_options.hpp"
 
 namespace hazard {
@@ -76,6 +77,14 @@ struct VehicleState {
   std::optional<HeadingHistory> heading_history;
   /// Objects inside the swath at the last sensor-on iteration, sorted.
   std::vector<ObjectId> inside;
+  /// Only with swath_sweep or swath_substeps (empty, never allocated, otherwise): the pose where
+  /// the last evaluation ended, then the node reports since (sensing_track.hpp).
+  std::vector<TrackPose> track;
+  /// Whether track[0] itself has been sensed (false before the first evaluation and after an
+  /// iteration at which the vehicle was inactive).
+  bool track_start_sensed = false;
+  /// More than kMaxTrackPoses reports arrived since the last evaluation (warned once).
+  bool track_overflowed = false;
 
   /// Sensor events so far per object (the pass number of the latest event).
   std::unordered_map<ObjectId, std::uint32_t> passes;

@@ -11,6 +11,10 @@ namespace hazard {
 
 namespace {
 
+// Upper bound of swath_substeps: 100 poses per report interval is far beyond any accuracy gain
+// (docs/accuracy.md: 4 already closes 10 m gaps) and bounds the work and the pieces held per
+// evaluation (100 x kMaxTrackPoses at worst).
+constexpr double kMaxSwathSubsteps = 100.0;
 
 ValueRange at_least(double lo) { return ValueRange{lo, true, std::nullopt, true, std::nullopt}; }
 ValueRange above(double lo) { return ValueRange{lo, false, std::nullopt, true, std::nullopt}; }
@@ -52,6 +56,21 @@ const std::vector<ParameterSpec>& table() {
       {"ignore_resemblances", "", K::kBool, "", "false", {},
        "Ignore the objects' hazard resemblance factors (hr)", "manual 6.4",
        &C::ignore_resemblances},
+      {"ignore_aspect", "", K::kBool, "", "false", {},
+       "Ignore the objects' aspect fields: no aspect degradation (the aspect axis is still drawn)",
+       "extension, manual 7", &C::ignore_aspect},
+      {"swath_sweep", "", K::kBool, "", "false", {},
+       "Count an object the swath passed over between two node reports, not only at sampled "
+       "poses (docs/accuracy.md)",
+       "extension", &C::swath_sweep},
+      {"swath_substeps", "", K::kCount, "", "0", between(0.0, kMaxSwathSubsteps),
+       "0: test the swath at the latest pose each iteration (the original); N: at every node "
+       "report and N - 1 poses between two",
+       "extension", &C::swath_substeps},
+      {"geodesy", "", K::kGeodesy, "", "enu", {},
+       "How LAT/LON-only node reports and lat/lon hazard lines are placed around the mission's "
+       "LatOrigin/LongOrigin (docs/accuracy.md)",
+       "extension", &C::geodesy},
       {"seed_random", "", K::kBool, "", "true", {},
        "true: dice seeded by the operating system; false: seed 1 (reproducible runs)", "D16",
        &C::seed_random},
@@ -219,6 +238,19 @@ Applied apply_value(EngineConfig& config, const ParameterSpec& spec, std::string
       config.*std::get<std::optional<std::uint64_t> EngineConfig::*>(spec.target) = *seed;
       return {};
     }
+    case ParamKind::kCount: {
+      double v = 0.0;
+      Applied a = apply_number(v, spec, value);
+      if (a.error.empty() && v != std::floor(v)) a.error = "not a whole number";
+      if (a.error.empty()) config.*std::get<int EngineConfig::*>(spec.target) = static_cast<int>(v);
+      return a;
+    }
+    case ParamKind::kGeodesy: {
+      const auto mode = parse_geodesy_mode(value);
+      if (!mode) return {"not one of tangent, enu, azimuthal, utm, off", {}};
+      config.*std::get<GeodesyMode EngineConfig::*>(spec.target) = *mode;
+      return {};
+    }
     case ParamKind::kNoEffect:
       return {{}, "has no effect (accepted for compatibility with the original)"};
     case ParamKind::kHazardFile:
@@ -235,9 +267,42 @@ std::string parameter_value(const ConfigEntry& e) {
   return "parameter '" + e.key + "' value '" + excerpt(e.value) + "'";
 }
 
+// The value the block gives `geodesy` (its last valid line, D36), read before the other lines
+// so that hazard lines anywhere in the block are placed with it.
+GeodesyMode geodesy_in_block(const std::vector<ConfigEntry>& entries) {
+  GeodesyMode mode = EngineConfig().geodesy;
+  for (const ConfigEntry& e : entries) {
+    const ParameterSpec* spec = find_parameter(e.key);
+    if (!spec || spec->kind != ParamKind::kGeodesy) continue;
+    if (const auto m = parse_geodesy_mode(e.value)) mode = *m;
+  }
+  return mode;
+}
+
+// One origin global checked: a number in range, or the reason it is not usable.
+std::optional<double> origin_value(const char* name, const std::optional<double>& value,
+                                   const std::optional<std::string>& text,
+                                   bool (*valid)(double), const char* range,
+                                   std::string& problem) {
+  if (!text && !value) return std::nullopt;
+  const std::string written = text ? *text : fmt(*value);
+  if (!value) {
+    problem = std::string(name) + " value '" + excerpt(written) + "' is not a number";
+  } else if (!valid(*value)) {
+    problem = std::string(name) + " value '" + excerpt(written) + "' is outside " + range;
+  } else {
+    return value;
+  }
+  return std::nullopt;
+}
+
 class Loader {
  public:
-  explicit Loader(const HazardFileReader& read) : read_(read) {}
+  Loader(const HazardFileReader& read, const MissionOrigin& origin, GeodesyMode mode)
+      : read_(read) {
+    setup_.config.geodesy = mode;
+    place_origin(origin);
+  }
 
   void load(const ConfigEntry& e) {
     const ParameterSpec* spec = find_parameter(e.key);
@@ -253,7 +318,8 @@ class Loader {
     switch (spec->kind) {
       case ParamKind::kHazardFile: return load_hazard_file(e);
       case ParamKind::kHazardLine:
-        load_hazard_spec(e.value, e.file, e.line, setup_.field, setup_.config_warnings);
+        load_hazard_spec(e.value, e.file, e.line, setup_.field, setup_.config_warnings,
+                         &setup_.placement);
         return;
       case ParamKind::kSensorConfig: return load_sensor_config(e);
       default: return load_scalar(*spec, e);
@@ -269,11 +335,42 @@ class Loader {
       warn("no sensor_config: vehicles can never get a sensor setting, so nothing can be "
            "detected");
     }
+    if (setup_.config.swath_sweep && setup_.config.swath_substeps > 0) {
+      warn("swath_substeps = " + std::to_string(setup_.config.swath_substeps) +
+           " is ignored: swath_sweep = true sweeps the swath exactly");
+    }
     return std::move(setup_);
   }
 
  private:
   void warn(std::string text) { setup_.config_warnings.push_back(std::move(text)); }
+
+  // The origin and the placement built from it (geodesy.hpp); an unusable origin is a warning.
+  void place_origin(const MissionOrigin& o) {
+    std::string problem;
+    const auto lat = origin_value("LatOrigin", o.lat_deg, o.lat_text, valid_latitude,
+                                  "[-90, 90]", problem);
+    const auto lon = origin_value("LongOrigin", o.lon_deg, o.lon_text, valid_longitude,
+                                  "[-180, 360]", problem);
+    const bool lat_given = o.lat_text || o.lat_deg, lon_given = o.lon_text || o.lon_deg;
+    if (problem.empty() && lat_given != lon_given) {
+      problem = lat_given ? "LatOrigin is given without LongOrigin"
+                          : "LongOrigin is given without LatOrigin";
+    }
+    if (!problem.empty()) {
+      warn("mission file: " + problem +
+           "; LAT/LON-only node reports and lat/lon hazard lines cannot be placed");
+      setup_.placement.unavailable = "the mission's " + problem;
+      return;
+    }
+    if (!lat || !lon) return;  // no origin: the placement's default reason
+    setup_.config.origin = GeodeticOrigin{*lat, *lon};
+    if (setup_.config.geodesy == GeodesyMode::kOff) {
+      setup_.placement.unavailable = "geodesy = off";
+      return;
+    }
+    setup_.placement.projection.emplace(*setup_.config.origin, setup_.config.geodesy);
+  }
 
   void load_hazard_file(const ConfigEntry& e) {
     HazardFileStatus status;
@@ -283,8 +380,8 @@ class Loader {
       warn(place(e) + "cannot read hazard file '" + status.path + "'");
     } else {
       status.read_ok = true;
-      status.counts =
-          load_hazard_file_text(*text, status.path, setup_.field, setup_.config_warnings);
+      status.counts = load_hazard_file_text(*text, status.path, setup_.field,
+                                            setup_.config_warnings, &setup_.placement);
     }
     setup_.hazard_files.push_back(std::move(status));
   }
@@ -368,6 +465,8 @@ std::string allowed_values_text(const ParameterSpec& p) {
     case ParamKind::kShowDetections:
       return "number in " + interval_text(p.range) + ", or `nolimit`";
     case ParamKind::kSeed: return "whole number in [0, 2^64)";
+    case ParamKind::kCount: return "whole number in " + interval_text(p.range);
+    case ParamKind::kGeodesy: return "`tangent`, `enu`, `azimuthal`, `utm` or `off`";
     case ParamKind::kHazardFile: return "path";
     case ParamKind::kHazardLine: return "object spec";
     case ParamKind::kSensorConfig: return "option spec";
@@ -397,7 +496,12 @@ std::string parameter_table_markdown() {
 
 EngineSetup load_configuration(const std::vector<ConfigEntry>& entries,
                                const HazardFileReader& read) {
-  Loader loader(read);
+  return load_configuration(entries, read, MissionOrigin{});
+}
+
+EngineSetup load_configuration(const std::vector<ConfigEntry>& entries,
+                               const HazardFileReader& read, const MissionOrigin& origin) {
+  Loader loader(read, origin, geodesy_in_block(entries));
   for (const ConfigEntry& e : entries) loader.load(e);
   return loader.finish();
 }

@@ -15,6 +15,7 @@
 #include "hazard/messages/view_seglist.hpp"
 #include "hazard/sensor_model.hpp"
 #include "hazard/text.hpp"
+#include "hazard/time_rules.hpp"
 
 namespace hazard {
 
@@ -81,6 +82,7 @@ Engine::Engine(EngineSetup setup, SeedChoice seed)
       setup_warnings_(std::move(setup.config_warnings)),
       hazard_files_(std::move(setup.hazard_files)),
       effects_(choose_effects(config_, field_)),
+      placement_(std::move(setup.placement)),
       seed_(seed),
       dice_(seed.seed) {
   field_.build_index();
@@ -116,9 +118,13 @@ const std::vector<InterfaceVariable>& Engine::publications() {
        "the same, for vehicle V"},
       {"UHZ_OPTIONS_SUMMARY", "width=25,exp=4,pclass=0.80:width=50,exp=2,pclass=0.60",
        "the configured sensor options"},
-      {"VIEW_POLYGON", "pts={25,2.5:25,-2.5:-25,-2.5:-25,2.5},label=sensor_swath_archie,...",
+      {"VIEW_POLYGON",
+       "pts={25,2.5:25,-2.5:-25,-2.5:-25,2.5},label=sensor_swath_archie,msg=0.90,"
+       "edge_color=green,fill_color=white,vertex_size=0,edge_size=0,fill_transparency=0.2",
        "a vehicle's swath"},
-      {"VIEW_CIRCLE", "x=51,y=11.3,radius=10,vertices=12,edge_color=white,...",
+      {"VIEW_CIRCLE",
+       "x=51,y=11.3,radius=10,vertices=12,edge_color=white,fill_color=white,time=12.5,"
+       "vertex_size=0,edge_size=1,fill_transparency=0.3",
        "detection and classification cues"},
       {"VIEW_MARKER", "x=51,y=11.3,width=8,primary_color=green,type=triangle,label=12",
        "an object of the field"},
@@ -191,7 +197,8 @@ Outputs Engine::on_mail(std::string_view variable, std::string_view value, doubl
     }
   };
   if (variable == kNodeReport) {
-    route(parse_node_report, [&](const NodeReport& r) { handle_node_report(r, now_s, out); });
+    route([&](std::string_view text) { return parse_node_report(text, &placement_); },
+          [&](const NodeReport& r) { handle_node_report(r, now_s, out); });
   } else if (variable == kSensorRequest) {
     route(parse_sensor_request,
           [&](const SensorRequest& r) { handle_sensor_request(r.vname, now_s); });
@@ -209,12 +216,12 @@ Outputs Engine::on_mail(std::string_view variable, std::string_view value, doubl
   return out;
 }
 
-// Geodesy seam (a later issue): a LAT/LON-only report is converted to x/y around
-// LatOrigin/LongOrigin in the parser's place before it gets here; the engine only sees x/y.
+// A LAT/LON-only report was placed by the parser (geodesy.hpp); the engine only sees x/y.
 void Engine::handle_node_report(const NodeReport& r, double now_s, Outputs& out) {
   VehicleState& v = vehicle_named(r.name);
   v.pose = Pose{{r.x_m, r.y_m}, r.heading_deg, r.speed_mps};
   if (v.heading_history) v.heading_history->add(r.heading_deg, now_s);
+  if (track_mode()) add_to_track(v, out);
   if (v.warned_no_node_report) {
     out.retracted_run_warnings.push_back(no_node_report_warning(v.name));
     v.warned_no_node_report = false;
@@ -261,7 +268,8 @@ void Engine::post_object_visuals(Outputs& out) const {
 // Settings
 
 bool Engine::active(const VehicleState& v, double now_s) const {
-  return v.last_sensor_request_s && now_s - *v.last_sensor_request_s < kSensorActiveWindow_s;
+  return v.last_sensor_request_s &&
+         !elapsed_at_least(now_s, *v.last_sensor_request_s, kSensorActiveWindow_s);
 }
 
 bool Engine::option_full(OptionIndex option, VehicleId asking, double now_s) const {
@@ -369,7 +377,7 @@ void Engine::handle_config_request(const ConfigRequest& r, double now_s, Outputs
     set_pd(r.pd.value_or(v.setting->pd));  // "Unchanged width": a pd-only update
     return post_ack(v, out);
   } else if (v.width_window_start_s &&
-             now_s - *v.width_window_start_s < config_.min_reset_interval_s) {
+             !elapsed_at_least(now_s, *v.width_window_start_s, config_.min_reset_interval_s)) {
     out.events.push_back("Sensor reset denied (too soon) for vehicle: " + v.name);
     set_pd(r.pd.value_or(v.setting->pd));  // D11: the width stays, the pd applies
     return post_ack(v, out);
@@ -461,7 +469,7 @@ void Engine::release_classifications(double now_s, Outputs& out) {
     VehicleState& v = vehicles_[id];
     if (v.queue.empty()) continue;
     const auto last = latest(v.last_release_s, v.last_top_s);
-    if (last && now_s - *last < config_.min_classify_interval_s) continue;
+    if (last && !elapsed_at_least(now_s, *last, config_.min_classify_interval_s)) continue;
     const PendingAnswer answer = *v.queue.pop();
     v.last_release_s = now_s;
     ++v.counters.answers;
@@ -496,13 +504,19 @@ Outputs Engine::step(double now_s) {
 }
 
 void Engine::post_options_summary_if_due(double now_s, Outputs& out) {
-  if (last_summary_s_ && now_s - *last_summary_s_ < config_.options_summary_interval_s) return;
+  if (last_summary_s_ &&
+      !elapsed_at_least(now_s, *last_summary_s_, config_.options_summary_interval_s)) {
+    return;
+  }
   last_summary_s_ = now_s;
   out.post("UHZ_OPTIONS_SUMMARY", format_options_summary(config_.options.summary()));
 }
 
 void Engine::sense(VehicleState& v, double now_s, Outputs& out) {
-  if (!active(v, now_s)) return;
+  if (!active(v, now_s)) {
+    if (track_mode()) collapse_track(v);  // inactive: the track's segments are not sensed
+    return;
+  }
   if (!v.pose) {
     if (!v.warned_no_node_report) out.run_warnings.push_back(no_node_report_warning(v.name));
     v.warned_no_node_report = true;
@@ -515,6 +529,7 @@ void Engine::sense(VehicleState& v, double now_s, Outputs& out) {
                                    ": no sensor_config options exist");
       }
       v.warned_no_setting = true;
+      if (track_mode()) collapse_track(v);
       return;
     }
     apply_default_setting(v, now_s, out);
@@ -523,13 +538,18 @@ void Engine::sense(VehicleState& v, double now_s, Outputs& out) {
   const Swath swath(v.pose->position_m, v.pose->heading_deg, v.setting->width_m,
                     config_.swath_length_m);
   if (effects_.swath_visuals) post_swath(v, swath, on, out);
+  if (track_mode()) return sense_track(v, now_s, out);  // gated per report (sensing_track.hpp)
   // During a blackout nothing changes, not even inside/outside (rulings "Pass").
   if (on) update_entries(v, swath, now_s, out);
 }
 
 bool Engine::sensor_on(const VehicleState& v) const {
-  if (effects_.speed_gate && v.pose->speed_mps > *config_.max_vehicle_speed_mps) return false;
-  if (effects_.turn_blackout && v.heading_history->turn_rate_dps() > *config_.max_turn_rate_dps) {
+  return gates_pass(v.pose->speed_mps, v.heading_history);
+}
+
+bool Engine::gates_pass(double speed_mps, const std::optional<HeadingHistory>& history) const {
+  if (effects_.speed_gate && speed_mps > *config_.max_vehicle_speed_mps) return false;
+  if (effects_.turn_blackout && history->turn_rate_dps() > *config_.max_turn_rate_dps) {
     return false;
   }
   return true;
@@ -557,9 +577,8 @@ void Engine::post_swath(const VehicleState& v, const Swath& swath, bool on, Outp
   out.post("VIEW_POLYGON", format_view_polygon(p));
 }
 
-// Swept-swath seam (a later issue): with that effect on, the candidates also include the objects
-// the swath passed over since the previous pose (the area between two Swaths); the diff below
-// stays as it is.
+// Sampling (the default, spec 8.5): the objects inside the swath at the latest pose, against the
+// objects inside at the last sensor-on iteration.
 void Engine::update_entries(VehicleState& v, const Swath& swath, double now_s, Outputs& out) {
   scratch_inside_.clear();
   field_.grid().for_each_in_box(swath.bounds(), [&](ObjectId id, glm::dvec2 position) {
@@ -571,7 +590,72 @@ void Engine::update_entries(VehicleState& v, const Swath& swath, double now_s, O
   std::set_difference(scratch_inside_.begin(), scratch_inside_.end(), v.inside.begin(),
                       v.inside.end(), std::back_inserter(entering));
   v.inside.swap(scratch_inside_);
-  for (ObjectId id : entering) roll_detection(v, id, now_s, out);
+  for (ObjectId id : entering) roll_detection(v, id, v.pose->heading_deg, now_s, out);
+}
+
+// Each node report joins the track with the gates as they stand after it (sensing_track.hpp).
+void Engine::add_to_track(VehicleState& v, Outputs& out) {
+  if (v.track.size() >= kMaxTrackPoses) {
+    if (!v.track_overflowed) {
+      out.run_warnings.push_back(v.name + ": more than " + std::to_string(kMaxTrackPoses) +
+                                 " node reports between two iterations; the oldest are dropped");
+    }
+    v.track_overflowed = true;
+    v.track.erase(v.track.begin());
+  }
+  v.track.push_back(TrackPose{v.pose->position_m, v.pose->heading_deg,
+                              gates_pass(v.pose->speed_mps, v.heading_history)});
+}
+
+// Keeps only the latest report as the start of the next track; its own state is sensed again
+// at the next evaluation (as the sampled mode does when a vehicle becomes active again).
+void Engine::collapse_track(VehicleState& v) {
+  if (v.track.size() > 1) v.track.erase(v.track.begin(), v.track.end() - 1);
+  v.track_start_sensed = false;
+  v.track_overflowed = false;
+}
+
+// Sub-stepping and sweeping: the segments since the last evaluation, then the events in piece
+// order (sensing_track.hpp). Candidates: the objects near any piece, and those inside before.
+void Engine::sense_track(VehicleState& v, double now_s, Outputs& out) {
+  if (v.track.empty()) return;  // every node report joins the track; none yet: nothing to do
+  const TrackMode mode = effects_.swept_swath ? TrackMode::kSweep : TrackMode::kSubsteps;
+  const std::vector<TrackPiece> pieces =
+      track_pieces(v.track, !v.track_start_sensed, mode, config_.swath_substeps,
+                   v.setting->width_m, config_.swath_length_m);
+  v.track_start_sensed = true;
+  v.track_overflowed = false;
+  v.track.erase(v.track.begin(), v.track.end() - 1);
+  if (pieces.empty()) return;  // no sensed piece: nothing changes
+
+  Box box = pieces.front().box;
+  for (const TrackPiece& p : pieces) {
+    box = Box{std::min(box.min_x, p.box.min_x), std::min(box.min_y, p.box.min_y),
+              std::max(box.max_x, p.box.max_x), std::max(box.max_y, p.box.max_y)};
+  }
+  scratch_candidates_.assign(v.inside.begin(), v.inside.end());
+  field_.grid().for_each_in_box(box, [&](ObjectId id, glm::dvec2) {
+    scratch_candidates_.push_back(id);
+  });
+  std::sort(scratch_candidates_.begin(), scratch_candidates_.end());
+  scratch_candidates_.erase(std::unique(scratch_candidates_.begin(), scratch_candidates_.end()),
+                            scratch_candidates_.end());
+
+  std::vector<std::pair<std::uint32_t, ObjectId>> events;  // (piece, object)
+  scratch_inside_.clear();
+  for (ObjectId id : scratch_candidates_) {
+    const bool was_inside = std::binary_search(v.inside.begin(), v.inside.end(), id);
+    scratch_event_pieces_.clear();
+    if (walk_pieces(pieces, field_.position(id), was_inside, scratch_event_pieces_)) {
+      scratch_inside_.push_back(id);
+    }
+    for (std::uint32_t piece : scratch_event_pieces_) events.emplace_back(piece, id);
+  }
+  v.inside.swap(scratch_inside_);
+  std::sort(events.begin(), events.end());
+  for (const auto& [piece, id] : events) {
+    roll_detection(v, id, pieces[piece].heading_deg, now_s, out);
+  }
 }
 
 double Engine::degradation(const HazardObject& o, double heading_deg) const {
@@ -579,10 +663,10 @@ double Engine::degradation(const HazardObject& o, double heading_deg) const {
                             *o.aspect_max_deg);
 }
 
-void Engine::roll_detection(VehicleState& v, ObjectId id, double now_s, Outputs& out) {
+void Engine::roll_detection(VehicleState& v, ObjectId id, double heading_deg, double now_s,
+                            Outputs& out) {
   const HazardObject& o = field_.object(id);
   const SensorSetting& s = *v.setting;
-  const double heading_deg = v.pose->heading_deg;
   const std::uint32_t pass = ++v.passes[id];
   ++(o.is_hazard() ? v.counters.hazard_chances : v.counters.benign_chances);
 
@@ -635,6 +719,8 @@ std::vector<std::string> Engine::invariant_violations() const {
   for (const VehicleState& v : vehicles_) {
     const std::string who = v.name + ": ";
     check(v.heading_history.has_value() == effects_.turn_blackout, who + "heading history");
+    check(v.track.empty() || track_mode(), who + "a track without sweeping or sub-stepping");
+    check(v.track.size() <= kMaxTrackPoses, who + "track longer than its bound");
     for (std::size_t i = 0; i < v.inside.size(); ++i) {
       check(v.inside[i] < field_.size(), who + "inside id out of range");
       check(i == 0 || v.inside[i - 1] < v.inside[i], who + "inside list not sorted");

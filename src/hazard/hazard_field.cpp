@@ -43,8 +43,8 @@ std::optional<ObjectId> HazardField::find(std::string_view label) const {
 }
 
 bool load_hazard_spec(std::string_view spec, std::string_view file, int line, HazardField& field,
-                      std::vector<std::string>& warnings) {
-  HazardLineParse parsed = parse_hazard_line(spec);
+                      std::vector<std::string>& warnings, const GeoPlacement* placement) {
+  HazardLineParse parsed = parse_hazard_line(spec, placement);
   for (const std::string& w : parsed.warnings) warnings.push_back(place(file, line) + w);
   if (!parsed.object) {
     warnings.push_back(place(file, line) + parsed.error + "; line rejected");
@@ -60,7 +60,8 @@ bool load_hazard_spec(std::string_view spec, std::string_view file, int line, Ha
 }
 
 HazardFileCounts load_hazard_file_text(std::string_view text, std::string_view file,
-                                       HazardField& field, std::vector<std::string>& warnings) {
+                                       HazardField& field, std::vector<std::string>& warnings,
+                                       const GeoPlacement* placement) {
   HazardFileCounts counts;
   int line_number = 0;
   std::size_t start = 0;
@@ -76,7 +77,7 @@ HazardFileCounts load_hazard_file_text(std::string_view text, std::string_view f
     const std::string_view key = trim(line.substr(0, eq));
     if (eq != std::string_view::npos && iequals(key, "hazard")) {
       const std::size_t before = field.size();
-      if (load_hazard_spec(line.substr(eq + 1), file, line_number, field, warnings)) {
+      if (load_hazard_spec(line.substr(eq + 1), file, line_number, field, warnings, placement)) {
         (field.object(static_cast<ObjectId>(before)).is_hazard() ? counts.hazards
                                                                  : counts.benign) += 1;
       } else {

@@ -3,14 +3,17 @@
 #include <cmath>
 
 #include "hazard/text.hpp"
+#include "hazard/time_rules.hpp"
 
 namespace hazard {
 
 void HeadingHistory::add(double heading_deg, double time_s) {
   if (!samples_.empty() && !(time_s > samples_.back().time_s)) return;
   samples_.push_back({heading_deg, time_s});
-  // Inside the window means newest - t < window (strict, spec 8.2).
-  while (samples_.size() > kMaxSamples || time_s - samples_.front().time_s >= kTurnWindow_s) {
+  // Inside the window means newest - t < window (strict, spec 8.2), allowing for clock rounding
+  // (time_rules.hpp), so the window holds the same number of samples all day at epoch times.
+  while (samples_.size() > kMaxSamples ||
+         elapsed_at_least(time_s, samples_.front().time_s, kTurnWindow_s)) {
     samples_.pop_front();
   }
 }

@@ -17,18 +17,55 @@ SinCos sin_cos_deg(double angle_deg) {
   return {std::sin(a * kRadPerDeg), std::cos(a * kRadPerDeg)};
 }
 
+namespace {
+
+// The inclusive rule's rounding allowance, relative to the size of the numbers involved: 2^-50,
+// four units in the last place (swath.hpp).
+constexpr double kEdgeRounding = 1.0 / 1125899906842624.0;
+
+// The t in [0, 1] for which |q - t e| <= h, intersected into [lo, hi] (one slab of the swept
+// test). e == 0: all t or none.
+void clip_slab(double q, double e, double h, double& lo, double& hi) {
+  if (e == 0.0) {
+    if (std::fabs(q) > h) hi = -1.0;  // empty
+    return;
+  }
+  const double t1 = (q - h) / e, t2 = (q + h) / e;
+  lo = std::max(lo, std::min(t1, t2));
+  hi = std::min(hi, std::max(t1, t2));
+}
+
+}  // namespace
+
 Swath::Swath(glm::dvec2 center_m, double heading_deg, double half_width_m, double length_m)
-    : center_(center_m), half_width_m_(half_width_m), half_length_m_(length_m / 2.0) {
+    : center_(center_m),
+      half_width_m_(half_width_m),
+      half_length_m_(length_m / 2.0),
+      tolerance_m_(kEdgeRounding * (std::fabs(center_m.x) + std::fabs(center_m.y) +
+                                    half_width_m + length_m / 2.0)) {
   const SinCos sc = sin_cos_deg(heading_deg);
   forward_ = {sc.sin, sc.cos};     // heading 0 -> +y, 90 -> +x
   starboard_ = {sc.cos, -sc.sin};  // heading 0 -> +x, 90 -> -y
 }
 
 bool Swath::contains(glm::dvec2 point_m) const {
-  const glm::dvec2 d = point_m - center_;
+  const glm::dvec2 d = point_m - center_;  // exact for nearby points, whatever their size
   const double along = d.x * forward_.x + d.y * forward_.y;
   const double across = d.x * starboard_.x + d.y * starboard_.y;
-  return std::fabs(along) <= half_length_m_ && std::fabs(across) <= half_width_m_;
+  return std::fabs(along) <= half_length_m_ + tolerance_m_ &&
+         std::fabs(across) <= half_width_m_ + tolerance_m_;
+}
+
+bool Swath::swept_contains(glm::dvec2 displacement_m, glm::dvec2 point_m) const {
+  const glm::dvec2 d = point_m - center_;
+  const double q_along = d.x * forward_.x + d.y * forward_.y;
+  const double q_across = d.x * starboard_.x + d.y * starboard_.y;
+  const double e_along = displacement_m.x * forward_.x + displacement_m.y * forward_.y;
+  const double e_across = displacement_m.x * starboard_.x + displacement_m.y * starboard_.y;
+  double lo = 0.0, hi = 1.0;
+  clip_slab(q_along, e_along, half_length_m_ + tolerance_m_, lo, hi);
+  clip_slab(q_across, e_across, half_width_m_ + tolerance_m_, lo, hi);
+  return lo <= hi;
 }
 
 std::array<glm::dvec2, 4> Swath::corners() const {
@@ -57,6 +94,14 @@ Box Swath::bounds() const {
   b.max_x += margin;
   b.max_y += margin;
   return b;
+}
+
+Box Swath::swept_bounds(glm::dvec2 displacement_m) const {
+  Box b = bounds();
+  const Box end{b.min_x + displacement_m.x, b.min_y + displacement_m.y,
+                b.max_x + displacement_m.x, b.max_y + displacement_m.y};
+  return Box{std::min(b.min_x, end.min_x), std::min(b.min_y, end.min_y),
+             std::max(b.max_x, end.max_x), std::max(b.max_y, end.max_y)};
 }
 
 }  // namespace hazard

@@ -161,11 +161,13 @@ std::vector<std::string_view> split_trimmed(std::string_view text, char separato
   }
 }
 
+// fmod is exact (the remainder of two doubles is representable), so any finite heading, however
+// large (1e15, 1e300), normalises in one step without a loop (N3).
 double norm360(double angle_deg) {
   double r = std::fmod(angle_deg, 360.0);
   if (r < 0) r += 360.0;
   if (r >= 360.0) r = 0.0;  // -1e-17 + 360 rounds to 360
-  return r;
+  return r + 0.0;           // -720 gives fmod = -0.0; adding +0.0 makes it +0.0
 }
 
 double norm180(double angle_deg) {

@@ -89,7 +89,8 @@ TEST(EngineMail, LatLonOnlyNodeReportIsAWarningOnly_T9) {
   EXPECT_TRUE(bad.postings.empty());  // no UHZ_DEBUG (rulings "No debug postings")
   ASSERT_EQ(bad.run_warnings.size(), 1u);
   EXPECT_EQ(bad.run_warnings[0],
-            "NODE_REPORT: LAT/LON without X/Y is not supported (no geodesy yet); ignored: "
+            "NODE_REPORT: LAT/LON without X/Y cannot be placed (the mission file gives no "
+            "LatOrigin and LongOrigin); ignored: "
             "'NAME=archie,LAT=43.8,LON=-70.3,SPD=1.5,HDG=90'");
   EXPECT_FALSE(d.engine.find_vehicle("archie"));
   const Outputs good =

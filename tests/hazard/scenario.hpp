@@ -131,6 +131,14 @@ class Driver {
   Outputs sensor_on(const std::string& name) {
     return mail("UHZ_SENSOR_REQUEST", "vname=" + name);
   }
+  /// Gives `name` the width and pd written (as text), switches its sensor on and senses once
+  /// at the origin, heading north.
+  void sense_at_origin(const std::string& name, const std::string& width, const std::string& pd) {
+    mail("UHZ_CONFIG_REQUEST", "vname=" + name + ",width=" + width + ",pd=" + pd);
+    sensor_on(name);
+    pose(name, 0, 0);
+    tick();
+  }
 
   const VehicleState& vehicle(std::string_view name) const {
     return engine.vehicle(*engine.find_vehicle(name));

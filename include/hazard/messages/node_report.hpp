@@ -5,14 +5,18 @@
 //
 // Keys are case-insensitive; commas inside {...} do not split. NAME, X, Y, SPD (or SPEED) and
 // HDG (or HEADING) are required and must be finite numbers; the heading is normalised to
-// [0, 360). LAT, LON and TIME are kept when they are numbers; other keys are ignored (node
-// reports carry many). A LAT/LON-only report is rejected (geodesy seam: a later issue converts
-// it around LatOrigin/LongOrigin).
+// [0, 360) exactly, however large (1e15 -> 280, N3). LAT, LON and TIME are kept when they are
+// numbers; other keys are ignored (node reports carry many).
+// Position: X and Y when given (LAT/LON are then only kept, as in the original). A report with
+// LAT and LON but no X/Y is placed through a GeoPlacement (geodesy.hpp: the mission's
+// LatOrigin/LongOrigin and the `geodesy` mode), LAT in [-90, 90] and LON in [-180, 360]; without
+// a projection it is rejected with the placement's reason (the original rejected it, T9).
 
 #include <optional>
 #include <string>
 #include <string_view>
 
+#include "hazard/geodesy.hpp"
 #include "hazard/messages/parsed.hpp"
 
 namespace hazard {
@@ -27,9 +31,14 @@ struct NodeReport {
   std::optional<double> lon_deg;
   std::optional<double> time_s;     ///< the report's own time stamp (unused by the sensor)
   std::optional<std::string> type;  ///< platform type (unused by the sensor)
+  /// x_m/y_m were placed from LAT/LON (geodesy), not read from X/Y.
+  bool placed_from_lat_lon = false;
 };
 
+/// Without geodesy: a LAT/LON-only report is rejected.
 Parsed<NodeReport> parse_node_report(std::string_view text);
+/// With `placement` (nullptr: none) for LAT/LON-only reports.
+Parsed<NodeReport> parse_node_report(std::string_view text, const GeoPlacement* placement);
 /// NAME=..,X=FMT(x,2),Y=FMT(y,2),SPD=FMT(s,2),HDG=FMT(h,2)
 ///   [,LAT=..,LON=..][,TIME=FMT(t,3)][,TYPE=..]
 std::string format_node_report(const NodeReport& report);

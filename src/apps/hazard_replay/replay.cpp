@@ -141,9 +141,11 @@ int run(const Options& options, std::ostream& out, std::ostream& err) {
   }
 
   // Hazard files are named relative to the mission file.
+  // LatOrigin/LongOrigin place LAT/LON-only node reports and lat/lon hazard lines (geodesy).
   hazard::EngineSetup setup =
       hazard::load_configuration(app_support::to_config_entries(block->lines),
-                                 app_support::mission_relative_reader(mission->directory()));
+                                 app_support::mission_relative_reader(mission->directory()),
+                                 hazard::mission_origin(*mission));
   const double tick_hz = setup.config.app_tick_hz;
   const hazard::SeedChoice seed =
       hazard::resolve_seed(options.seed, setup.config, app_support::operating_system_seed);

@@ -11,6 +11,7 @@
 #include "HazardSensor_Info.hpp"
 #include "launch.hpp"
 #include "moos/command_line.hpp"
+#include "moos/mission.hpp"
 
 namespace {
 
@@ -54,6 +55,13 @@ int main(int argc, char** argv) {
 
   HazardSensorOptions options;
   options.mission_directory = folder_of(*cl.mission_file);
+  // The origin is a global of the mission file, not a block line: read it here (moos::run_app
+  // reads the file again for the framework; a file it cannot read is reported there).
+  moos::MissionOptions mission_options;
+  mission_options.substitutions = cl.substitutions;
+  if (const auto mission = moos::MissionFile::load(*cl.mission_file, mission_options, nullptr)) {
+    options.origin = hazard::mission_origin(*mission);
+  }
   if (launch.verbose) options.verbose = &std::cerr;
   HazardSensor app(std::move(options));
   return moos::run_app(app, cl, std::cout, std::cerr, terminal);

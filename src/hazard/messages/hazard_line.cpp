@@ -27,7 +27,8 @@ struct LineReader {
   std::optional<std::string> label;
   std::optional<ObjectType> type;
   std::optional<ObjectType> type_from_hazard_key;
-  bool has_lat_lon = false;
+  std::optional<std::string> lat_text, lon_text;
+  const GeoPlacement* placement = nullptr;
 
   void reject(std::string why) {
     if (result.error.empty()) result.error = std::move(why);
@@ -102,10 +103,10 @@ struct LineReader {
       }
     } else if (key == "source") {
       object.source = std::string(value);
-    } else if (key == "lat" || key == "lon") {
-      // Geodesy seam: a later issue converts lat/lon around LatOrigin/LongOrigin. Until then
-      // such a line needs x and y as well.
-      has_lat_lon = true;
+    } else if (key == "lat") {
+      lat_text = std::string(value);  // read in finish(): used only without x and y
+    } else if (key == "lon") {
+      lon_text = std::string(value);
     } else {
       result.warnings.push_back("unknown key " + quoted(raw_key) + " (value " +
                                 quoted(excerpt(value)) + ") ignored");
@@ -129,16 +130,30 @@ struct LineReader {
     }
   }
 
+  // A lat/lon-only position through the placement (geodesy.hpp), or a rejection saying why not.
+  void place_lat_lon() {
+    const GeoPlacement none;
+    const GeoPlacement& p = placement ? *placement : none;
+    if (!p.projection) {
+      return reject("position given only as lat/lon cannot be placed (" + p.unavailable + ")");
+    }
+    const auto lat = number("lat", *lat_text);
+    const auto lon = number("lon", *lon_text);
+    if (!lat || !lon) return;
+    if (!valid_latitude(*lat)) return reject(field_value("lat", *lat_text) + " is outside [-90, 90]");
+    if (!valid_longitude(*lon)) {
+      return reject(field_value("lon", *lon_text) + " is outside [-180, 360]");
+    }
+    const glm::dvec2 at = p.projection->to_local(*lat, *lon);
+    x = at.x;
+    y = at.y;
+  }
+
   void finish() {
     if (!result.error.empty()) return;
-    if (!x || !y) {
-      if (has_lat_lon) {
-        reject("position given only as lat/lon; x and y are required (no geodesy yet)");
-      } else {
-        reject(std::string("missing field '") + (!x ? "x" : "y") + "'");
-      }
-      return;
-    }
+    if ((!x || !y) && lat_text && lon_text) place_lat_lon();
+    if (!result.error.empty()) return;
+    if (!x || !y) return reject(std::string("missing field '") + (!x ? "x" : "y") + "'");
     if (!type) type = type_from_hazard_key;
     if (!type) return reject("missing field 'type'");
     if (!label || label->empty()) return reject("missing field 'label'");
@@ -158,8 +173,11 @@ const char* type_name(ObjectType type) {
   return type == ObjectType::kHazard ? "hazard" : "benign";
 }
 
-HazardLineParse parse_hazard_line(std::string_view spec) {
+HazardLineParse parse_hazard_line(std::string_view spec) { return parse_hazard_line(spec, nullptr); }
+
+HazardLineParse parse_hazard_line(std::string_view spec, const GeoPlacement* placement) {
   LineReader reader;
+  reader.placement = placement;
   std::set<std::string> seen;
   for (const KeyValue& kv : split_key_values(spec)) {
     if (!kv.has_equals) {

@@ -22,9 +22,36 @@ std::optional<double> optional_number(const Fields& f, std::string_view key) {
   return text ? parse_number(*text) : std::nullopt;
 }
 
+// A LAT/LON-only position through the placement, or the reason it cannot be placed.
+std::optional<glm::dvec2> place_lat_lon(const Fields& f, const GeoPlacement* placement,
+                                        std::string& error) {
+  const GeoPlacement none;
+  if (!placement) placement = &none;
+  if (!placement->projection) {
+    error = "LAT/LON without X/Y cannot be placed (" + placement->unavailable + ")";
+    return std::nullopt;
+  }
+  const auto lat = f.number("LAT", error);
+  const auto lon = f.number("LON", error);
+  if (!error.empty()) return std::nullopt;
+  if (!valid_latitude(*lat)) {
+    error = detail::field_value("LAT", *f.get("LAT")) + " is outside [-90, 90]";
+    return std::nullopt;
+  }
+  if (!valid_longitude(*lon)) {
+    error = detail::field_value("LON", *f.get("LON")) + " is outside [-180, 360]";
+    return std::nullopt;
+  }
+  return placement->projection->to_local(*lat, *lon);
+}
+
 }  // namespace
 
 Parsed<NodeReport> parse_node_report(std::string_view text) {
+  return parse_node_report(text, nullptr);
+}
+
+Parsed<NodeReport> parse_node_report(std::string_view text, const GeoPlacement* placement) {
   const Fields f(text, /*respect_braces=*/true);
   NodeReport r;
   const auto name = f.get("NAME");
@@ -47,16 +74,20 @@ Parsed<NodeReport> parse_node_report(std::string_view text) {
     return Parsed<NodeReport>::fail(detail::field_value("HDG", *hdg_text) +
                                     " is not a finite number");
   }
-  if (!x || !y) {
-    if (f.get("LAT") && f.get("LON")) {
-      return Parsed<NodeReport>::fail("LAT/LON without X/Y is not supported (no geodesy yet)");
-    }
+  std::optional<glm::dvec2> position;
+  if (x && y) {
+    position = glm::dvec2{*x, *y};
+  } else if (f.get("LAT") && f.get("LON")) {
+    position = place_lat_lon(f, placement, error);
+    if (!position) return Parsed<NodeReport>::fail(error);
+    r.placed_from_lat_lon = true;
+  } else {
     return Parsed<NodeReport>::fail(missing_field(!x ? "X" : "Y"));
   }
   if (!spd) return Parsed<NodeReport>::fail(missing_field("SPD"));
   if (!hdg) return Parsed<NodeReport>::fail(missing_field("HDG"));
-  r.x_m = *x;
-  r.y_m = *y;
+  r.x_m = position->x;
+  r.y_m = position->y;
   r.speed_mps = *spd;
   r.heading_deg = norm360(*hdg);
   r.lat_deg = optional_number(f, "LAT");

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <set>
 
@@ -375,6 +376,32 @@ TEST_F(SensorOnBus, HazardFilesAreReadRelativeToTheMissionFile_5) {
   EXPECT_TRUE(contains(app->terminal_report(),
                        "Hazard File: (fields/h.txt, " + (dir / "abs.txt").string() +
                            ") \n     Hazard: 1\n     Benign: 2\n"));
+}
+
+// ---- geodesy: the mission's LatOrigin/LongOrigin (issue 6) ------------------------------------------
+
+TEST_F(SensorOnBus, TheMissionsOriginPlacesLatLonOnlyNodeReports) {
+  start_mission("LatOrigin = 42.358436\nLongOrigin = -71.087448\n" +
+                testing::mission_text(std::string("  hazard = x=0,y=0,label=a,type=hazard\n") + kOptions));
+  EXPECT_TRUE(engine().effects().geodesy);
+  post("NODE_REPORT", "NAME=alpha,LAT=42.358436,LON=-71.087448,SPD=1,HDG=0");
+  run_for(0.5);
+  ASSERT_TRUE(engine().find_vehicle("alpha"));
+  const auto& pose = engine().vehicle(*engine().find_vehicle("alpha")).pose;
+  ASSERT_TRUE(pose.has_value());
+  EXPECT_LT(std::hypot(pose->position_m.x, pose->position_m.y), 1e-6);  // at the origin
+  EXPECT_EQ(appcast().run_warning_count(), 0u);
+}
+
+TEST_F(SensorOnBus, WithoutAnOriginLatLonOnlyNodeReportsAreARunWarningSayingWhy_T9) {
+  start(std::string("  hazard = x=0,y=0,label=a,type=hazard\n") + kOptions);
+  EXPECT_FALSE(engine().effects().geodesy);
+  post("NODE_REPORT", "NAME=alpha,LAT=42.358436,LON=-71.087448,SPD=1,HDG=0");
+  run_for(0.5);
+  EXPECT_FALSE(engine().find_vehicle("alpha"));
+  EXPECT_TRUE(contains(app->terminal_report(),
+                       "LAT/LON without X/Y cannot be placed (the mission file gives no "
+                       "LatOrigin and LongOrigin)"));
 }
 
 // ---- the app adds nothing (design: one engine entry point) ------------------------------------------

@@ -99,6 +99,7 @@ class SensorOnBus : public ::testing::Test {
     settings.time_warp = bus.time_warp();
     if (options.os_seed == nullptr) options.os_seed = [] { return std::uint64_t{424242}; };
     options.mission_directory = dir.path().string();
+    options.origin = hazard::mission_origin(*mission);  // as main reads it
     app.emplace(std::move(options));
     comms = bus.connect(settings.moos_name);
     ASSERT_TRUE(comms);

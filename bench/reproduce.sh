@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Reproduces every number in docs/effects.md and docs/accuracy.md and redraws
+# docs/images/accuracy.svg.
+#
+#   bench/reproduce.sh [BUILD_DIR]      BUILD_DIR: a Release build (default build/release)
+#
+# Timings are ratios measured in one run; absolute microseconds depend on the machine and on
+# what else runs on it (run on an idle machine).
+set -euo pipefail
+HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+ROOT="$(cd "$HERE/.." && pwd)"
+BUILD="${1:-$ROOT/build/release}"
+
+cmake --build "$BUILD" --target effects_bench accuracy_bench -j2 >&2
+echo "# docs/effects.md"
+"$BUILD/bench/engine/effects_bench"
+echo
+echo "# docs/accuracy.md"
+DATA="$(mktemp -d)"
+trap 'rm -rf "$DATA"' EXIT
+"$BUILD/bench/accuracy/accuracy_bench" --csv "$DATA"
+python3 "$HERE/accuracy/plot_accuracy.py" "$DATA" "$ROOT/docs/images/accuracy.svg"
+echo "(plot: docs/images/accuracy.svg)" >&2
