@@ -24,6 +24,9 @@
 // - on_connect_to_server() runs on the thread that calls cycle(), never on a comms thread.
 //   Subscriptions are remembered by the comms and re-sent after a reconnect, so an app may
 //   register once in on_start_up().
+// - An app reads its mission through its settings: the block lines (config_lines), the folder of
+//   the mission file (mission_directory) and the globals it needs itself (global, global_double,
+//   e.g. LatOrigin). The file is read once, by whoever resolves the settings (run_app or a test).
 // - Iterate modes 1 and 2, command messages (`<APP>_CMD`) and cpu/memory in the status are not
 //   implemented: their configuration keys produce a configuration warning when enabled.
 
@@ -32,8 +35,10 @@
 #include <functional>
 #include <iosfwd>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "moos/appcast.hpp"
@@ -80,6 +85,17 @@ struct AppSettings {
   bool have_block = false;
   /// Problems found while resolving, already worded for the appcast.
   std::vector<std::string> config_warnings;
+  /// The folder of the mission file (MissionFile::directory()): relative paths in the block,
+  /// such as a hazard file, are read from there. "." without a mission file.
+  std::string mission_directory = ".";
+  /// The mission file the settings were resolved from; nullptr without one. Shared, so that
+  /// copies of the settings do not copy the file.
+  std::shared_ptr<const MissionFile> mission;
+
+  /// A global of the mission file (MissionFile::global); nullopt without a mission file.
+  std::optional<std::string> global(std::string_view key) const;
+  /// A numeric global (MissionFile::global_double); nullopt without a mission file.
+  std::optional<double> global_double(std::string_view key) const;
 };
 
 /// True for the block keys the base handles (AppTick, CommsTick, MaxAppTick, IterateMode,
@@ -91,7 +107,8 @@ bool is_framework_parameter(std::string_view key);
 /// moos_time_warp, else global MOOSTimeWarp, else 1; AppTick = block, else --moos_app_tick,
 /// else the trait default; host/port = --moos_host/--moos_port, else ServerHost/ServerPort,
 /// else localhost:9000. `mission_errors` in this app's block or outside any block become
-/// configuration warnings; errors in other apps' blocks are not this app's business.
+/// configuration warnings; errors in other apps' blocks are not this app's business. The
+/// settings keep a copy of `mission` and its folder (mission, mission_directory).
 AppSettings resolve_app_settings(const AppTraits& traits, const CommandLine& command_line,
                                  const MissionFile* mission,
                                  const std::vector<MissionError>& mission_errors = {});

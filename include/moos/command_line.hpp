@@ -14,10 +14,15 @@
 //   style) AND is listed in `unhandled`, in order, so an application can recognise its own
 //   `--name=value` flags. Arguments that start with '-' and carry no '=' (`--help`, `-e`) are
 //   listed in `unhandled` too. The parser never prints and never exits: main decides.
+// - Information switches (the MOOS-IvP convention, hazard spec 2): -e/--example/-example,
+//   -h/--help/-help, -i/--interface (no one-dash -interface), -v/--version/-version, compared as
+//   whole words. first_information_switch reads `unhandled` left to right, so the first one on
+//   the command line decides.
 
 #include <map>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace moos {
@@ -62,5 +67,22 @@ CommandLine parse_command_line(const std::vector<std::string>& args);
 
 /// The run name: the alias if one was given, else `default_name` (spec 6.4).
 std::string app_name_from(const CommandLine& cl, const std::string& default_name);
+
+/// What an information switch asks main to print (and then exit 0).
+enum class InfoSwitch { kExample, kHelp, kInterface, kVersion };
+
+/// The information switch `arg` is, if any (see the contract).
+std::optional<InfoSwitch> information_switch(std::string_view arg);
+
+/// The first information switch of the command line, if any.
+std::optional<InfoSwitch> first_information_switch(const CommandLine& command_line);
+
+/// What main does with a MOOS-IvP app's command line. kUsageError is for an app's own checks of
+/// its own switches (decide_launch never returns it).
+enum class LaunchAction { kRun, kHelp, kExample, kInterface, kVersion, kUsageError };
+
+/// The first information switch decides; without one and without a mission file, the help (the
+/// MOOS-IvP apps' behaviour); else run.
+LaunchAction decide_launch(const CommandLine& command_line);
 
 }  // namespace moos

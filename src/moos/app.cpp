@@ -189,6 +189,8 @@ AppSettings resolve_app_settings(const AppTraits& traits, const CommandLine& cl,
 
   bool block_app_tick = false;
   if (mission) {
+    s.mission = std::make_shared<const MissionFile>(*mission);
+    s.mission_directory = mission->directory();
     for (const auto& e : mission_errors)
       if (e.block.empty() || text::iequals(e.block, s.app_name)) s.config_warnings.push_back(e.to_string());
     apply_globals(*mission, s);
@@ -206,6 +208,14 @@ AppSettings resolve_app_settings(const AppTraits& traits, const CommandLine& cl,
   if (cl.moos_app_tick_hz && !block_app_tick) s.app_tick_hz = *cl.moos_app_tick_hz;
   if (cl.moos_comms_tick_hz) s.comms_tick_hz = *cl.moos_comms_tick_hz;
   return s;
+}
+
+std::optional<std::string> AppSettings::global(std::string_view key) const {
+  return mission ? mission->global(key) : std::nullopt;
+}
+
+std::optional<double> AppSettings::global_double(std::string_view key) const {
+  return mission ? mission->global_double(key) : std::nullopt;
 }
 
 // ---- MoosApp --------------------------------------------------------------------------------

@@ -163,4 +163,30 @@ std::string app_name_from(const CommandLine& cl, const std::string& default_name
   return default_name;
 }
 
+std::optional<InfoSwitch> information_switch(std::string_view arg) {
+  if (arg == "-e" || arg == "--example" || arg == "-example") return InfoSwitch::kExample;
+  if (arg == "-h" || arg == "--help" || arg == "-help") return InfoSwitch::kHelp;
+  if (arg == "-i" || arg == "--interface") return InfoSwitch::kInterface;
+  if (arg == "-v" || arg == "--version" || arg == "-version") return InfoSwitch::kVersion;
+  return std::nullopt;
+}
+
+std::optional<InfoSwitch> first_information_switch(const CommandLine& cl) {
+  for (const std::string& arg : cl.unhandled)
+    if (auto info = information_switch(arg)) return info;
+  return std::nullopt;
+}
+
+LaunchAction decide_launch(const CommandLine& cl) {
+  const std::optional<InfoSwitch> info = first_information_switch(cl);
+  if (!info) return cl.mission_file ? LaunchAction::kRun : LaunchAction::kHelp;
+  switch (*info) {
+    case InfoSwitch::kExample: return LaunchAction::kExample;
+    case InfoSwitch::kHelp: return LaunchAction::kHelp;
+    case InfoSwitch::kInterface: return LaunchAction::kInterface;
+    case InfoSwitch::kVersion: return LaunchAction::kVersion;
+  }
+  return LaunchAction::kHelp;  // unreachable: every switch is listed
+}
+
 }  // namespace moos

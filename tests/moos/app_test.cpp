@@ -189,6 +189,35 @@ TEST(AppSettingsResolve, OnlyThisAppsMissionErrorsBecomeWarnings) {
   EXPECT_EQ(s.config_warnings[1], "m.moos:5: line has no '=' and is ignored: oops");
 }
 
+TEST(AppSettingsResolve, CarryTheMissionsFolderAndGlobalsForTheApp) {
+  std::vector<MissionError> errors;
+  const auto m = MissionFile::parse("LatOrigin = 43.825\nLongOrigin = -70.33\nRegion = a b\n"
+                                    "ProcessConfig = pEcho\n{\n LatOrigin = 1\n}\n",
+                                    "missions/jake/m.moos", {}, &errors);
+  const auto s =
+      resolve_app_settings(AppTraits{"pEcho"}, parse_command_line({"pEcho", "m.moos"}), &m);
+  EXPECT_EQ(s.mission_directory, "missions/jake");
+  ASSERT_NE(s.mission, nullptr);
+  EXPECT_EQ(s.mission->path(), "missions/jake/m.moos");
+  EXPECT_EQ(s.global_double("latorigin"), 43.825);  // the first line, as MissionFile::global
+  EXPECT_EQ(s.global_double("LongOrigin"), -70.33);
+  EXPECT_EQ(s.global("Region"), "ab");
+  EXPECT_FALSE(s.global_double("Region").has_value());
+  EXPECT_FALSE(s.global("Nothing").has_value());
+  // A file in the current folder is read from ".".
+  const auto here = MissionFile::parse("X = 1\n", "m.moos", {}, &errors);
+  const auto s_here = resolve_app_settings(AppTraits{"pEcho"}, parse_command_line({"pEcho"}), &here);
+  EXPECT_EQ(s_here.mission_directory, ".");
+}
+
+TEST(AppSettingsResolve, WithoutAMissionThereAreNoGlobals) {
+  const auto s = resolve_app_settings(AppTraits{"pEcho"}, parse_command_line({"pEcho"}), nullptr);
+  EXPECT_EQ(s.mission_directory, ".");
+  EXPECT_EQ(s.mission, nullptr);
+  EXPECT_FALSE(s.global("LatOrigin").has_value());
+  EXPECT_FALSE(s.global_double("LatOrigin").has_value());
+}
+
 // ---- the main loop on the bus (spec 7.1) -------------------------------------------------------
 
 TEST_F(AppOnBus, StartUpSeesConfigAndRegistersAppCastRequests_7_2) {

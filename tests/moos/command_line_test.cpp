@@ -116,5 +116,52 @@ TEST(CommandLine, ArgcArgvEntryPointMatchesTheVectorOne) {
   EXPECT_EQ(cl.moos_port, 9001);
 }
 
+// ---- information switches (hazard spec 2) ------------------------------------------------------
+
+TEST(InformationSwitch, EveryFormOfTheMoosIvpConvention_Spec2) {
+  for (const char* a : {"-e", "--example", "-example"})
+    EXPECT_EQ(information_switch(a), InfoSwitch::kExample) << a;
+  for (const char* a : {"-h", "--help", "-help"})
+    EXPECT_EQ(information_switch(a), InfoSwitch::kHelp) << a;
+  for (const char* a : {"-i", "--interface"})
+    EXPECT_EQ(information_switch(a), InfoSwitch::kInterface) << a;
+  for (const char* a : {"-v", "--version", "-version"})
+    EXPECT_EQ(information_switch(a), InfoSwitch::kVersion) << a;
+}
+
+TEST(InformationSwitch, OnlyWholeWordsInTheirExactCaseCount_Spec2) {
+  // Spec 2: there is no one-dash -interface.
+  for (const char* a : {"-interface", "--Help", "-H", "--help=yes", "--versions", "help", "-", ""})
+    EXPECT_FALSE(information_switch(a).has_value()) << a;
+}
+
+TEST(InformationSwitch, TheFirstOnTheCommandLineDecides_Spec2) {
+  EXPECT_EQ(first_information_switch(parse({"m.moos", "--version", "--help"})),
+            InfoSwitch::kVersion);
+  EXPECT_EQ(first_information_switch(parse({"-i", "m.moos", "-e"})), InfoSwitch::kInterface);
+  EXPECT_EQ(first_information_switch(parse({"--verbose", "-example"})), InfoSwitch::kExample);
+}
+
+TEST(InformationSwitch, NoneWhenTheCommandLineHasNone_Spec2) {
+  EXPECT_FALSE(first_information_switch(parse({})).has_value());
+  EXPECT_FALSE(first_information_switch(parse({"m.moos", "-interface", "--VNAME=-h"})).has_value());
+  // Free arguments are mission files and aliases, never switches.
+  EXPECT_FALSE(first_information_switch(parse({"help", "version"})).has_value());
+}
+
+TEST(DecideLaunch, RunsWithAMissionFileAndShowsTheHelpWithout_Spec2) {
+  EXPECT_EQ(decide_launch(parse({"m.moos"})), LaunchAction::kRun);
+  EXPECT_EQ(decide_launch(parse({"m.moos", "alias"})), LaunchAction::kRun);
+  EXPECT_EQ(decide_launch(parse({})), LaunchAction::kHelp);
+  EXPECT_EQ(decide_launch(parse({"--moos_port=9001"})), LaunchAction::kHelp);
+}
+
+TEST(DecideLaunch, AnInformationSwitchWinsOverAMissionFile_Spec2) {
+  EXPECT_EQ(decide_launch(parse({"m.moos", "-e", "--help"})), LaunchAction::kExample);
+  EXPECT_EQ(decide_launch(parse({"m.moos", "-help"})), LaunchAction::kHelp);
+  EXPECT_EQ(decide_launch(parse({"--interface", "-v"})), LaunchAction::kInterface);
+  EXPECT_EQ(decide_launch(parse({"-version"})), LaunchAction::kVersion);
+}
+
 }  // namespace
 }  // namespace moos

@@ -3,11 +3,10 @@
 
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <string>
-#include <unistd.h>
 
 #include "moos/mission.hpp"
+#include "scratch_files.hpp"
 
 namespace moos {
 namespace {
@@ -32,30 +31,12 @@ std::string dump(const std::vector<MissionError>& errors) {
   return out;
 }
 
-/// A scratch folder removed at the end of the test.
-class TempDir {
- public:
-  TempDir() {
-    static int counter = 0;
-    path_ = fs::temp_directory_path() /
-            ("moos_mission_test_" + std::to_string(getpid()) + "_" + std::to_string(counter++));
-    fs::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  std::string write(const std::string& name, const std::string& content) const {
-    const fs::path p = path_ / name;
-    fs::create_directories(p.parent_path());
-    std::ofstream(p, std::ios::binary) << content;
-    return p.string();
-  }
-  const fs::path& path() const { return path_; }
-
- private:
-  fs::path path_;
-};
+/// Writes `content` to `name` in `dir` (folders made as needed); returns its path.
+std::string write_in(const test_support::ScratchDir& dir, const std::string& name,
+                     const std::string& content) {
+  test_support::write_file(dir / name, content);
+  return (dir / name).string();
+}
 
 // ---- globals (spec 6.2) -----------------------------------------------------------------------
 
@@ -334,9 +315,9 @@ TEST(MissionSubstitution, UnterminatedParenIsReported) {
 // ---- #include ---------------------------------------------------------------------------------
 
 TEST(MissionInclude, IncludedLinesNameTheirOwnFileAndLine) {
-  TempDir dir;
-  dir.write("plugs/common.plug", "// header\nServerPort = $(PORT)\nProcessConfig = pB\n{\n y = 2\n}\n");
-  const std::string top = dir.write("m.moos", "Community = alpha\n#include plugs/common.plug\n"
+  const test_support::ScratchDir dir;
+  write_in(dir, "plugs/common.plug", "// header\nServerPort = $(PORT)\nProcessConfig = pB\n{\n y = 2\n}\n");
+  const std::string top = write_in(dir, "m.moos", "Community = alpha\n#include plugs/common.plug\n"
                                               "ProcessConfig = pA\n{\n x = 1\n}\n");
   MissionOptions options;
   options.substitutions["PORT"] = "9300";
@@ -357,11 +338,11 @@ TEST(MissionInclude, IncludedLinesNameTheirOwnFileAndLine) {
 }
 
 TEST(MissionInclude, QuotedAndAngleBracketPathsAndIncludesOfIncludes) {
-  TempDir dir;
-  dir.write("a.plug", "#include <sub/b.plug>\n");
-  dir.write("sub/b.plug", "#include c.plug\n");  // relative to sub/
-  dir.write("sub/c.plug", "Deep = yes\n");
-  const std::string top = dir.write("m.moos", "#include \"a.plug\"\n");
+  const test_support::ScratchDir dir;
+  write_in(dir, "a.plug", "#include <sub/b.plug>\n");
+  write_in(dir, "sub/b.plug", "#include c.plug\n");  // relative to sub/
+  write_in(dir, "sub/c.plug", "Deep = yes\n");
+  const std::string top = write_in(dir, "m.moos", "#include \"a.plug\"\n");
   std::vector<MissionError> errors;
   const auto m = MissionFile::load(top, {}, &errors);
   ASSERT_TRUE(m.has_value());
@@ -370,9 +351,9 @@ TEST(MissionInclude, QuotedAndAngleBracketPathsAndIncludesOfIncludes) {
 }
 
 TEST(MissionInclude, ErrorsInsideAnIncludedFileNameThatFile) {
-  TempDir dir;
-  dir.write("bad.plug", "\nX = $(UNDEFINED_IN_PLUG)\n");
-  const std::string top = dir.write("m.moos", "#include bad.plug\n");
+  const test_support::ScratchDir dir;
+  write_in(dir, "bad.plug", "\nX = $(UNDEFINED_IN_PLUG)\n");
+  const std::string top = write_in(dir, "m.moos", "#include bad.plug\n");
   MissionOptions options;
   options.use_environment = false;
   std::vector<MissionError> errors;
@@ -383,10 +364,10 @@ TEST(MissionInclude, ErrorsInsideAnIncludedFileNameThatFile) {
 }
 
 TEST(MissionInclude, CycleIsAnErrorAndParsingGoesOn) {
-  TempDir dir;
-  dir.write("a.plug", "A = 1\n#include b.plug\n");
-  dir.write("b.plug", "B = 2\n#include a.plug\n");
-  const std::string top = dir.write("m.moos", "#include a.plug\nTop = 3\n#include m.moos\n");
+  const test_support::ScratchDir dir;
+  write_in(dir, "a.plug", "A = 1\n#include b.plug\n");
+  write_in(dir, "b.plug", "B = 2\n#include a.plug\n");
+  const std::string top = write_in(dir, "m.moos", "#include a.plug\nTop = 3\n#include m.moos\n");
   std::vector<MissionError> errors;
   const auto m = MissionFile::load(top, {}, &errors);
   ASSERT_TRUE(m.has_value());
@@ -401,8 +382,8 @@ TEST(MissionInclude, CycleIsAnErrorAndParsingGoesOn) {
 }
 
 TEST(MissionInclude, MissingIncludedFileIsAnErrorAtTheIncludeLine) {
-  TempDir dir;
-  const std::string top = dir.write("m.moos", "\n#include nothere.plug\nX = 1\n");
+  const test_support::ScratchDir dir;
+  const std::string top = write_in(dir, "m.moos", "\n#include nothere.plug\nX = 1\n");
   std::vector<MissionError> errors;
   const auto m = MissionFile::load(top, {}, &errors);
   ASSERT_TRUE(m.has_value());

@@ -43,4 +43,31 @@ std::vector<hazard::ConfigEntry> to_config_entries(const std::vector<moos::Confi
   return out;
 }
 
+std::string information_switches_help(const std::string& app_name) {
+  return "  --alias=<ProcessName>\n"
+         "      Launch " + app_name + " with the given process\n"
+         "      name rather than " + app_name + ".\n"
+         "  --example, -e\n"
+         "      Display example MOOS configuration block.\n"
+         "  --help, -h\n"
+         "      Display this help message.\n"
+         "  --interface, -i\n"
+         "      Display MOOS publications and subscriptions.\n"
+         "  --version,-v\n"
+         "      Display release version of " + app_name + ".\n";
+}
+
+std::string generic_switches_help() {
+  return "  --NAME=value\n"
+         "      Replaces $(NAME) in the mission file.\n"
+         "  --moos_host=HOST, --moos_port=PORT, --moos_time_warp=W,\n"
+         "  --moos_app_tick=HZ, --moos_name=NAME\n"
+         "      Generic MOOS switches; they override the mission file.\n"
+         "\n"
+         "Note: If argv[2] does not otherwise match a known option,\n"
+         "      then it will be interpreted as a run alias. This is\n"
+         "      to support pAntler launching conventions.\n"
+         "\n";
+}
+
 }  // namespace app_support

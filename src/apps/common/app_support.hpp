@@ -26,4 +26,11 @@ hazard::HazardFileReader mission_relative_reader(std::string mission_directory);
 /// A ProcessConfig block's lines as engine configuration entries (key, value, file, line).
 std::vector<hazard::ConfigEntry> to_config_entries(const std::vector<moos::ConfigLine>& lines);
 
+/// --help lines of the switches every app takes (the MOOS-IvP wording): --alias and the four
+/// information switches.
+std::string information_switches_help(const std::string& app_name);
+/// --help lines of the generic switches (--NAME=value, --moos_*) and the pAntler run-alias note,
+/// ending in a blank line.
+std::string generic_switches_help();
+
 }  // namespace app_support

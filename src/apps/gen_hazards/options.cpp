@@ -7,15 +7,13 @@
 #include <variant>
 
 #include "hazard/text.hpp"
+#include "moos/command_line.hpp"
 
 namespace gen_hazards {
 
 namespace {
 
 using hazard::fmt;
-
-const std::vector<std::string_view> kHelpFlags = {"-h", "--help", "-help"};
-const std::vector<std::string_view> kVersionFlags = {"-v", "--version", "-version"};
 
 /// Characters a POSIX shell takes literally in a word; anything else gets quoted in the header.
 constexpr std::string_view kShellSafe =
@@ -225,13 +223,6 @@ const std::vector<OptionSpec>& option_table() {
   return table;
 }
 
-bool is_one_of(std::string_view arg, const std::vector<std::string_view>& flags) {
-  for (auto flag : flags) {
-    if (arg == flag) return true;
-  }
-  return false;
-}
-
 void apply_argument(const std::string& arg, CommandLine& cli) {
   const auto eq = arg.find('=');
   const std::string_view key = std::string_view(arg).substr(0, eq);
@@ -266,9 +257,12 @@ std::string shell_word(const std::string& arg) {
 CommandLine parse_command_line(const std::vector<std::string>& args) {
   CommandLine cli;
   for (const auto& arg : args) {
-    if (is_one_of(arg, kHelpFlags)) {
+    // The MOOS-IvP forms of --help and --version; gen_hazards has no --example or --interface,
+    // so those stay unknown options.
+    const std::optional<moos::InfoSwitch> info = moos::information_switch(arg);
+    if (info == moos::InfoSwitch::kHelp) {
       cli.help = true;
-    } else if (is_one_of(arg, kVersionFlags)) {
+    } else if (info == moos::InfoSwitch::kVersion) {
       cli.version = true;
     } else {
       apply_argument(arg, cli);

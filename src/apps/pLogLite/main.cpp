@@ -11,7 +11,6 @@
 int main(int argc, char** argv) {
   using namespace plog_lite;
   const mission_app::InfoTexts texts{help_text, example_text, interface_text, version_text};
-  return mission_app::run_main(argc, argv, kAppName, texts, [](const mission_app::MissionContext&) {
-    return std::make_unique<LogLite>();
-  });
+  return mission_app::run_main(argc, argv, kAppName, texts,
+                               [] { return std::make_unique<LogLite>(); });
 }

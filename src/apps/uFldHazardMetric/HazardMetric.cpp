@@ -9,12 +9,11 @@ namespace ufld_hazard_metric {
 
 moos::AppTraits metric_traits() { return mission_app::mission_traits(kAppName, kDefaultAppTick_hz); }
 
-HazardMetricApp::HazardMetricApp(mission_app::MissionContext context)
-    : mission_app::MissionApp(metric_traits()), context_(std::move(context)) {}
+HazardMetricApp::HazardMetricApp() : mission_app::MissionApp(metric_traits()) {}
 
 void HazardMetricApp::load_hazard_file(const moos::ConfigLine& line, const std::string& file) {
   hazard_files_.push_back(file);
-  const auto text = app_support::mission_relative_reader(context_.directory)(file);
+  const auto text = app_support::mission_relative_reader(settings().mission_directory)(file);
   if (!text) {
     report_run_warning(mission::HazardMetric::hazard_file_missing(file));
     report_config_warning(mission_app::at_line(line, "cannot read hazard_file '" + file + "'"));

@@ -32,7 +32,7 @@ moos::AppTraits metric_traits();
 
 class HazardMetricApp final : public mission_app::MissionApp {
  public:
-  explicit HazardMetricApp(mission_app::MissionContext context = {});
+  HazardMetricApp();
 
   const mission::HazardMetric& metric() const { return metric_; }
 
@@ -45,7 +45,6 @@ class HazardMetricApp final : public mission_app::MissionApp {
  private:
   void load_hazard_file(const moos::ConfigLine& line, const std::string& file);
 
-  mission_app::MissionContext context_;
   mission::HazardMetric metric_;
   std::vector<std::string> hazard_files_;
 };

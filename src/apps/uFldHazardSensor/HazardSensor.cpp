@@ -39,7 +39,8 @@ HazardSensor::HazardSensor(HazardSensorOptions options)
 bool HazardSensor::on_start_up() {
   hazard::EngineSetup setup = hazard::load_configuration(
       app_support::to_config_entries(config_lines()),
-      app_support::mission_relative_reader(options_.mission_directory), options_.origin);
+      app_support::mission_relative_reader(settings().mission_directory),
+      hazard::mission_origin(settings()));
   const hazard::SeedChoice seed = hazard::resolve_seed(std::nullopt, setup.config, options_.os_seed);
   engine_.emplace(std::move(setup), seed);
   for (const hazard::InterfaceVariable& v : hazard::Engine::subscriptions()) {

@@ -5,9 +5,9 @@
 // Contract:
 // - on_start_up: the app's block lines (framework keys already taken by libmoos) go to
 //   hazard::load_configuration in file order with their file and line; hazard files are read
-//   relative to the mission file's folder; the mission's LatOrigin/LongOrigin (read by main from
-//   the mission file's globals, HazardSensorOptions::origin) go with them (geodesy); the seed is
-//   resolved (random_seed, else seed_random:
+//   relative to the mission file's folder; the mission's LatOrigin/LongOrigin globals go with
+//   them (geodesy); folder and globals come with the settings (moos::AppSettings, from the one
+//   reading of the mission file); the seed is resolved (random_seed, else seed_random:
 //   the operating system, else seed 1); the engine starts at the start-up time and its config
 //   warnings and object visuals are published; the engine's subscriptions are registered.
 //   Configuration problems never stop the app (D26).
@@ -52,14 +52,10 @@ inline constexpr const char* kVerboseConfigWarning = "CONFIG_WARNING";
 moos::AppTraits hazard_sensor_traits();
 
 struct HazardSensorOptions {
-  /// The folder relative hazard_file paths are read from (the mission file's folder).
-  std::string mission_directory = ".";
   /// Where --verbose writes its .alog lines; nullptr: not verbose.
   std::ostream* verbose = nullptr;
   /// The source of an operating-system seed (seed_random = true); empty: app_support::operating_system_seed.
   std::function<std::uint64_t()> os_seed;
-  /// The mission file's LatOrigin/LongOrigin globals (hazard::mission_origin); empty: none.
-  hazard::MissionOrigin origin;
 };
 
 class HazardSensor final : public moos::MoosApp {

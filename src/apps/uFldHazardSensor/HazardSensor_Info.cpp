@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "HazardSensor.hpp"
+#include "app_support.hpp"
 #include "hazard/config.hpp"
 #include "hazard/engine.hpp"
 #include "hazard/version.hpp"
@@ -152,33 +153,16 @@ std::string help_text() {
       "(normally the shoreside one): detections and classifications of the objects\n"
       "of a hazard file, as the vehicles' node reports and requests ask for them.\n"
       "\n"
-      "Options:\n"
-      "  --alias=<ProcessName>\n"
-      "      Launch uFldHazardSensor with the given process\n"
-      "      name rather than uFldHazardSensor.\n"
-      "  --example, -e\n"
-      "      Display example MOOS configuration block.\n"
-      "  --help, -h\n"
-      "      Display this help message.\n"
-      "  --interface, -i\n"
-      "      Display MOOS publications and subscriptions.\n"
-      "  --version,-v\n"
-      "      Display release version of uFldHazardSensor.\n"
+      "Options:\n";
+  out += app_support::information_switches_help(kAppName);
+  out +=
       "  --verbose=<setting>\n"
       "      Set verbosity. true or false (default)\n"
       "      (a bare --verbose means true). Verbose writes every\n"
       "      posting, event and warning to standard error as\n"
-      "      .alog lines; the terminal report is unchanged.\n"
-      "  --NAME=value\n"
-      "      Replaces $(NAME) in the mission file.\n"
-      "  --moos_host=HOST, --moos_port=PORT, --moos_time_warp=W,\n"
-      "  --moos_app_tick=HZ, --moos_name=NAME\n"
-      "      Generic MOOS switches; they override the mission file.\n"
-      "\n"
-      "Note: If argv[2] does not otherwise match a known option,\n"
-      "      then it will be interpreted as a run alias. This is\n"
-      "      to support pAntler launching conventions.\n"
-      "\n"
+      "      .alog lines; the terminal report is unchanged.\n";
+  out += app_support::generic_switches_help();
+  out +=
       "Exit codes: 0 after SIGINT/SIGTERM or an information switch; 1 if the\n"
       "mission file cannot be read or the MOOSDB refuses the name; 2 for a bad\n"
       "--verbose value.\n";

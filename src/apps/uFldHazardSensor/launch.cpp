@@ -11,22 +11,11 @@ namespace {
 
 constexpr std::string_view kVerbose = "--verbose";
 
-/// The information switch `arg` names, if any (spec 2: `-interface` has no one-dash form).
-std::optional<LaunchAction> information_switch(std::string_view arg) {
-  if (arg == "-e" || arg == "--example" || arg == "-example") return LaunchAction::kExample;
-  if (arg == "-h" || arg == "--help" || arg == "-help") return LaunchAction::kHelp;
-  if (arg == "-i" || arg == "--interface") return LaunchAction::kInterface;
-  if (arg == "-v" || arg == "--version" || arg == "-version") return LaunchAction::kVersion;
-  return std::nullopt;
-}
-
 }  // namespace
 
-Launch decide_launch(const moos::CommandLine& cl) {
+Launch decide_launch_with_verbosity(const moos::CommandLine& cl) {
   Launch launch;
-  std::optional<LaunchAction> info;
   for (const std::string& arg : cl.unhandled) {
-    if (!info) info = information_switch(arg);
     if (arg == kVerbose) {
       launch.verbose = true;
     } else if (moos::text::starts_with(arg, std::string(kVerbose) + "=")) {
@@ -40,11 +29,7 @@ Launch decide_launch(const moos::CommandLine& cl) {
       launch.verbose = *b;
     }
   }
-  if (info) {
-    launch.action = *info;
-  } else if (!cl.mission_file) {
-    launch.action = LaunchAction::kHelp;
-  }
+  launch.action = moos::decide_launch(cl);
   return launch;
 }
 

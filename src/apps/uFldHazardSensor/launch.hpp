@@ -17,7 +17,7 @@
 
 namespace ufld_hazard_sensor {
 
-enum class LaunchAction { kRun, kHelp, kExample, kInterface, kVersion, kUsageError };
+using moos::LaunchAction;
 
 struct Launch {
   LaunchAction action = LaunchAction::kRun;
@@ -25,7 +25,7 @@ struct Launch {
   std::string error;  ///< kUsageError: names the argument and why
 };
 
-Launch decide_launch(const moos::CommandLine& command_line);
+Launch decide_launch_with_verbosity(const moos::CommandLine& command_line);
 
 /// Exit code of a usage error (main prints the error and a pointer to --help).
 inline constexpr int kExitUsageError = 2;

@@ -4,14 +4,12 @@
 
 #include <unistd.h>
 
-#include <filesystem>
 #include <iostream>
 
 #include "HazardSensor.hpp"
 #include "HazardSensor_Info.hpp"
 #include "launch.hpp"
 #include "moos/command_line.hpp"
-#include "moos/mission.hpp"
 
 namespace {
 
@@ -26,16 +24,11 @@ int print(const std::string& text) {
   return std::cout ? 0 : 1;
 }
 
-std::string folder_of(const std::string& path) {
-  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
-  return parent.empty() ? std::string(".") : parent.string();
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
   const moos::CommandLine cl = moos::parse_command_line(argc, argv);
-  const Launch launch = decide_launch(cl);
+  const Launch launch = decide_launch_with_verbosity(cl);
   switch (launch.action) {
     case LaunchAction::kHelp: return print(help_text());
     case LaunchAction::kExample: return print(example_text());
@@ -53,15 +46,9 @@ int main(int argc, char** argv) {
             << (terminal ? kPlain : "") << "\n\n"
             << std::flush;
 
+  // moos::run_app reads the mission file: the block, its folder and the origin globals reach the
+  // app through its settings.
   HazardSensorOptions options;
-  options.mission_directory = folder_of(*cl.mission_file);
-  // The origin is a global of the mission file, not a block line: read it here (moos::run_app
-  // reads the file again for the framework; a file it cannot read is reported there).
-  moos::MissionOptions mission_options;
-  mission_options.substitutions = cl.substitutions;
-  if (const auto mission = moos::MissionFile::load(*cl.mission_file, mission_options, nullptr)) {
-    options.origin = hazard::mission_origin(*mission);
-  }
   if (launch.verbose) options.verbose = &std::cerr;
   HazardSensor app(std::move(options));
   return moos::run_app(app, cl, std::cout, std::cerr, terminal);

@@ -38,8 +38,7 @@ std::optional<Flag> parse_flag(std::string_view text) {
   return f;
 }
 
-SimSurveyVehicle::SimSurveyVehicle(mission_app::MissionContext context)
-    : mission_app::MissionApp(sim_traits()), context_(std::move(context)) {}
+SimSurveyVehicle::SimSurveyVehicle() : mission_app::MissionApp(sim_traits()) {}
 
 std::optional<std::string> SimSurveyVehicle::apply_app_param(const moos::ConfigLine& line) {
   const std::string key = hazard::to_lower(line.key);
@@ -89,9 +88,10 @@ bool SimSurveyVehicle::on_start_up() {
                           hazard::fmt(settings().app_tick_hz, 3) +
                           "): one node report per iteration");
   }
-  if (context_.lat_origin_deg && context_.lon_origin_deg) {
-    geodesy_.emplace(mission::GeoPoint{*context_.lat_origin_deg, *context_.lon_origin_deg});
-  }
+  const std::optional<double> lat_origin_deg = settings().global_double("LatOrigin");
+  const std::optional<double> lon_origin_deg = settings().global_double("LongOrigin");
+  if (lat_origin_deg && lon_origin_deg)
+    geodesy_.emplace(mission::GeoPoint{*lat_origin_deg, *lon_origin_deg});
 
   auto route = mission::plan_route(config_);
   if (auto* error = std::get_if<std::string>(&route)) {

@@ -57,7 +57,7 @@ std::optional<Flag> parse_flag(std::string_view text);
 
 class SimSurveyVehicle final : public mission_app::MissionApp {
  public:
-  explicit SimSurveyVehicle(mission_app::MissionContext context = {});
+  SimSurveyVehicle();
 
   const std::string& vname() const { return vname_; }
   bool deployed() const { return deployed_; }
@@ -80,7 +80,6 @@ class SimSurveyVehicle final : public mission_app::MissionApp {
   void post_node_report(const mission::Pose& pose);
   void post_done_flags();
 
-  mission_app::MissionContext context_;
   mission::SurveyVehicleConfig config_;
   std::string vname_;
   std::string node_report_var_ = "NODE_REPORT";

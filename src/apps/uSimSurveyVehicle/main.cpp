@@ -12,7 +12,5 @@ int main(int argc, char** argv) {
   using namespace usim_survey_vehicle;
   const mission_app::InfoTexts texts{help_text, example_text, interface_text, version_text};
   return mission_app::run_main(argc, argv, kAppName, texts,
-                               [](const mission_app::MissionContext& context) {
-                                 return std::make_unique<SimSurveyVehicle>(context);
-                               });
+                               [] { return std::make_unique<SimSurveyVehicle>(); });
 }

@@ -11,19 +11,20 @@
 #include <variant>
 #include <vector>
 
+#include "child_process.hpp"
 #include "hazard/hazard_field.hpp"
 #include "hazard/messages/hazard_line.hpp"
 #include "hazard/text.hpp"
 #include "mission/polygon.hpp"
 #include "options.hpp"
-#include "test_support.hpp"
+#include "scratch_files.hpp"
 
 namespace gen_hazards {
 namespace {
 
-using test::read_file;
-using test::RunResult;
-using test::ScratchDir;
+using test_support::read_file;
+using test_support::RunResult;
+using test_support::ScratchDir;
 
 /// Bad input must be rejected at once (issue: "every case finishes within a second"); a hang
 /// shows as a kill at this deadline.
@@ -38,7 +39,7 @@ constexpr double kRoundingLimit_m = 0.5;
 const std::string kManualBox = "--polygon=-150,-75:-150,-400:400,-400:400,-75";
 
 RunResult run(const std::vector<std::string>& args, double deadline_s = kRunDeadline_s) {
-  return test::run_program(GEN_HAZARDS_PATH, args, deadline_s);
+  return test_support::run_program(GEN_HAZARDS_PATH, args, deadline_s);
 }
 
 std::string golden(const std::string& name) {
@@ -121,7 +122,7 @@ TEST(GenHazardsProcess, RunsWithoutSeedUseDifferentSeeds) {
 
 TEST(GenHazardsProcess, OutputFileHoldsExactlyWhatStdoutWouldShow) {
   ScratchDir dir;
-  const std::string path = dir.path() + "/field.txt";
+  const std::string path = (dir / "field.txt").string();
   const std::vector<std::string> args = {"--seed=5", kManualBox, "--objects=8,benign"};
   const RunResult to_stdout = run(args);
   std::vector<std::string> with_file = args;
@@ -135,7 +136,7 @@ TEST(GenHazardsProcess, OutputFileHoldsExactlyWhatStdoutWouldShow) {
 
 TEST(GenHazardsProcess, UnwritableOutputExitsOneNamingTheFile) {
   ScratchDir dir;
-  const std::string path = dir.path() + "/missing_folder/field.txt";
+  const std::string path = (dir / "missing_folder/field.txt").string();
   const RunResult r = run({"--seed=5", kManualBox, "--objects=8,benign", "--output=" + path});
   EXPECT_EQ(r.exit_code, kExitCannotWrite);
   EXPECT_NE(r.err.find(path), std::string::npos) << r.err;
@@ -247,7 +248,7 @@ TEST_P(GenHazardsBadInput, ErrorNamesTheArgumentAndNothingIsWritten_Spec12_4_D31
 
   ScratchDir dir;
   std::vector<std::string> with_file = bad.args;
-  with_file.push_back("--output=" + dir.path() + "/field.txt");
+  with_file.push_back("--output=" + (dir / "field.txt").string());
   const RunResult f = run(with_file, kBadInputDeadline_s);
   EXPECT_FALSE(f.timed_out);
   EXPECT_EQ(f.exit_code, kExitBadInput);
@@ -259,7 +260,7 @@ INSTANTIATE_TEST_SUITE_P(Cases, GenHazardsBadInput, ::testing::ValuesIn(bad_inpu
 
 TEST(GenHazardsProcess, BadOutputArgumentLeavesAnExistingFileAlone) {
   ScratchDir dir;
-  const std::string path = dir.path() + "/field.txt";
+  const std::string path = (dir / "field.txt").string();
   { std::ofstream(path) << "previous field\n"; }
   const RunResult r = run({"--objects=5,hazard", "--output=" + path}, kBadInputDeadline_s);
   EXPECT_EQ(r.exit_code, kExitBadInput);

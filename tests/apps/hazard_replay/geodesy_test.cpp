@@ -11,13 +11,13 @@
 namespace hazard_replay {
 namespace {
 
+using test_support::alog_entries;
+using test_support::ScratchDir;
+using test_support::write_file;
 using testing::alog;
-using testing::entries;
 using testing::Line;
 using testing::mission;
 using testing::run;
-using testing::TempDir;
-using testing::write_file;
 
 constexpr double kLat0 = 42.358436, kLon0 = -71.087448;
 const GeographicLib::LocalCartesian kFrame(kLat0, kLon0, 0.0);
@@ -33,7 +33,7 @@ std::string report(double x, double y) {
   return "NAME=v," + lat_lon(x, y, "LAT", "LON") + ",SPD=1,HDG=0";
 }
 
-void make(const TempDir& dir, const std::string& globals) {
+void make(const ScratchDir& dir, const std::string& globals) {
   write_file(dir / "m.moos", globals + mission("  hazard_file = h.txt\n"
                                                "  sensor_config = width=25, exp=4, pclass=0.8\n"
                                                "  show_hazards = false\n"));
@@ -46,13 +46,13 @@ void make(const TempDir& dir, const std::string& globals) {
 }
 
 TEST(ReplayGeodesy, TheMissionOriginPlacesLatLonReportsAndHazardLines) {
-  TempDir dir;
+  ScratchDir dir;
   make(dir, "LatOrigin = " + hazard::fmt(kLat0, 6) + "\nLongOrigin = " + hazard::fmt(kLon0, 6) +
                 "\n");
   const auto r = run(dir, {"m.moos", "in.alog", "--seed=1"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   std::vector<std::string> detections;
-  for (const auto& e : entries(r.out)) {
+  for (const auto& e : alog_entries(r.out)) {
     if (e.variable == "UHZ_DETECTION_REPORT") detections.push_back(e.value);
   }
   EXPECT_EQ(detections, (std::vector<std::string>{"vname=v,x=0,y=-50,label=b",
@@ -61,7 +61,7 @@ TEST(ReplayGeodesy, TheMissionOriginPlacesLatLonReportsAndHazardLines) {
 }
 
 TEST(ReplayGeodesy, WithoutAnOriginLatLonInputIsRefusedSayingWhy_T9) {
-  TempDir dir;
+  ScratchDir dir;
   make(dir, "");
   const auto r = run(dir, {"m.moos", "in.alog", "--seed=1"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -74,7 +74,7 @@ TEST(ReplayGeodesy, WithoutAnOriginLatLonInputIsRefusedSayingWhy_T9) {
 }
 
 TEST(ReplayGeodesy, AnOriginThatIsNotANumberIsAConfigWarningNamingIt) {
-  TempDir dir;
+  ScratchDir dir;
   make(dir, "LatOrigin = north\nLongOrigin = -71\n");
   const auto r = run(dir, {"m.moos", "in.alog", "--seed=1"});
   ASSERT_EQ(r.exit_code, 0) << r.err;

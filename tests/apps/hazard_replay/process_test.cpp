@@ -11,14 +11,14 @@
 namespace hazard_replay {
 namespace {
 
+using test_support::alog_entries;
+using test_support::read_file;
+using test_support::ScratchDir;
+using test_support::write_file;
 using testing::alog;
-using testing::entries;
 using testing::Line;
 using testing::mission;
-using testing::read_file;
 using testing::run;
-using testing::TempDir;
-using testing::write_file;
 
 std::string pose(const std::string& name, double x, double y, double heading = 0) {
   hazard::NodeReport r;
@@ -53,7 +53,7 @@ std::vector<Line> small_input() {
 }
 
 // A mission folder: m.moos beside fields/hazards.txt, and in.alog.
-void make_mission(const TempDir& dir, const std::string& block = kBlock) {
+void make_mission(const ScratchDir& dir, const std::string& block = kBlock) {
   std::filesystem::create_directories(dir / "fields");
   write_file(dir / "m.moos", mission(block));
   write_file(dir / "fields/hazards.txt", kHazards);
@@ -61,14 +61,14 @@ void make_mission(const TempDir& dir, const std::string& block = kBlock) {
 }
 
 TEST(ReplayProcess, HelpExitsZero) {
-  TempDir dir;
+  ScratchDir dir;
   const auto r = run(dir, {"--help"});
   EXPECT_EQ(r.exit_code, 0);
   EXPECT_NE(r.out.find("Usage: hazard_replay CONFIG.moos INPUT.alog"), std::string::npos);
 }
 
 TEST(ReplayProcess, BadOptionExitsTwoNamingIt) {
-  TempDir dir;
+  ScratchDir dir;
   make_mission(dir);
   const auto r = run(dir, {"m.moos", "in.alog", "--seed=many"});
   EXPECT_EQ(r.exit_code, 2);
@@ -77,7 +77,7 @@ TEST(ReplayProcess, BadOptionExitsTwoNamingIt) {
 }
 
 TEST(ReplayProcess, MissingFilesAndBlockExitOneNamingThem) {
-  TempDir dir;
+  ScratchDir dir;
   make_mission(dir);
   auto r = run(dir, {"nope.moos", "in.alog"});
   EXPECT_EQ(r.exit_code, 1);
@@ -95,11 +95,11 @@ TEST(ReplayProcess, MissingFilesAndBlockExitOneNamingThem) {
 }
 
 TEST(ReplayProcess, ReplaysMailAndIterationsInTimeOrder) {
-  TempDir dir;
+  ScratchDir dir;
   make_mission(dir);
   const auto r = run(dir, {"m.moos", "in.alog", "--seed=3"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const auto out = entries(r.out);
+  const auto out = alog_entries(r.out);
   ASSERT_FALSE(out.empty());
   double last = -1;
   int polygons = 0;
@@ -128,7 +128,7 @@ TEST(ReplayProcess, ReplaysMailAndIterationsInTimeOrder) {
 }
 
 TEST(ReplayProcess, SameInputsAndSeedSameBytes) {
-  TempDir dir;
+  ScratchDir dir;
   make_mission(dir);
   const auto a = run(dir, {"m.moos", "in.alog", "--seed=11"});
   const auto b = run(dir, {"m.moos", "in.alog", "--seed=11"});
@@ -141,7 +141,7 @@ TEST(ReplayProcess, SameInputsAndSeedSameBytes) {
 }
 
 TEST(ReplayProcess, SeedPrecedence_Rulings) {
-  TempDir dir;
+  ScratchDir dir;
   make_mission(dir, std::string(kBlock) + "  random_seed = 5\n  seed_random = true\n");
   auto r = run(dir, {"m.moos", "in.alog"});
   EXPECT_NE(r.err.find("seed 5 (random_seed)"), std::string::npos) << r.err;
@@ -158,7 +158,7 @@ TEST(ReplayProcess, SeedPrecedence_Rulings) {
 }
 
 TEST(ReplayProcess, MalformedLogLinesAreSkippedWithFileAndLine) {
-  TempDir dir;
+  ScratchDir dir;
   make_mission(dir);
   std::string text = alog(small_input());
   text += "not-a-time NODE_REPORT x NAME=v1\n";        // line 10
@@ -172,8 +172,8 @@ TEST(ReplayProcess, MalformedLogLinesAreSkippedWithFileAndLine) {
       << r.err;
   EXPECT_NE(r.err.find("bad.alog:11: warning:"), std::string::npos);
   // Every good line was replayed: the postings equal those of the clean log.
-  const auto clean = entries(run(dir, {"m.moos", "in.alog", "--seed=3"}).out);
-  const auto with_bad = entries(r.out);
+  const auto clean = alog_entries(run(dir, {"m.moos", "in.alog", "--seed=3"}).out);
+  const auto with_bad = alog_entries(r.out);
   ASSERT_EQ(with_bad.size(), clean.size());
   for (std::size_t i = 0; i < clean.size(); ++i) {
     EXPECT_EQ(with_bad[i].time_s, clean[i].time_s);
@@ -183,7 +183,7 @@ TEST(ReplayProcess, MalformedLogLinesAreSkippedWithFileAndLine) {
 }
 
 TEST(ReplayProcess, ConfigAndMailWarningsGoToStandardError) {
-  TempDir dir;
+  ScratchDir dir;
   make_mission(dir, std::string(kBlock) + "  swath_transparency = 7\n");
   write_file(dir / "fields/hazards.txt",
              std::string(kHazards) + "hazard = x=1,y=1,label=a,type=hazard\n");
@@ -204,14 +204,14 @@ TEST(ReplayProcess, ConfigAndMailWarningsGoToStandardError) {
 }
 
 TEST(ReplayProcess, UntilStopsEarlyAndAliasNamesTheSource) {
-  TempDir dir;
+  ScratchDir dir;
   std::filesystem::create_directories(dir / "fields");
   write_file(dir / "m.moos", mission(kBlock, "shoreside_sensor"));
   write_file(dir / "fields/hazards.txt", kHazards);
   write_file(dir / "in.alog", alog(small_input()));
   const auto r = run(dir, {"m.moos", "in.alog", "--alias=shoreside_sensor", "--until=2.6"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const auto out = entries(r.out);
+  const auto out = alog_entries(r.out);
   ASSERT_FALSE(out.empty());
   for (const auto& e : out) {
     EXPECT_LE(e.time_s, 2.6);
@@ -221,18 +221,18 @@ TEST(ReplayProcess, UntilStopsEarlyAndAliasNamesTheSource) {
 }
 
 TEST(ReplayProcess, UntilBeyondTheInputKeepsIterating) {
-  TempDir dir;
+  ScratchDir dir;
   make_mission(dir);
   const auto r = run(dir, {"m.moos", "in.alog", "--until=20"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_EQ(entries(r.out).back().time_s, 20.0);
+  EXPECT_EQ(alog_entries(r.out).back().time_s, 20.0);
   EXPECT_EQ(run(dir, {"m.moos", "in.alog", "--until=1e12"}).exit_code, 1);  // guard
 }
 
 // The same survey with poses at 2 Hz and at 10 Hz: the same detections (rulings "What is
 // promised"; every object lies well inside the swath).
 TEST(ReplayProcess, PoseRateDoesNotChangeTheDetections) {
-  TempDir dir;
+  ScratchDir dir;
   std::set<std::string> seen[2];
   int index = 0;
   for (double hz : {2.0, 10.0}) {
@@ -246,7 +246,7 @@ TEST(ReplayProcess, PoseRateDoesNotChangeTheDetections) {
     const auto r = run(dir, {"m.moos", "in.alog", "--until=" + hazard::fmt(s.end_time_s)});
     ASSERT_EQ(r.exit_code, 0) << r.err;
     int detections = 0;
-    for (const auto& e : entries(r.out)) {
+    for (const auto& e : alog_entries(r.out)) {
       if (e.variable == "UHZ_DETECTION_REPORT" || e.variable == "UHZ_HAZARD_REPORT") {
         seen[index].insert(e.variable + " " + e.value);
         detections += e.variable == "UHZ_DETECTION_REPORT";

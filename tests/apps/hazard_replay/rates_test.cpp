@@ -6,8 +6,8 @@
 #include <fstream>
 #include <map>
 
-#include "hazard/messages/node_report.hpp"
 #include "hazard/dice.hpp"
+#include "hazard/messages/node_report.hpp"
 #include "hazard/sensor_model.hpp"
 #include "hazard/text.hpp"
 #include "replay_support.hpp"
@@ -15,11 +15,11 @@
 namespace hazard_replay {
 namespace {
 
+using test_support::ScratchDir;
+using test_support::write_file;
 using testing::Line;
 using testing::mission;
 using testing::run;
-using testing::TempDir;
-using testing::write_file;
 
 double five_sigma(double p, double n) { return 5.0 * std::sqrt(p * (1.0 - p) / n); }
 
@@ -68,7 +68,7 @@ void for_each_entry(const std::filesystem::path& path, F&& f) {
 }
 
 TEST(ReplayRates, DetectionRatesEndToEnd) {
-  TempDir dir;
+  ScratchDir dir;
   constexpr int kPerKind = 1000, kPasses = 100;  // 100,000 trials per rate
   int n = 0;
   std::string field = objects('h', kPerKind, "type=hazard", n);
@@ -105,7 +105,7 @@ TEST(ReplayRates, DetectionRatesEndToEnd) {
 }
 
 TEST(ReplayRates, ClassificationRatesEndToEnd) {
-  TempDir dir;
+  ScratchDir dir;
   // pd 1: all detected except resemblance objects (0.65). 100 vehicles x 10 passes.
   constexpr int kVehicles = 100, kPasses = 10;
   int n = 0;

@@ -1,89 +1,31 @@
 #pragma once
-// Helpers for the hazard_replay tests: a private temporary folder per test, files, and running
-// the real binary with its standard output and error captured in files.
+// Helpers for the hazard_replay tests: running the real binary in a test's scratch folder
+// (tests/support: the folder, its files and the child process), and the mission and .alog
+// inputs the tests write there.
 
-#include <gtest/gtest.h>
-#include <unistd.h>
-
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
+#include "alog_files.hpp"
+#include "child_process.hpp"
 #include "moos/alog.hpp"
+#include "scratch_files.hpp"
 
 namespace hazard_replay::testing {
 
-namespace fs = std::filesystem;
+/// Bound on one run: far above the few seconds the largest statistical run takes, only to stop
+/// a hang.
+inline constexpr double kRunDeadline_s = 120.0;
 
-/// A fresh folder for the running test, removed when the object goes away.
-class TempDir {
- public:
-  TempDir() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    path_ = fs::temp_directory_path() /
-            ("hazard_replay_" + std::to_string(::getpid()) + "_" + info->test_suite_name() + "_" +
-             info->name());
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code ignored;
-    fs::remove_all(path_, ignored);
-  }
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-
-  fs::path operator/(const std::string& name) const { return path_ / name; }
-  const fs::path& path() const { return path_; }
-
- private:
-  fs::path path_;
-};
-
-inline void write_file(const fs::path& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-}
-
-inline std::string read_file(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-inline std::string quote(const std::string& s) {
-  std::string out = "'";
-  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
-}
-
-struct Result {
-  int exit_code = -1;
-  std::string out;  ///< standard output (empty when `keep_output` is false)
-  std::string err;
-};
-
-/// Runs hazard_replay with `args` in `dir`; stdout and stderr go to files there (or, with
-/// `keep_streams` false, nowhere: the big statistical runs write their log with --output).
-inline Result run(const TempDir& dir, const std::vector<std::string>& args,
-                  bool keep_streams = true) {
-  std::string command = "cd " + quote(dir.path().string()) + " && " + quote(HAZARD_REPLAY_PATH);
-  for (const auto& a : args) command += " " + quote(a);
-  const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
-  command += " > " + quote(keep_streams ? out.string() : "/dev/null") + " 2> " +
-             quote(keep_streams ? err.string() : "/dev/null");
-  const int status = std::system(command.c_str());
-  Result r;
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  if (keep_streams) {
-    r.out = read_file(out);
-    r.err = read_file(err);
-  }
-  return r;
+/// Runs hazard_replay with `args` in `dir` (relative paths are read there); its standard output
+/// and error are captured (or, with `keep_streams` false, discarded: the big statistical runs
+/// write their log with --output).
+inline test_support::RunResult run(const test_support::ScratchDir& dir,
+                                   const std::vector<std::string>& args, bool keep_streams = true) {
+  test_support::SpawnOptions options;
+  options.working_dir = dir.path().string();
+  options.keep_output = keep_streams;
+  return test_support::run_program(HAZARD_REPLAY_PATH, args, kRunDeadline_s, options);
 }
 
 /// A ProcessConfig block.
@@ -103,18 +45,6 @@ inline std::string alog(const std::vector<Line>& lines) {
   std::string out = moos::alog_header("input.alog", 1700000000.0);
   for (const auto& l : lines) {
     out += moos::format_alog_line({l.time_s, l.variable, "test", l.value});
-  }
-  return out;
-}
-
-/// The entries of an .alog text.
-inline std::vector<moos::AlogEntry> entries(const std::string& text) {
-  std::vector<moos::AlogEntry> out;
-  std::istringstream in(text);
-  std::string line;
-  while (std::getline(in, line)) {
-    const auto p = moos::parse_alog_line(line);
-    if (p.kind == moos::AlogLineKind::kEntry) out.push_back(p.entry);
   }
   return out;
 }

@@ -9,13 +9,13 @@
 #include <thread>
 
 #include "moos/tcp_client.hpp"
-#include "process_support.hpp"
+#include "moosdb_server.hpp"
 
 namespace moos {
 namespace {
 
-using process_test::Server;
-using process_test::steady_now_s;
+using test_support::MoosdbServer;
+using test_support::steady_now_s;
 
 constexpr double kConnect_s = 10.0;
 constexpr double kDelivery_s = 60.0;  // upper bound for 30,000 messages on a loaded 2-core box
@@ -64,8 +64,8 @@ std::string binary_payload(int i) {
 class ClientWithServer : public ::testing::Test {
  protected:
   void SetUp() override {
-    server = Server::start();
-    ASSERT_TRUE(server.has_value()) << "moosdb-lite did not start";
+    server.emplace(MOOSDB_LITE_PATH);
+    ASSERT_TRUE(server->ok()) << "moosdb-lite did not start";
     a = connect_client(server->port(), "pA");
     b = connect_client(server->port(), "pB");
     ASSERT_TRUE(a && b);
@@ -73,9 +73,9 @@ class ClientWithServer : public ::testing::Test {
   void TearDown() override {
     a.reset();
     b.reset();
-    if (server) server->process().stop();
+    if (server) server->stop();
   }
-  std::optional<Server> server;
+  std::optional<MoosdbServer> server;
   std::unique_ptr<TcpClient> a;
   std::unique_ptr<TcpClient> b;
 };
@@ -174,24 +174,24 @@ TEST_F(ClientWithServer, ThrottledIntervalDropsUpdates_5_3) {
 }
 
 TEST(ClientServerRestart, ClientSurvivesAKilledServerAndGetsItsSubscriptionsBack_1_9) {
-  auto server = Server::start();
-  ASSERT_TRUE(server.has_value());
-  const int port = server->port();
+  MoosdbServer server(MOOSDB_LITE_PATH);
+  ASSERT_TRUE(server.ok());
+  const int port = server.port();
   auto b = connect_client(port, "pB");
   ASSERT_TRUE(b);
   ASSERT_TRUE(b->register_variable("AFTER_RESTART"));
   ASSERT_TRUE(b->register_wildcard("WILD_*"));
   ASSERT_TRUE(b->flush(kConnect_s));
 
-  server->process().kill_now();  // SIGKILL: no goodbye
+  server.process().kill_now();  // SIGKILL: no goodbye
   double deadline = steady_now_s() + kConnect_s;
   while (b->is_connected() && steady_now_s() < deadline)
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   ASSERT_FALSE(b->is_connected());
   EXPECT_FALSE(b->notify("WHILE_DOWN", 1.0));
 
-  auto restarted = Server::start(port);  // same port: the client keeps retrying it
-  ASSERT_TRUE(restarted.has_value());
+  MoosdbServer restarted(MOOSDB_LITE_PATH, {}, port);  // same port: the client keeps retrying it
+  ASSERT_TRUE(restarted.ok());
   ASSERT_TRUE(b->wait_until_connected(kConnect_s));
   EXPECT_EQ(b->connection_count(), 2u);
   auto a = connect_client(port, "pA");
@@ -205,17 +205,17 @@ TEST(ClientServerRestart, ClientSurvivesAKilledServerAndGetsItsSubscriptionsBack
   EXPECT_EQ(mail[1].key, "WILD_ONE");
   a.reset();
   b.reset();
-  restarted->process().stop();
+  restarted.stop();
 }
 
 TEST(ClientServerPoison, SecondClientWithTheSameNameIsRefusedForGood_1_6) {
-  auto server = Server::start();
-  ASSERT_TRUE(server.has_value());
-  auto first = connect_client(server->port(), "pSame");
+  MoosdbServer server(MOOSDB_LITE_PATH);
+  ASSERT_TRUE(server.ok());
+  auto first = connect_client(server.port(), "pSame");
   ASSERT_TRUE(first);
   TcpClientOptions o;
   o.host = "127.0.0.1";
-  o.port = server->port();
+  o.port = server.port();
   o.name = "pSame";
   TcpClient second(o);
   ASSERT_TRUE(second.start());
@@ -225,7 +225,7 @@ TEST(ClientServerPoison, SecondClientWithTheSameNameIsRefusedForGood_1_6) {
   EXPECT_TRUE(first->is_connected());
   second.close();
   first.reset();
-  server->process().stop();
+  server.stop();
 }
 
 }  // namespace

@@ -4,32 +4,25 @@
 
 #include <thread>
 
-#include "moos/alog.hpp"
+#include "alog_files.hpp"
+#include "child_process.hpp"
 #include "moos/tcp_client.hpp"
-#include "process_support.hpp"
+#include "moosdb_server.hpp"
 
 namespace moos {
 namespace {
 
-using process_test::Child;
-using process_test::run_cli;
-using process_test::Server;
-using process_test::steady_now_s;
+using test_support::alog_entries;
+using test_support::Child;
+using test_support::MoosdbServer;
+using test_support::run_program;
+using test_support::RunResult;
+using test_support::steady_now_s;
 
 constexpr double kRun_s = 20.0;  // bound on any single moos-cli run
 
-std::vector<AlogEntry> parse_lines(const std::string& text) {
-  std::vector<AlogEntry> out;
-  std::size_t pos = 0;
-  while (pos < text.size()) {
-    const auto nl = text.find('\n', pos);
-    const auto line = text.substr(pos, nl == std::string::npos ? std::string::npos : nl - pos);
-    const auto parsed = parse_alog_line(line);
-    if (parsed.kind == AlogLineKind::kEntry) out.push_back(parsed.entry);
-    if (nl == std::string::npos) break;
-    pos = nl + 1;
-  }
-  return out;
+RunResult run_cli(const std::vector<std::string>& args) {
+  return run_program(MOOS_CLI_PATH, args, kRun_s);
 }
 
 /// Waits until moos-cli watch has subscribed (its client name appears in DB_CLIENTS).
@@ -54,14 +47,14 @@ bool wait_for_client(int port, const std::string& name) {
 class CliWithServer : public ::testing::Test {
  protected:
   void SetUp() override {
-    server = Server::start();
-    ASSERT_TRUE(server.has_value());
+    server.emplace(MOOSDB_LITE_PATH);
+    ASSERT_TRUE(server->ok());
     port_arg = "--port=" + std::to_string(server->port());
   }
   void TearDown() override {
-    if (server) server->process().stop();
+    if (server) server->stop();
   }
-  std::optional<Server> server;
+  std::optional<MoosdbServer> server;
   std::string port_arg;
 };
 
@@ -70,12 +63,10 @@ TEST_F(CliWithServer, WatchPrintsWhatPokePostsAsAlogLines) {
                                             "--count=4", "--timeout=15", "NUM", "TXT_*", "BIN"});
   ASSERT_TRUE(watch.has_value());
   ASSERT_TRUE(wait_for_client(server->port(), "watcher"));
-  std::optional<int> poke_rc;
-  Child poke = run_cli({"poke", "--host=127.0.0.1", port_arg, "--name=poker", "NUM=12.5",
-                        "TXT_A=hello world", "TXT_B=\"42\"", "NUM:=not a number"},
-                       kRun_s, &poke_rc);
-  EXPECT_EQ(poke_rc, 0) << poke.stderr_text();
-  EXPECT_EQ(poke.stdout_text(),
+  const RunResult poke = run_cli({"poke", "--host=127.0.0.1", port_arg, "--name=poker", "NUM=12.5",
+                                  "TXT_A=hello world", "TXT_B=\"42\"", "NUM:=not a number"});
+  EXPECT_EQ(poke.exit_code, 0) << poke.err;
+  EXPECT_EQ(poke.out,
             "NUM = 12.5\nTXT_A = \"hello world\"\nTXT_B = \"42\"\nNUM = \"not a number\"\n");
   // The fourth message: a binary value from our own client.
   TcpClientOptions o;
@@ -89,7 +80,7 @@ TEST_F(CliWithServer, WatchPrintsWhatPokePostsAsAlogLines) {
 
   const auto rc = watch->wait(kRun_s);
   EXPECT_EQ(rc, 0) << watch->stderr_text();
-  const auto lines = parse_lines(watch->stdout_text());
+  const auto lines = alog_entries(watch->stdout_text());
   ASSERT_EQ(lines.size(), 4u) << watch->stdout_text();
   EXPECT_EQ(lines[0].variable, "NUM");
   EXPECT_EQ(lines[0].source, "poker");
@@ -103,16 +94,14 @@ TEST_F(CliWithServer, WatchPrintsWhatPokePostsAsAlogLines) {
 }
 
 TEST_F(CliWithServer, WatchTimesOutWithExitTwoWhenTheCountIsNotReached) {
-  std::optional<int> rc;
-  Child watch = run_cli({"watch", port_arg, "--count=1", "--timeout=0.5", "NOTHING_HERE"}, kRun_s, &rc);
-  EXPECT_EQ(rc, 2);
-  EXPECT_NE(watch.stderr_text().find("timed out"), std::string::npos);
+  const RunResult watch = run_cli({"watch", port_arg, "--count=1", "--timeout=0.5", "NOTHING_HERE"});
+  EXPECT_EQ(watch.exit_code, 2);
+  EXPECT_NE(watch.err.find("timed out"), std::string::npos);
 }
 
 TEST_F(CliWithServer, WatchWithoutCountEndsNormallyAtTheTimeout) {
-  std::optional<int> rc;
-  Child watch = run_cli({"watch", port_arg, "--timeout=0.5", "NOTHING_HERE"}, kRun_s, &rc);
-  EXPECT_EQ(rc, 0) << watch.stderr_text();
+  const RunResult watch = run_cli({"watch", port_arg, "--timeout=0.5", "NOTHING_HERE"});
+  EXPECT_EQ(watch.exit_code, 0) << watch.err;
 }
 
 TEST_F(CliWithServer, DuplicateNameIsRefusedWithExitFour) {
@@ -122,35 +111,32 @@ TEST_F(CliWithServer, DuplicateNameIsRefusedWithExitFour) {
   o.name = "taken";
   TcpClient holder(o);
   ASSERT_TRUE(holder.start() && holder.wait_until_connected(5.0));
-  std::optional<int> rc;
-  Child poke = run_cli({"poke", port_arg, "--name=taken", "X=1"}, kRun_s, &rc);
-  EXPECT_EQ(rc, 4);
-  EXPECT_NE(poke.stderr_text().find("taken"), std::string::npos);
+  const RunResult poke = run_cli({"poke", port_arg, "--name=taken", "X=1"});
+  EXPECT_EQ(poke.exit_code, 4);
+  EXPECT_NE(poke.err.find("taken"), std::string::npos);
 }
 
 TEST(CliWithoutServer, NoServerMeansExitThree) {
   int port = 0;
   {
-    auto s = Server::start();
-    ASSERT_TRUE(s.has_value());
-    port = s->port();
-    s->process().stop();
+    MoosdbServer s(MOOSDB_LITE_PATH);
+    ASSERT_TRUE(s.ok());
+    port = s.port();
+    s.stop();
   }
-  std::optional<int> rc;
-  Child poke = run_cli({"poke", "--port=" + std::to_string(port), "--connect-timeout=0.5", "X=1"},
-                       kRun_s, &rc);
-  EXPECT_EQ(rc, 3);
-  EXPECT_NE(poke.stderr_text().find("no connection"), std::string::npos);
+  const RunResult poke =
+      run_cli({"poke", "--port=" + std::to_string(port), "--connect-timeout=0.5", "X=1"});
+  EXPECT_EQ(poke.exit_code, 3);
+  EXPECT_NE(poke.err.find("no connection"), std::string::npos);
 }
 
 TEST(CliUsage, BadUsageExitsOneAndHelpExitsZero) {
-  std::optional<int> rc;
-  Child bad = run_cli({"poke"}, kRun_s, &rc);
-  EXPECT_EQ(rc, 1);
-  EXPECT_NE(bad.stderr_text().find("poke needs at least one VAR=value"), std::string::npos);
-  Child help = run_cli({"--help"}, kRun_s, &rc);
-  EXPECT_EQ(rc, 0);
-  EXPECT_NE(help.stdout_text().find("moos-cli watch"), std::string::npos);
+  const RunResult bad = run_cli({"poke"});
+  EXPECT_EQ(bad.exit_code, 1);
+  EXPECT_NE(bad.err.find("poke needs at least one VAR=value"), std::string::npos);
+  const RunResult help = run_cli({"--help"});
+  EXPECT_EQ(help.exit_code, 0);
+  EXPECT_NE(help.out.find("moos-cli watch"), std::string::npos);
 }
 
 }  // namespace

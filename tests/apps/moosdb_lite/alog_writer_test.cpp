@@ -2,9 +2,6 @@
 
 #include <gtest/gtest.h>
 
-#include <unistd.h>
-
-#include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -12,16 +9,13 @@
 
 #include "alog_writer.hpp"
 #include "moos/alog.hpp"
+#include "scratch_files.hpp"
 #include "test_messages.hpp"
 
 namespace moosdb_lite {
 namespace {
 
 using namespace moosdb_lite::test;
-
-std::string temp_path(const std::string& name) {
-  return ::testing::TempDir() + "/" + name + "_" + std::to_string(::getpid()) + ".alog";
-}
 
 std::vector<std::string> read_lines(const std::string& path) {
   std::ifstream in(path);
@@ -46,7 +40,8 @@ TEST(AlogValue, StringsAsTheyAreAndBinaryAsHex) {
 }
 
 TEST(AlogWriter, WritesHeaderAndOneLinePerMessageRelativeToLogstart) {
-  const std::string path = temp_path("writer");
+  const test_support::ScratchDir dir;
+  const std::string path = (dir / "writer.alog").string();
   {
     AlogWriter writer;
     std::string error;
@@ -66,7 +61,6 @@ TEST(AlogWriter, WritesHeaderAndOneLinePerMessageRelativeToLogstart) {
   EXPECT_EQ(first.entry.value, "12.5");
   const auto second = moos::parse_alog_line(lines[4]);
   EXPECT_EQ(second.entry.value, "SURVEY now");
-  std::remove(path.c_str());
 }
 
 TEST(AlogWriter, UnwritableFileIsAnErrorNamingIt) {

@@ -12,14 +12,17 @@
 #include <thread>
 #include <vector>
 
+#include "child_process.hpp"
+#include "moosdb_server.hpp"
 #include "raw_client.hpp"
-#include "server_process.hpp"
 #include "test_messages.hpp"
 
 namespace moosdb_lite::test {
 namespace {
 
 using moos::Message;
+using test_support::MoosdbServer;
+using test_support::steady_now_s;
 namespace mt = moos::msg_type;
 
 /// Bystanders stay silent for long stretches: the inactivity limit must not be what drops them.
@@ -69,7 +72,7 @@ class Bystanders {
 };
 
 TEST(MoosdbLiteBadInput, WrongBannerIsClosedWithoutReply_1_4) {
-  ServerProcess server({kPatientClients});
+  MoosdbServer server(MOOSDB_LITE_PATH, {kPatientClients});
   ASSERT_TRUE(server.ok());
   Bystanders others;
   others.join(server.port());
@@ -88,7 +91,7 @@ TEST(MoosdbLiteBadInput, WrongBannerIsClosedWithoutReply_1_4) {
 }
 
 TEST(MoosdbLiteBadInput, PacketClaimingTwoGigabytesDropsTheSender_3_4) {
-  ServerProcess server({kPatientClients});
+  MoosdbServer server(MOOSDB_LITE_PATH, {kPatientClients});
   ASSERT_TRUE(server.ok());
   Bystanders others;
   others.join(server.port());
@@ -106,7 +109,7 @@ TEST(MoosdbLiteBadInput, PacketClaimingTwoGigabytesDropsTheSender_3_4) {
 }
 
 TEST(MoosdbLiteBadInput, PacketAboveAConfiguredLimitDropsTheSender_3_4) {
-  ServerProcess server({"--max-packet-bytes=1000", kPatientClients});
+  MoosdbServer server(MOOSDB_LITE_PATH, {"--max-packet-bytes=1000", kPatientClients});
   ASSERT_TRUE(server.ok());
   Bystanders others;
   others.join(server.port());
@@ -120,7 +123,7 @@ TEST(MoosdbLiteBadInput, PacketAboveAConfiguredLimitDropsTheSender_3_4) {
 }
 
 TEST(MoosdbLiteBadInput, TruncatedPacketThenDisconnectIsDiscardedWithReason) {
-  ServerProcess server({kPatientClients});
+  MoosdbServer server(MOOSDB_LITE_PATH, {kPatientClients});
   ASSERT_TRUE(server.ok());
   Bystanders others;
   others.join(server.port());
@@ -138,7 +141,7 @@ TEST(MoosdbLiteBadInput, TruncatedPacketThenDisconnectIsDiscardedWithReason) {
 }
 
 TEST(MoosdbLiteBadInput, StructurallyMalformedMessageDropsTheSender_2_7) {
-  ServerProcess server({kPatientClients});
+  MoosdbServer server(MOOSDB_LITE_PATH, {kPatientClients});
   ASSERT_TRUE(server.ok());
   Bystanders others;
   others.join(server.port());
@@ -157,7 +160,7 @@ TEST(MoosdbLiteBadInput, StructurallyMalformedMessageDropsTheSender_2_7) {
 }
 
 TEST(MoosdbLiteBadInput, SemanticallyMalformedMessageIsRefusedAndTheClientStays) {
-  ServerProcess server({kPatientClients});
+  MoosdbServer server(MOOSDB_LITE_PATH, {kPatientClients});
   ASSERT_TRUE(server.ok());
   Bystanders others;
   others.join(server.port());
@@ -184,22 +187,22 @@ TEST(MoosdbLiteBadInput, SemanticallyMalformedMessageIsRefusedAndTheClientStays)
 }
 
 TEST(MoosdbLiteBadInput, SilentConnectionIsDroppedAfterTheBannerTimeout) {
-  ServerProcess server({"--banner-timeout=0.5", kPatientClients});
+  MoosdbServer server(MOOSDB_LITE_PATH, {"--banner-timeout=0.5", kPatientClients});
   ASSERT_TRUE(server.ok());
   Bystanders others;
   others.join(server.port());
   RawClient mute;
   ASSERT_TRUE(mute.connect(server.port()));
-  const double start = now_s();
+  const double start = steady_now_s();
   EXPECT_TRUE(mute.wait_closed(kArrivalTimeout_s));
-  EXPECT_GE(now_s() - start, 0.4);
+  EXPECT_GE(steady_now_s() - start, 0.4);
   EXPECT_TRUE(server.wait_for_log("no protocol banner within 0.5 s; connection dropped", kArrivalTimeout_s));
   others.post();
   others.expect_everything_received();
 }
 
 TEST(MoosdbLiteBadInput, BannerWithoutIdentificationIsDroppedAfterTheHandshakeTimeout_1_5) {
-  ServerProcess server({"--handshake-timeout=0.5", kPatientClients});
+  MoosdbServer server(MOOSDB_LITE_PATH, {"--handshake-timeout=0.5", kPatientClients});
   ASSERT_TRUE(server.ok());
   Bystanders others;
   others.join(server.port());
@@ -214,7 +217,7 @@ TEST(MoosdbLiteBadInput, BannerWithoutIdentificationIsDroppedAfterTheHandshakeTi
 }
 
 TEST(MoosdbLiteBadInput, SyncClientThatNeverCollectsItsMailIsDroppedAtTheLimit) {
-  ServerProcess server({"--max-output-bytes=100000", kPatientClients});
+  MoosdbServer server(MOOSDB_LITE_PATH, {"--max-output-bytes=100000", kPatientClients});
   ASSERT_TRUE(server.ok());
   Bystanders others;
   others.join(server.port());
@@ -235,7 +238,7 @@ TEST(MoosdbLiteBadInput, SyncClientThatNeverCollectsItsMailIsDroppedAtTheLimit) 
 TEST(MoosdbLiteBadInput, AsyncClientThatDoesNotReadIsDroppedAtTheOutputLimit) {
   constexpr int kMessages = 3000;
   constexpr std::size_t kPayloadBytes = 4000;
-  ServerProcess server({"--max-output-bytes=300000", kPatientClients});
+  MoosdbServer server(MOOSDB_LITE_PATH, {"--max-output-bytes=300000", kPatientClients});
   ASSERT_TRUE(server.ok());
   RawClient reader;  // reads everything, in lock step with the publisher
   ASSERT_TRUE(reader.join(server.port(), "pReader", true));
@@ -262,7 +265,7 @@ TEST(MoosdbLiteBadInput, AsyncClientThatDoesNotReadIsDroppedAtTheOutputLimit) {
 TEST(MoosdbLiteBadInput, FloodOfOneHundredThousandMessagesLosesNothing) {
   constexpr int kFlood = 100000;
   constexpr int kMessagesPerWrite = 1000;
-  ServerProcess server({kPatientClients});
+  MoosdbServer server(MOOSDB_LITE_PATH, {kPatientClients});
   ASSERT_TRUE(server.ok());
   Bystanders others;
   others.join(server.port());

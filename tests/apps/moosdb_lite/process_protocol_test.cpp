@@ -11,15 +11,22 @@
 #include <thread>
 #include <vector>
 
+#include "child_process.hpp"
 #include "moos/alog.hpp"
+#include "moosdb_server.hpp"
 #include "raw_client.hpp"
-#include "server_process.hpp"
 #include "test_messages.hpp"
 
 namespace moosdb_lite::test {
 namespace {
 
 using moos::Message;
+using test_support::MoosdbServer;
+using test_support::run_program;
+using test_support::RunResult;
+using test_support::ScratchDir;
+using test_support::steady_now_s;
+using test_support::write_file;
 namespace mt = moos::msg_type;
 namespace dt = moos::data_type;
 
@@ -42,7 +49,7 @@ std::vector<std::string> keys_of(const std::vector<Message>& messages) {
 // Handshake (spec 1.4-1.8)
 
 TEST(MoosdbLiteProcess, WelcomeCarriesHostnameCommunitySkewAndAsynchronous_1_6) {
-  ServerProcess server({"--moos_community=alpha"});
+  MoosdbServer server(MOOSDB_LITE_PATH, {"--moos_community=alpha"});
   ASSERT_TRUE(server.ok());
   RawClient client;
   ASSERT_TRUE(client.connect(server.port()));
@@ -65,7 +72,7 @@ TEST(MoosdbLiteProcess, WelcomeCarriesHostnameCommunitySkewAndAsynchronous_1_6) 
 }
 
 TEST(MoosdbLiteProcess, DuplicateNameIsPoisonedAndClosedWhileTheFirstKeepsWorking_1_6) {
-  ServerProcess server;
+  MoosdbServer server(MOOSDB_LITE_PATH);
   ASSERT_TRUE(server.ok());
   RawClient first;
   ASSERT_TRUE(first.join(server.port(), "pTwin", false));
@@ -86,7 +93,7 @@ TEST(MoosdbLiteProcess, DuplicateNameIsPoisonedAndClosedWhileTheFirstKeepsWorkin
 }
 
 TEST(MoosdbLiteProcess, ReconnectingClientFindsItsNameFreeImmediately_1_9) {
-  ServerProcess server;
+  MoosdbServer server(MOOSDB_LITE_PATH);
   ASSERT_TRUE(server.ok());
   for (int round = 0; round < 5; ++round) {
     RawClient client;
@@ -98,7 +105,7 @@ TEST(MoosdbLiteProcess, ReconnectingClientFindsItsNameFreeImmediately_1_9) {
 // Delivery rules (spec 5.6)
 
 TEST(MoosdbLiteProcess, SyncClientGetsOneReplyPerPacketStartingWithNullAndNothingUnsolicited_5_6) {
-  ServerProcess server;
+  MoosdbServer server(MOOSDB_LITE_PATH);
   ASSERT_TRUE(server.ok());
   RawClient sync;
   ASSERT_TRUE(sync.join(server.port(), "pSync", false));
@@ -133,7 +140,7 @@ TEST(MoosdbLiteProcess, SyncClientGetsOneReplyPerPacketStartingWithNullAndNothin
 }
 
 TEST(MoosdbLiteProcess, AsyncClientGetsTimingEchoFirstAndMailWithoutAsking_5_6) {
-  ServerProcess server;
+  MoosdbServer server(MOOSDB_LITE_PATH);
   ASSERT_TRUE(server.ok());
   RawClient async;
   ASSERT_TRUE(async.join(server.port(), "pAsync", true));
@@ -174,7 +181,7 @@ TEST(MoosdbLiteProcess, AsyncClientGetsTimingEchoFirstAndMailWithoutAsking_5_6) 
 }
 
 TEST(MoosdbLiteProcess, PacketSentJustBeforeClosingIsProcessed_5_6) {
-  ServerProcess server;
+  MoosdbServer server(MOOSDB_LITE_PATH);
   ASSERT_TRUE(server.ok());
   RawClient watcher;
   ASSERT_TRUE(watcher.join(server.port(), "pWatch", true));
@@ -197,7 +204,7 @@ TEST(MoosdbLiteProcess, PacketSentJustBeforeClosingIsProcessed_5_6) {
 // NOTIFY, REGISTER, wildcards (spec 5.3-5.5)
 
 TEST(MoosdbLiteProcess, RegisterGetsSnapshotWithWriterIdAndOriginalTime_5_4) {
-  ServerProcess server({"--moos_community=alpha"});
+  MoosdbServer server(MOOSDB_LITE_PATH, {"--moos_community=alpha"});
   ASSERT_TRUE(server.ok());
   RawClient writer;
   ASSERT_TRUE(writer.join(server.port(), "pWriter", false));
@@ -217,7 +224,7 @@ TEST(MoosdbLiteProcess, RegisterGetsSnapshotWithWriterIdAndOriginalTime_5_4) {
 }
 
 TEST(MoosdbLiteProcess, ThrottledUpdatesAreDropped_5_3) {
-  ServerProcess server({"--moos_timeout=60"});
+  MoosdbServer server(MOOSDB_LITE_PATH, {"--moos_timeout=60"});
   ASSERT_TRUE(server.ok());
   RawClient reader;
   ASSERT_TRUE(reader.join(server.port(), "pReader", true));
@@ -236,7 +243,7 @@ TEST(MoosdbLiteProcess, ThrottledUpdatesAreDropped_5_3) {
 }
 
 TEST(MoosdbLiteProcess, TypeFixedAtFirstWriteRefusesOtherTypesWithLoggedReason_5_3) {
-  ServerProcess server;
+  MoosdbServer server(MOOSDB_LITE_PATH);
   ASSERT_TRUE(server.ok());
   RawClient client;
   ASSERT_TRUE(client.join(server.port(), "pTyped", false));
@@ -249,7 +256,7 @@ TEST(MoosdbLiteProcess, TypeFixedAtFirstWriteRefusesOtherTypesWithLoggedReason_5
 }
 
 TEST(MoosdbLiteProcess, WildcardCommaAndSpaceFormsBothWork_5_5) {
-  ServerProcess server;
+  MoosdbServer server(MOOSDB_LITE_PATH);
   ASSERT_TRUE(server.ok());
   RawClient comma;
   ASSERT_TRUE(comma.join(server.port(), "pComma", true));
@@ -278,7 +285,7 @@ TEST(MoosdbLiteProcess, WildcardCommaAndSpaceFormsBothWork_5_5) {
 // DB variables and server requests (spec 5.7, 5.8)
 
 TEST(MoosdbLiteProcess, DbVariablesExistAtOnceAndAreRefreshedByTimer_5_7) {
-  ServerProcess server({"--moos_community=alpha", "--moos_timeout=60"});
+  MoosdbServer server(MOOSDB_LITE_PATH, {"--moos_community=alpha", "--moos_timeout=60"});
   ASSERT_TRUE(server.ok());
   RawClient client;
   ASSERT_TRUE(client.join(server.port(), "pDb", true));
@@ -299,7 +306,7 @@ TEST(MoosdbLiteProcess, DbVariablesExistAtOnceAndAreRefreshedByTimer_5_7) {
 }
 
 TEST(MoosdbLiteProcess, DbClientsAndDbEventFollowConnections_5_7) {
-  ServerProcess server;
+  MoosdbServer server(MOOSDB_LITE_PATH);
   ASSERT_TRUE(server.ok());
   RawClient watcher;
   ASSERT_TRUE(watcher.join(server.port(), "pWatch", true));
@@ -320,7 +327,7 @@ TEST(MoosdbLiteProcess, DbClientsAndDbEventFollowConnections_5_7) {
 }
 
 TEST(MoosdbLiteProcess, ServerRequestsVarSummaryAndAll_5_8) {
-  ServerProcess server;
+  MoosdbServer server(MOOSDB_LITE_PATH);
   ASSERT_TRUE(server.ok());
   RawClient client;
   ASSERT_TRUE(client.join(server.port(), "pAsk", false));
@@ -344,14 +351,14 @@ TEST(MoosdbLiteProcess, ServerRequestsVarSummaryAndAll_5_8) {
 // Timeouts, time warp, --log, configuration
 
 TEST(MoosdbLiteProcess, SilentClientIsDroppedAfterClientTimeoutAndTalkerStays_1_9) {
-  ServerProcess server({"--moos_timeout=1"});
+  MoosdbServer server(MOOSDB_LITE_PATH, {"--moos_timeout=1"});
   ASSERT_TRUE(server.ok());
   RawClient quiet;
   ASSERT_TRUE(quiet.join(server.port(), "pQuiet", true));
   RawClient talker;
   ASSERT_TRUE(talker.join(server.port(), "pTalker", true));
-  const double start = now_s();
-  while (now_s() - start < 2.5) {
+  const double start = steady_now_s();
+  while (steady_now_s() - start < 2.5) {
     ASSERT_TRUE(talker.send({timing(moos_now())}));
     ASSERT_TRUE(talker.read_packet()) << "the active client must stay connected";
     std::this_thread::sleep_for(std::chrono::milliseconds(200));
@@ -362,7 +369,7 @@ TEST(MoosdbLiteProcess, SilentClientIsDroppedAfterClientTimeoutAndTalkerStays_1_
 }
 
 TEST(MoosdbLiteProcess, TimeWarpMultipliesDbTime_0_3) {
-  ServerProcess server({"--moos_time_warp=10"});
+  MoosdbServer server(MOOSDB_LITE_PATH, {"--moos_time_warp=10"});
   ASSERT_TRUE(server.ok());
   RawClient client;
   ASSERT_TRUE(client.join(server.port(), "pWarp", false));
@@ -372,9 +379,9 @@ TEST(MoosdbLiteProcess, TimeWarpMultipliesDbTime_0_3) {
 }
 
 TEST(MoosdbLiteProcess, LogWritesEveryAcceptedNotifyInAlogFormat) {
-  const ScopedDir dir;
-  const std::string log_path = dir.path() + "/run.alog";
-  ServerProcess logged({"--log=" + log_path, "--moos_community=alpha"});
+  const ScratchDir dir;
+  const std::string log_path = (dir / "run.alog").string();
+  MoosdbServer logged(MOOSDB_LITE_PATH, {"--log=" + log_path, "--moos_community=alpha"});
   ASSERT_TRUE(logged.ok());
   RawClient client;
   ASSERT_TRUE(client.join(logged.port(), "pLogMe", false));
@@ -407,14 +414,11 @@ TEST(MoosdbLiteProcess, LogWritesEveryAcceptedNotifyInAlogFormat) {
 }
 
 TEST(MoosdbLiteProcess, MissionGlobalsConfigureTheServerAndSwitchesOverride_5_11) {
-  const ScopedDir dir;
-  const std::string mission = dir.path() + "/test.moos";
-  {
-    std::ofstream out(mission);
-    out << "// a mission\nServerPort = 0\nCommunity = shore\nMOOSTimeWarp = 2\n\n"
-           "ProcessConfig = ANTLER\n{\n  Run = MOOSDB @ NewConsole = false\n}\n";
-  }
-  ServerProcess from_mission({mission, "MOOSDB_alias"});
+  const ScratchDir dir;
+  const std::string mission = (dir / "test.moos").string();
+  write_file(mission, "// a mission\nServerPort = 0\nCommunity = shore\nMOOSTimeWarp = 2\n\n"
+                     "ProcessConfig = ANTLER\n{\n  Run = MOOSDB @ NewConsole = false\n}\n");
+  MoosdbServer from_mission(MOOSDB_LITE_PATH, {mission, "MOOSDB_alias"});
   ASSERT_TRUE(from_mission.ok());
   RawClient client;
   ASSERT_TRUE(client.connect(from_mission.port()));
@@ -425,7 +429,7 @@ TEST(MoosdbLiteProcess, MissionGlobalsConfigureTheServerAndSwitchesOverride_5_11
   ASSERT_TRUE(reply);
   EXPECT_NEAR(reply->front().dval / 2.0, moos_now(), kClockTolerance_s);
 
-  ServerProcess overridden({mission, "--moos_community=override"});
+  MoosdbServer overridden(MOOSDB_LITE_PATH, {mission, "--moos_community=override"});
   ASSERT_TRUE(overridden.ok());
   RawClient other;
   ASSERT_TRUE(other.connect(overridden.port()));
@@ -435,18 +439,23 @@ TEST(MoosdbLiteProcess, MissionGlobalsConfigureTheServerAndSwitchesOverride_5_11
 }
 
 TEST(MoosdbLiteProcess, HelpExitsZeroAndBadCommandLineExitsTwoWithReason) {
-  std::string out;
-  std::string err;
-  EXPECT_EQ(run_server_to_exit({"--help"}, &out, &err), 0);
-  EXPECT_NE(out.find("--port-file=FILE"), std::string::npos);
-  EXPECT_EQ(run_server_to_exit({"--moos_port=banana"}, &out, &err), 2);
-  EXPECT_NE(err.find("--moos_port=banana: not a port number"), std::string::npos);
-  EXPECT_EQ(run_server_to_exit({"/nonexistent/mission.moos"}, &out, &err), 2);
-  EXPECT_NE(err.find("cannot read mission file /nonexistent/mission.moos"), std::string::npos);
+  // Each ends at once; the start-up bound only stops a hang.
+  auto run_server = [](const std::vector<std::string>& args) {
+    return run_program(MOOSDB_LITE_PATH, args, MoosdbServer::kStartTimeout_s);
+  };
+  const RunResult help = run_server({"--help"});
+  EXPECT_EQ(help.exit_code, 0);
+  EXPECT_NE(help.out.find("--port-file=FILE"), std::string::npos);
+  const RunResult bad_port = run_server({"--moos_port=banana"});
+  EXPECT_EQ(bad_port.exit_code, 2);
+  EXPECT_NE(bad_port.err.find("--moos_port=banana: not a port number"), std::string::npos);
+  const RunResult no_mission = run_server({"/nonexistent/mission.moos"});
+  EXPECT_EQ(no_mission.exit_code, 2);
+  EXPECT_NE(no_mission.err.find("cannot read mission file /nonexistent/mission.moos"), std::string::npos);
 }
 
 TEST(MoosdbLiteProcess, SigtermStopsCleanlyWithExitZero) {
-  ServerProcess server;
+  MoosdbServer server(MOOSDB_LITE_PATH);
   ASSERT_TRUE(server.ok());
   RawClient client;
   ASSERT_TRUE(client.join(server.port(), "pStay", true));

@@ -12,18 +12,16 @@
 
 #include <gtest/gtest.h>
 
+#include "child_process.hpp"
 #include "test_messages.hpp"
 
 namespace moosdb_lite::test {
 
 namespace {
 
-constexpr std::size_t kReadChunkBytes = 64 * 1024;
+using test_support::steady_now_s;
 
-double clock_s() {
-  using namespace std::chrono;
-  return duration<double>(steady_clock::now().time_since_epoch()).count();
-}
+constexpr std::size_t kReadChunkBytes = 64 * 1024;
 
 }  // namespace
 
@@ -81,7 +79,7 @@ bool RawClient::join(int port, const std::string& name, bool async) {
 }
 
 std::optional<std::vector<moos::Message>> RawClient::read_packet(double timeout_s) {
-  const double deadline = clock_s() + timeout_s;
+  const double deadline = steady_now_s() + timeout_s;
   char buffer[kReadChunkBytes];
   for (;;) {
     std::vector<moos::Message> packet;
@@ -93,7 +91,7 @@ std::optional<std::vector<moos::Message>> RawClient::read_packet(double timeout_
       return std::nullopt;
     }
     if (eof_) return std::nullopt;
-    const double left_s = deadline - clock_s();
+    const double left_s = deadline - steady_now_s();
     if (left_s <= 0) return std::nullopt;
     pollfd pfd{fd_, POLLIN, 0};
     if (::poll(&pfd, 1, static_cast<int>(left_s * 1000) + 1) <= 0) continue;
@@ -108,9 +106,9 @@ std::optional<std::vector<moos::Message>> RawClient::read_packet(double timeout_
 
 std::vector<moos::Message> RawClient::read_notifies(std::size_t count, double timeout_s) {
   std::vector<moos::Message> out;
-  const double deadline = clock_s() + timeout_s;
+  const double deadline = steady_now_s() + timeout_s;
   while (out.size() < count) {
-    const double left_s = deadline - clock_s();
+    const double left_s = deadline - steady_now_s();
     if (left_s <= 0) break;
     const auto packet = read_packet(left_s);
     if (!packet) break;
@@ -121,11 +119,11 @@ std::vector<moos::Message> RawClient::read_notifies(std::size_t count, double ti
 }
 
 bool RawClient::wait_closed(double timeout_s, std::size_t* discarded_bytes) {
-  const double deadline = clock_s() + timeout_s;
+  const double deadline = steady_now_s() + timeout_s;
   std::size_t discarded = 0;
   char buffer[kReadChunkBytes];
   while (!eof_) {
-    const double left_s = deadline - clock_s();
+    const double left_s = deadline - steady_now_s();
     if (left_s <= 0) break;
     pollfd pfd{fd_, POLLIN, 0};
     if (::poll(&pfd, 1, static_cast<int>(left_s * 1000) + 1) <= 0) continue;

@@ -20,9 +20,9 @@
 namespace ufld_hazard_sensor {
 namespace {
 
+using test_support::write_file;
 using testing::kFirstBlockLine;
 using testing::SensorOnBus;
-using testing::write_file;
 
 /// Seconds per iteration at the default AppTick of 4 Hz.
 constexpr double kTick_s = 0.25;

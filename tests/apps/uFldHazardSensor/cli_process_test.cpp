@@ -13,29 +13,15 @@
 namespace ufld_hazard_sensor {
 namespace {
 
-using testing::Alog;
-using testing::Child;
+using test_support::Alog;
+using test_support::alog_entries;
+using test_support::read_file;
+using test_support::RunResult;
 using testing::kPatience_s;
-using testing::read_file;
-using testing::ScratchDir;
 using testing::SensorProcess;
-using testing::Server;
-using testing::write_file;
 
-struct Ran {
-  std::optional<int> exit_code;
-  std::string out;
-  std::string err;
-};
-
-Ran run(const std::vector<std::string>& args) {
-  auto child = Child::spawn(UFLD_HAZARD_SENSOR_PATH, args);
-  if (!child) return {};
-  Ran r;
-  r.exit_code = child->wait(kPatience_s);
-  r.out = child->stdout_text();
-  r.err = child->stderr_text();
-  return r;
+RunResult run(const std::vector<std::string>& args) {
+  return test_support::run_program(UFLD_HAZARD_SENSOR_PATH, args, kPatience_s);
 }
 
 std::string golden(const std::string& name) {
@@ -43,7 +29,7 @@ std::string golden(const std::string& name) {
 }
 
 void expect_golden(const std::vector<std::string>& args, const std::string& file) {
-  const Ran r = run(args);
+  const RunResult r = run(args);
   EXPECT_EQ(r.exit_code, 0) << args.front();
   EXPECT_EQ(r.err, "") << args.front();
   const std::string expected = golden(file);
@@ -75,20 +61,20 @@ TEST(UfldHazardSensorCli, GoldensAreTheInfoTexts) {
 }
 
 TEST(UfldHazardSensorCli, NoMissionFileShowsTheHelpAndExitsZero_Spec2) {
-  const Ran r = run({});
+  const RunResult r = run({});
   EXPECT_EQ(r.exit_code, 0);
   EXPECT_EQ(r.out, golden("help.txt"));
 }
 
 TEST(UfldHazardSensorCli, AnUnreadableMissionFileExitsOneNamingIt) {
-  const Ran r = run({"/nonexistent/folder/m.moos"});
+  const RunResult r = run({"/nonexistent/folder/m.moos"});
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("/nonexistent/folder/m.moos"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("cannot read"), std::string::npos) << r.err;
 }
 
 TEST(UfldHazardSensorCli, ABadVerboseValueExitsTwoNamingIt_D29) {
-  const Ran r = run({"m.moos", "--verbose=loud"});
+  const RunResult r = run({"m.moos", "--verbose=loud"});
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(r.err, "uFldHazardSensor: '--verbose=loud': the verbosity must be true or false (see --help)\n");
   EXPECT_EQ(r.out, "");
@@ -102,16 +88,6 @@ const char* kSmallBlock =
     "  hazard = x=5,y=1,label=h1,type=hazard\n"
     "  bogus_param = 1\n";  // line 11 of the mission (process_mission): one config warning
 const std::string kSmallAck = "vname=alpha,width=20,pd=1,pfa=1,pclass=1";
-
-std::vector<moos::AlogEntry> alog_entries(const std::string& text) {
-  std::vector<moos::AlogEntry> out;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) {
-    const auto p = moos::parse_alog_line(line);
-    if (p.kind == moos::AlogLineKind::kEntry) out.push_back(p.entry);
-  }
-  return out;
-}
 
 TEST_F(SensorProcess, VerboseWritesAlogLinesToStandardErrorAndNothingElseChanges_D29) {
   ASSERT_NO_FATAL_FAILURE(start(kSmallBlock, {"--verbose"}));

@@ -33,8 +33,8 @@
 namespace ufld_hazard_sensor {
 namespace {
 
+using test_support::write_file;
 using testing::SensorOnBus;
-using testing::write_file;
 
 /// Help lines fit a classic terminal.
 constexpr std::size_t kMaxHelpColumns = 80;

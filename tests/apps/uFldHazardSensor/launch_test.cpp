@@ -11,7 +11,7 @@ namespace {
 
 Launch launch_for(std::vector<std::string> args) {
   args.insert(args.begin(), "uFldHazardSensor");
-  return decide_launch(moos::parse_command_line(args));
+  return decide_launch_with_verbosity(moos::parse_command_line(args));
 }
 
 TEST(Launch, InformationSwitchesInEveryForm_Spec2) {
@@ -66,7 +66,7 @@ TEST(Launch, VerboseIsNeverTheRunAliasButArgv2Is_D29) {
   EXPECT_EQ(moos::app_name_from(antler, kAppName), "uFldHazardSensor_2");
   const auto alias = moos::parse_command_line({"uFldHazardSensor", "--alias=uHZ", "m.moos"});
   EXPECT_EQ(moos::app_name_from(alias, kAppName), "uHZ");
-  EXPECT_EQ(decide_launch(alias).action, LaunchAction::kRun);
+  EXPECT_EQ(decide_launch_with_verbosity(alias).action, LaunchAction::kRun);
 }
 
 TEST(Launch, UnknownFlagsAreIgnoredAsInTheOriginal_Spec2) {

@@ -16,11 +16,11 @@
 namespace ufld_hazard_sensor {
 namespace {
 
-using testing::Alog;
-using testing::Child;
+using test_support::Alog;
+using test_support::Child;
+using test_support::write_file;
 using testing::kPatience_s;
 using testing::SensorProcess;
-using testing::write_file;
 
 constexpr const char* kApp = "uFldHazardSensor";
 
@@ -93,7 +93,7 @@ std::map<std::string, std::vector<std::string>> comparable(std::map<std::string,
 
 /// Runs hazard_replay on the inputs the app received (the server's log, subscribed variables
 /// only) with the same mission, up to the app's last posting; returns its postings per variable.
-std::map<std::string, std::vector<std::string>> replay(const testing::ScratchDir& dir, const Alog& log) {
+std::map<std::string, std::vector<std::string>> replay(const test_support::ScratchDir& dir, const Alog& log) {
   std::vector<std::string> subscribed;
   for (const auto& v : hazard::Engine::subscriptions()) subscribed.emplace_back(v.name);
   std::string input = moos::alog_header("input.alog", log.logstart_s);
@@ -111,7 +111,8 @@ std::map<std::string, std::vector<std::string>> replay(const testing::ScratchDir
   if (!r) return {};
   EXPECT_EQ(r->wait(60.0), 0) << r->stderr_text();
   std::map<std::string, std::vector<std::string>> out;
-  for (const auto& e : Alog::read(dir / "replay.alog").entries) out[e.variable].push_back(e.value);
+  for (const auto& e : test_support::read_alog(dir / "replay.alog").entries)
+    out[e.variable].push_back(e.value);
   return out;
 }
 

@@ -1,16 +1,13 @@
 #pragma once
 // Test support: uFldHazardSensor (the app class) on libmoos's in-process bus with a manual
-// clock, so start-up, mail and iterations are instant and exact. A scratch folder holds the
-// mission file and hazard files, so hazard_file paths and file:line warnings are real.
+// clock, so start-up, mail and iterations are instant and exact. A scratch folder
+// (tests/support) holds the mission file and hazard files, so hazard_file paths and file:line
+// warnings are real.
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
-#include <filesystem>
-#include <fstream>
 #include <memory>
 #include <optional>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -20,48 +17,9 @@
 #include "moos/clock.hpp"
 #include "moos/command_line.hpp"
 #include "moos/mission.hpp"
+#include "scratch_files.hpp"
 
 namespace ufld_hazard_sensor::testing {
-
-namespace fs = std::filesystem;
-
-/// A fresh folder for the running test, removed when the object goes away.
-class ScratchDir {
- public:
-  ScratchDir() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    path_ = fs::temp_directory_path() /
-            ("uhz_app_" + std::to_string(::getpid()) + "_" + info->test_suite_name() + "_" +
-             info->name());
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~ScratchDir() {
-    std::error_code ignored;
-    fs::remove_all(path_, ignored);
-  }
-  ScratchDir(const ScratchDir&) = delete;
-  ScratchDir& operator=(const ScratchDir&) = delete;
-
-  fs::path operator/(const std::string& name) const { return path_ / name; }
-  const fs::path& path() const { return path_; }
-
- private:
-  fs::path path_;
-};
-
-inline void write_file(const fs::path& path, const std::string& text) {
-  fs::create_directories(path.parent_path());
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-}
-
-inline std::string read_file(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 /// A mission file: the globals, then `ProcessConfig = <app>` with `block` (lines as written).
 /// The block's first line is line 6 of the file (kFirstBlockLine).
@@ -89,7 +47,7 @@ class SensorOnBus : public ::testing::Test {
   /// As start(), with the whole mission file given.
   void start_mission(const std::string& mission_file, HazardSensorOptions options = {},
                      std::vector<std::string> args = {}) {
-    write_file(dir / "m.moos", mission_file);
+    test_support::write_file(dir / "m.moos", mission_file);
     std::vector<moos::MissionError> errors;
     mission = moos::MissionFile::load((dir / "m.moos").string(), {}, &errors);
     ASSERT_TRUE(mission.has_value());
@@ -98,8 +56,6 @@ class SensorOnBus : public ::testing::Test {
         hazard_sensor_traits(), moos::parse_command_line(args), &*mission, errors);
     settings.time_warp = bus.time_warp();
     if (options.os_seed == nullptr) options.os_seed = [] { return std::uint64_t{424242}; };
-    options.mission_directory = dir.path().string();
-    options.origin = hazard::mission_origin(*mission);  // as main reads it
     app.emplace(std::move(options));
     comms = bus.connect(settings.moos_name);
     ASSERT_TRUE(comms);
@@ -125,7 +81,7 @@ class SensorOnBus : public ::testing::Test {
   const hazard::Engine& engine() const { return *app->engine(); }
   const moos::AppCast& appcast() const { return app->appcast(); }
 
-  ScratchDir dir;
+  test_support::ScratchDir dir{"uhz_app"};
   moos::ManualClock clock{kT0};
   moos::InProcessBus bus{clock, moos::InProcessBus::Options{"shoreside", 1.0}};
   std::unique_ptr<moos::BusClient> vehicle = bus.connect("vehicle");

@@ -3,10 +3,9 @@
 // app started on a mission written for that port, and a scripted vehicle (libmoos's TcpClient)
 // that posts mail and waits, bounded, for what the app posts. Every child process dies with the
 // test process and is killed by its handle's destructor, so nothing is left behind on failure
-// (process_support from tests/apps/moos_client).
+// (tests/support: child_process.hpp, moosdb_server.hpp).
 
 #include <gtest/gtest.h>
-#include <signal.h>
 
 #include <chrono>
 #include <functional>
@@ -16,16 +15,19 @@
 #include <thread>
 #include <vector>
 
-#include "moos/alog.hpp"
+#include "alog_files.hpp"
+#include "child_process.hpp"
 #include "moos/tcp_client.hpp"
-#include "process_support.hpp"
+#include "moosdb_server.hpp"
+#include "scratch_files.hpp"
 #include "sensor_on_bus.hpp"
 
 namespace ufld_hazard_sensor::testing {
 
-using moos::process_test::Child;
-using moos::process_test::Server;
-using moos::process_test::steady_now_s;
+using test_support::Alog;
+using test_support::Child;
+using test_support::MoosdbServer;
+using test_support::steady_now_s;
 
 /// MOOS time runs 20x real time in the process tests, so a scenario takes seconds.
 inline constexpr double kWarp = 20.0;
@@ -45,23 +47,6 @@ inline std::string process_mission(int port, const std::string& block,
          "{\n" + block + "}\n";
 }
 
-/// The entries of an .alog file, and its LOGSTART.
-struct Alog {
-  double logstart_s = 0.0;
-  std::vector<moos::AlogEntry> entries;
-
-  static Alog read(const fs::path& path) {
-    Alog log;
-    std::istringstream in(read_file(path));
-    for (std::string line; std::getline(in, line);) {
-      const auto p = moos::parse_alog_line(line);
-      if (p.kind == moos::AlogLineKind::kEntry) log.entries.push_back(p.entry);
-      if (auto start = moos::alog_logstart(line)) log.logstart_s = *start;
-    }
-    return log;
-  }
-};
-
 /// moosdb-lite (logging every posting), uFldHazardSensor and one scripted vehicle client.
 class SensorProcess : public ::testing::Test {
  protected:
@@ -72,11 +57,12 @@ class SensorProcess : public ::testing::Test {
   /// (its first options summary).
   void start(const std::string& block, const std::vector<std::string>& app_args = {},
              const std::string& extra_globals = {}) {
-    server = Server::start(0, {"--log=" + (dir / "db.alog").string(),
-                               "--moos_time_warp=" + std::to_string(static_cast<int>(kWarp)),
-                               "--moos_community=shoreside"});
-    ASSERT_TRUE(server.has_value()) << "moosdb-lite did not start";
-    write_file(dir / "m.moos", process_mission(server->port(), block, extra_globals));
+    const std::vector<std::string> server_args = {
+        "--log=" + (dir / "db.alog").string(),
+        "--moos_time_warp=" + std::to_string(static_cast<int>(kWarp)), "--moos_community=shoreside"};
+    server.emplace(MOOSDB_LITE_PATH, server_args);
+    ASSERT_TRUE(server->ok()) << "moosdb-lite did not start";
+    test_support::write_file(dir / "m.moos", process_mission(server->port(), block, extra_globals));
     std::vector<std::string> args = {(dir / "m.moos").string()};
     args.insert(args.end(), app_args.begin(), app_args.end());
     app = Child::spawn(UFLD_HAZARD_SENSOR_PATH, args);
@@ -142,24 +128,18 @@ class SensorProcess : public ::testing::Test {
   /// log), and reads the log.
   Alog stop_and_read_log() {
     stop_all();
-    return Alog::read(dir / "db.alog");
+    return test_support::read_alog(dir / "db.alog");
   }
 
   void stop_all() {
     if (vehicle) vehicle->close();
     vehicle.reset();
-    if (app) {
-      if (app->pid() > 0) {
-        ::kill(app->pid(), SIGTERM);
-        app_exit = app->wait(kPatience_s);
-      }
-      app->kill_now();
-    }
-    if (server) server->process().stop();
+    if (app && app->running()) app_exit = app->stop(kPatience_s);
+    if (server) server->stop();
   }
 
-  ScratchDir dir;
-  std::optional<Server> server;
+  test_support::ScratchDir dir{"uhz_process"};
+  std::optional<MoosdbServer> server;
   std::optional<Child> app;
   std::optional<int> app_exit;
   std::unique_ptr<moos::TcpClient> vehicle;

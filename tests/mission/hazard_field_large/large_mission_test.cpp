@@ -13,21 +13,19 @@
 namespace mission_test {
 namespace {
 
-using moos::process_test::Child;
-
 TEST(LargeMission, FourVehiclesSearchTenThousandObjectsAndDebReportsForTheFleet) {
   const fs::path run_dir = fresh_run_dir("large");
-  auto child = Child::spawn(LARGE_LAUNCH, {"--warp=400", "--bin-dir=" + std::string(APPS_DIR),
-                                           "--run-dir=" + run_dir.string(), "--quiet", "--no-picture"});
-  ASSERT_TRUE(child);
-  const auto code = child->wait(280.0);
-  ASSERT_EQ(code, 0) << child->stdout_text() << child->stderr_text();
+  const test_support::RunResult launched = test_support::run_program(
+      LARGE_LAUNCH, {"--warp=400", "--bin-dir=" + std::string(APPS_DIR),
+                     "--run-dir=" + run_dir.string(), "--quiet", "--no-picture"},
+      280.0);
+  ASSERT_EQ(launched.exit_code, 0) << launched.out << launched.err;
   const auto processes = read_pids(run_dir);
   EXPECT_EQ(processes.size(), 1u + 1u + 10u + 1u);  // launcher, moosdb-lite, 10 apps, watcher
   EXPECT_FALSE(any_alive(processes, run_dir.string()));
 
   // The field: gen_hazards's header names the seed, and 2,000 + 8,000 objects.
-  const std::string field = read_text(run_dir / "hazards.txt");
+  const std::string field = read_file(run_dir / "hazards.txt");
   EXPECT_EQ(field.rfind("// gen_hazards --polygon=0,0:3000,0:3000,-3000:0,-3000 --objects=2000,hazard "
                         "--objects=8000,benign --seed=2026", 0), 0u);
   const auto truth = read_truth(run_dir / "hazards.txt");
@@ -35,7 +33,7 @@ TEST(LargeMission, FourVehiclesSearchTenThousandObjectsAndDebReportsForTheFleet)
 
   std::map<std::string, std::map<std::string, std::string>> evals;
   std::set<std::string> handovers_to_deb;
-  for (const auto& e : read_alog(run_dir / "hazard_field_large.alog")) {
+  for (const auto& e : read_alog(run_dir / "hazard_field_large.alog").entries) {
     if (e.variable == "HAZARDSET_EVAL") evals[fields(e.value)["vname"]] = fields(e.value);
     if (e.variable == "HAZARD_HANDOVER_DEB") handovers_to_deb.insert(e.source);
   }
@@ -49,10 +47,10 @@ TEST(LargeMission, FourVehiclesSearchTenThousandObjectsAndDebReportsForTheFleet)
   EXPECT_LT(deb_missed, 400.0);
   EXPECT_GT(std::stod(evals["deb"]["total_objects"]), 5000.0);
 
-  const std::string summary = read_text(run_dir / "summary.json");
+  const std::string summary = read_file(run_dir / "summary.json");
   for (const char* p : {"uFldHazardSensor", "pHazardMgr_deb", "uSimSurveyVehicle_abe", "moosdb-lite"})
     EXPECT_NE(summary.find("\"name\": \"" + std::string(p) + "\""), std::string::npos) << p;
-  EXPECT_TRUE(std::regex_search(child->stdout_text(), std::regex("CPU seconds \\(user\\+system\\): [0-9.]+ in all")));
+  EXPECT_TRUE(std::regex_search(launched.out, std::regex("CPU seconds \\(user\\+system\\): [0-9.]+ in all")));
 }
 
 }  // namespace

@@ -25,13 +25,13 @@
 namespace mission_test {
 namespace {
 
-using moos::process_test::Child;
-
 /// High enough to show the point, low enough that two missions (ctest -j2) keep up on 2 cores.
 constexpr double kTestWarp = 400;
 constexpr int kTestSeed = 7;
 /// Real seconds the launcher may take (the mission takes about 15 at warp 400).
 constexpr double kLaunchTimeout_s = 170;
+/// Real seconds one hazard_replay run may take (well under a second each).
+constexpr double kReplayTimeout_s = 60;
 /// Seeds pooled in the replay rate check: about 6 hazard and 12 benign passes per seed.
 constexpr int kPooledSeeds = 40;
 /// Simulated seconds between a sensor cycle and the time stamp of its posting: a few real ms on
@@ -59,17 +59,16 @@ class JakeMission : public ::testing::Test {
   static void SetUpTestSuite() {
     run_ = new MissionRun;
     run_->dir = fresh_run_dir("jake");
-    auto child = Child::spawn(JAKE_LAUNCH, {"--warp=" + std::to_string(static_cast<int>(kTestWarp)),
-                                            "--seed=" + std::to_string(kTestSeed),
-                                            "--bin-dir=" + std::string(APPS_DIR),
-                                            "--run-dir=" + run_->dir.string(), "--quiet"});
-    ASSERT_TRUE(child);
-    run_->exit_code = child->wait(kLaunchTimeout_s);
-    run_->out = child->stdout_text();
-    run_->err = child->stderr_text();
-    child->kill_now();
+    const test_support::RunResult launched = test_support::run_program(
+        JAKE_LAUNCH, {"--warp=" + std::to_string(static_cast<int>(kTestWarp)),
+                      "--seed=" + std::to_string(kTestSeed), "--bin-dir=" + std::string(APPS_DIR),
+                      "--run-dir=" + run_->dir.string(), "--quiet"},
+        kLaunchTimeout_s);
+    run_->exit_code = launched.exit_code;
+    run_->out = launched.out;
+    run_->err = launched.err;
     run_->processes = read_pids(run_->dir);
-    run_->log = read_alog(run_->dir / "jake.alog");
+    run_->log = read_alog(run_->dir / "jake.alog").entries;
     run_->truth = read_truth(run_->dir / "hazards.txt");
   }
   static void TearDownTestSuite() {
@@ -100,7 +99,7 @@ TEST_F(JakeMission, EveryProcessStartedConnectedAndStopped) {
   std::set<std::string> names;
   for (const auto& p : run().processes) names.insert(p.name);
   for (const char* n : {"launcher", "moosdb-lite", "progress-watch"}) EXPECT_EQ(names.count(n), 1u) << n;
-  const std::string db = read_text(run().dir / "logs/moosdb-lite.err");
+  const std::string db = read_file(run().dir / "logs/moosdb-lite.err");
   std::map<std::string, int> exits;  // the launcher's exits.txt: name -> exit status
   {
     std::ifstream in(run().dir / "exits.txt");
@@ -113,7 +112,7 @@ TEST_F(JakeMission, EveryProcessStartedConnectedAndStopped) {
     // Started: it said so and the MOOSDB accepted its connection. Stopped: it exited with
     // status 0 after the launcher's SIGTERM (not killed), and the MOOSDB saw its connection
     // end before the MOOSDB itself was stopped (closed, or reset when unread mail was left).
-    EXPECT_NE(read_text(run().dir / ("logs/" + app + ".out")).find("launching as " + app),
+    EXPECT_NE(read_file(run().dir / ("logs/" + app + ".out")).find("launching as " + app),
               std::string::npos) << app;
     EXPECT_TRUE(std::regex_search(db, std::regex("client \"" + app + "\" \\([^)]*\\): connected")))
         << app << "\n" << db;
@@ -180,12 +179,13 @@ fs::path write_inputs(const MissionRun& run, const std::string& name, std::optio
 
 std::vector<moos::AlogEntry> replay(const MissionRun& run, const fs::path& inputs, int seed) {
   const fs::path out = run.dir / ("replay_" + inputs.stem().string() + "_" + std::to_string(seed) + ".alog");
-  auto child = Child::spawn(HAZARD_REPLAY_PATH,
-                            {(run.dir / "targ_jake.moos").string(), inputs.string(),
-                             "--seed=" + std::to_string(seed), "--output=" + out.string()});
-  EXPECT_TRUE(child);
-  EXPECT_EQ(child->wait(60.0), 0) << child->stderr_text();
-  auto log = read_alog(out);
+  const test_support::RunResult replayed = test_support::run_program(
+      HAZARD_REPLAY_PATH,
+      {(run.dir / "targ_jake.moos").string(), inputs.string(), "--seed=" + std::to_string(seed),
+       "--output=" + out.string()},
+      kReplayTimeout_s);
+  EXPECT_EQ(replayed.exit_code, 0) << replayed.err;
+  auto log = read_alog(out).entries;
   fs::remove(out);
   return log;
 }
@@ -242,7 +242,7 @@ TEST_F(JakeMission, ArchieDetectionRatesAgreeWithItsAckedPdAndPfa) {
 
 double min_classify_interval(const fs::path& targ) {
   std::smatch m;
-  const std::string text = read_text(targ);
+  const std::string text = read_file(targ);
   EXPECT_TRUE(std::regex_search(text, m, std::regex(R"(min_classify_interval\s*=\s*([0-9.]+))")));
   return m.empty() ? 0.0 : std::stod(m[1]);
 }
@@ -367,7 +367,7 @@ TEST_F(JakeMission, TheHandOverCarriedArchiesObjectsToBettysRoute) {
 // ---- the result ----------------------------------------------------------------------------
 
 TEST_F(JakeMission, SummaryScoreTableAndPicture) {
-  const std::string summary = read_text(run().dir / "summary.json");
+  const std::string summary = read_file(run().dir / "summary.json");
   const double betty = std::stod(fields(entries("HAZARDSET_EVAL_BETTY").back().value)["norm_score"]);
   std::smatch score;
   ASSERT_TRUE(std::regex_search(summary, score, std::regex(R"("score": ([0-9.]+))"))) << summary;

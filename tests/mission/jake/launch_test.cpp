@@ -12,9 +12,6 @@
 namespace mission_test {
 namespace {
 
-using moos::process_test::Child;
-using moos::process_test::steady_now_s;
-
 constexpr double kTestWarp = 400;
 /// Real seconds the launcher may need to stop everything (5 s per group at most, see
 /// ML_STOP_WAIT_S) and exit.
@@ -30,12 +27,10 @@ std::vector<std::string> launch_args(const fs::path& run_dir, std::vector<std::s
 /// Runs the launcher to the end; its exit code (nullopt: still running after `timeout_s`).
 std::optional<int> run_launcher(const std::vector<std::string>& args, double timeout_s,
                                 std::string* out = nullptr, std::string* err = nullptr) {
-  auto child = Child::spawn(JAKE_LAUNCH, args);
-  EXPECT_TRUE(child);
-  const auto code = child->wait(timeout_s);
-  if (out) *out = child->stdout_text();
-  if (err) *err = child->stderr_text();
-  return code;
+  const test_support::RunResult r = test_support::run_program(JAKE_LAUNCH, args, timeout_s);
+  if (out) *out = r.out;
+  if (err) *err = r.err;
+  return r.exit_code;
 }
 
 /// Waits until the mission is deployed: every process is up (the progress watcher is started
@@ -136,7 +131,7 @@ TEST(JakeLaunch, RealModeRunsTheSameMissionOnAStandInMoosdbLoggedByPLogLite) {
   EXPECT_EQ(processes[2].name, "pLogLite");
   // pLogLite wrote the mission's log: the grader's evaluation of betty's report is in it.
   bool graded = false;
-  for (const auto& e : read_alog(run_dir / "jake.alog"))
+  for (const auto& e : read_alog(run_dir / "jake.alog").entries)
     graded = graded || (e.variable == "HAZARDSET_EVAL_BETTY" && e.source == "uFldHazardMetric");
   EXPECT_TRUE(graded);
   EXPECT_NE(out.find("MOOSDB real"), std::string::npos) << out;

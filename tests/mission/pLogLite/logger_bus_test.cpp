@@ -16,7 +16,7 @@ namespace {
 using mission_test::any_contains;
 using mission_test::Bus;
 using mission_test::mission_text;
-using mission_test::read_file;
+using test_support::read_file;
 
 struct Logged {
   std::vector<std::string> headers;
@@ -119,7 +119,7 @@ TEST_F(LoggerOnBus, BadLinesAreConfigWarningsNamingFileAndLine) {
 }
 
 TEST_F(LoggerOnBus, AFileThatCannotBeCreatedFailsTheStartUp) {
-  mission_test::write_file(bus.dir / "blocker", "a file, not a folder");
+  test_support::write_file(bus.dir / "blocker", "a file, not a folder");
   app.emplace();
   EXPECT_FALSE(bus.start(*app, kAppName,
                          mission_text(kAppName, "  path = " + (bus.dir / "blocker").string() +

@@ -3,43 +3,31 @@
 // so a run on a real MOOSDB logged by pLogLite reads exactly like a run on moosdb-lite.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
-#include <fstream>
 #include <map>
+#include <optional>
+#include <string>
 #include <thread>
 #include <tuple>
 
-#include "app_on_bus.hpp"
-#include "moos/alog.hpp"
-#include "process_support.hpp"
+#include "alog_files.hpp"
+#include "child_process.hpp"
+#include "moosdb_server.hpp"
+#include "scratch_files.hpp"
 
 namespace plog_lite {
 namespace {
 
-using moos::process_test::Child;
-using moos::process_test::run_cli;
-using moos::process_test::Server;
-
-struct Log {
-  double logstart_s = 0.0;
-  std::vector<moos::AlogEntry> entries;
-};
-
-Log read_log(const std::string& path) {
-  Log log;
-  std::ifstream in(path);
-  std::string line;
-  while (std::getline(in, line)) {
-    if (auto start = moos::alog_logstart(line)) log.logstart_s = *start;
-    const auto p = moos::parse_alog_line(line);
-    if (p.kind == moos::AlogLineKind::kEntry) log.entries.push_back(p.entry);
-  }
-  return log;
-}
+using test_support::Alog;
+using test_support::Child;
+using test_support::MoosdbServer;
+using test_support::read_alog;
+using test_support::run_program;
 
 /// (variable, source, value) -> absolute time, for the variables of interest.
 std::map<std::tuple<std::string, std::string, std::string>, double> keyed(
-    const Log& log, const std::vector<std::string>& variables) {
+    const Alog& log, const std::vector<std::string>& variables) {
   std::map<std::tuple<std::string, std::string, std::string>, double> out;
   for (const auto& e : log.entries)
     if (std::find(variables.begin(), variables.end(), e.variable) != variables.end())
@@ -48,20 +36,20 @@ std::map<std::tuple<std::string, std::string, std::string>, double> keyed(
 }
 
 bool connected(int port, const std::string& name) {
-  std::optional<int> code;
-  Child c = run_cli({"watch", "--port=" + std::to_string(port), "--count=1", "--timeout=2",
-                     "DB_CLIENTS"},
-                    5.0, &code);
-  return c.stdout_text().find(name) != std::string::npos;
+  const auto watch = run_program(MOOS_CLI_PATH,
+                                 {"watch", "--port=" + std::to_string(port), "--count=1",
+                                  "--timeout=2", "DB_CLIENTS"},
+                                 5.0);
+  return watch.out.find(name) != std::string::npos;
 }
 
 TEST(LoggerProcess, WritesWhatMoosdbLiteLogsForTheSameMessages) {
-  mission_test::ScratchDir dir;
+  test_support::ScratchDir dir;
   const std::string db_log = (dir / "db.alog").string();
-  auto server = Server::start(0, {"--log=" + db_log, "--moos_community=logtest"});
-  ASSERT_TRUE(server);
-  mission_test::write_file(dir / "m.moos",
-                           "ServerHost = localhost\nServerPort = " + std::to_string(server->port()) +
+  MoosdbServer server(MOOSDB_LITE_PATH, {"--log=" + db_log, "--moos_community=logtest"});
+  ASSERT_TRUE(server.ok());
+  test_support::write_file(dir / "m.moos",
+                           "ServerHost = localhost\nServerPort = " + std::to_string(server.port()) +
                                "\nCommunity = logtest\n\nProcessConfig = pLogLite\n{\n  path = " +
                                dir.path().string() +
                                "\n  file = plog\n  file_timestamp = false\n  wildcard_logging = true\n}\n");
@@ -69,22 +57,22 @@ TEST(LoggerProcess, WritesWhatMoosdbLiteLogsForTheSameMessages) {
   ASSERT_TRUE(logger);
   bool up = false;
   for (int i = 0; i < 50 && !up; ++i) {
-    up = connected(server->port(), "pLogLite");
+    up = connected(server.port(), "pLogLite");
     if (!up) std::this_thread::sleep_for(std::chrono::milliseconds(100));
   }
   ASSERT_TRUE(up) << logger->stderr_text();
-  std::optional<int> code;
-  run_cli({"poke", "--port=" + std::to_string(server->port()), "--name=poker", "SPEED=1.5",
-           "NOTE=a value with blanks", "LABEL:=12"},
-          10.0, &code);
-  ASSERT_EQ(code, 0);
+  const auto poke = run_program(MOOS_CLI_PATH,
+                                {"poke", "--port=" + std::to_string(server.port()), "--name=poker",
+                                 "SPEED=1.5", "NOTE=a value with blanks", "LABEL:=12"},
+                                10.0);
+  ASSERT_EQ(poke.exit_code, 0);
   std::this_thread::sleep_for(std::chrono::milliseconds(500));
   logger->stop();
-  server->process().stop();
+  server.stop();
 
   const std::vector<std::string> vars = {"SPEED", "NOTE", "LABEL"};
-  const auto ours = keyed(read_log((dir / "plog.alog").string()), vars);
-  const auto theirs = keyed(read_log(db_log), vars);
+  const auto ours = keyed(read_alog(dir / "plog.alog"), vars);
+  const auto theirs = keyed(read_alog(db_log), vars);
   ASSERT_EQ(ours.size(), 3u);
   ASSERT_EQ(theirs.size(), 3u);
   for (const auto& [key, time_s] : theirs) {

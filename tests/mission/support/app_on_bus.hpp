@@ -2,17 +2,13 @@
 // Test support for the mission helper applications (uSimSurveyVehicle, pHazardMgr,
 // uFldHazardMetric, pLogLite): the app class started on libmoos's in-process bus with a manual
 // clock, as main would start it (libmoos's command line and mission reader), from a mission
-// file written into a scratch folder. Cycles are instant and exact; a peer client posts mail and
-// reads the app's postings.
+// file written into a scratch folder (tests/support). Cycles are instant and exact; a peer client
+// posts mail and reads the app's postings.
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
-#include <filesystem>
-#include <fstream>
 #include <memory>
 #include <optional>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -21,47 +17,9 @@
 #include "moos/clock.hpp"
 #include "moos/command_line.hpp"
 #include "moos/mission.hpp"
+#include "scratch_files.hpp"
 
 namespace mission_test {
-
-namespace fs = std::filesystem;
-
-/// A fresh folder for the running test, removed when the object goes away.
-class ScratchDir {
- public:
-  ScratchDir() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    path_ = fs::temp_directory_path() / ("mission_app_" + std::to_string(::getpid()) + "_" +
-                                         info->test_suite_name() + "_" + info->name());
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~ScratchDir() {
-    std::error_code ignored;
-    fs::remove_all(path_, ignored);
-  }
-  ScratchDir(const ScratchDir&) = delete;
-  ScratchDir& operator=(const ScratchDir&) = delete;
-
-  fs::path operator/(const std::string& name) const { return path_ / name; }
-  const fs::path& path() const { return path_; }
-
- private:
-  fs::path path_;
-};
-
-inline void write_file(const fs::path& path, const std::string& text) {
-  fs::create_directories(path.parent_path());
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-}
-
-inline std::string read_file(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 /// Lines 1-5 of every test mission: globals, then the block header. The block's first line is
 /// line kFirstBlockLine of the file.
@@ -85,7 +43,7 @@ class Bus {
   /// Writes m.moos (`mission_file`) into the scratch folder and starts `app` under `app_name`
   /// (its block) as main would. Returns false if on_start_up failed.
   bool start(moos::MoosApp& app, const std::string& app_name, const std::string& mission_file) {
-    write_file(dir / "m.moos", mission_file);
+    test_support::write_file(dir / "m.moos", mission_file);
     std::vector<moos::MissionError> errors;
     mission = moos::MissionFile::load((dir / "m.moos").string(), {}, &errors);
     EXPECT_TRUE(mission.has_value());
@@ -116,7 +74,7 @@ class Bus {
     return out;
   }
 
-  ScratchDir dir;
+  test_support::ScratchDir dir{"mission_app"};
   moos::ManualClock clock{kT0};
   moos::InProcessBus bus{clock, moos::InProcessBus::Options{"jake", 1.0}};
   std::unique_ptr<moos::BusClient> peer = bus.connect("peer");

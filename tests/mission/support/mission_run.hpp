@@ -1,7 +1,7 @@
 #pragma once
 // Test support for whole-mission tests: running a mission's launch.sh as a child process, reading
 // its run folder (pids.txt, the .alog, summary.json), and checking that no process is left.
-// Every child gets SIGKILL if the test process dies (process_support's Child), and the launcher
+// Every child gets SIGKILL if the test process dies (tests/support's Child), and the launcher
 // gives its own processes the same parent-death signal, so a failing test leaves nothing behind.
 
 #include <gtest/gtest.h>
@@ -15,16 +15,22 @@
 #include <fstream>
 #include <map>
 #include <optional>
-#include <sstream>
 #include <string>
 #include <vector>
 
+#include "alog_files.hpp"
+#include "child_process.hpp"
 #include "moos/alog.hpp"
-#include "process_support.hpp"
+#include "scratch_files.hpp"
 
 namespace mission_test {
 
 namespace fs = std::filesystem;
+
+using test_support::Child;
+using test_support::read_alog;
+using test_support::read_file;
+using test_support::steady_now_s;
 
 /// "name pid" lines of the launcher's pids.txt, in start order.
 struct ProcessEntry {
@@ -85,24 +91,12 @@ inline bool any_alive(const std::vector<ProcessEntry>& entries, const std::strin
 /// Waits up to `timeout_s` for every process of pids.txt to be gone.
 inline bool all_gone_within(const std::vector<ProcessEntry>& entries, const std::string& run_dir,
                             double timeout_s) {
-  const double deadline = moos::process_test::steady_now_s() + timeout_s;
+  const double deadline = steady_now_s() + timeout_s;
   while (any_alive(entries, run_dir)) {
-    if (moos::process_test::steady_now_s() > deadline) return false;
+    if (steady_now_s() > deadline) return false;
     ::usleep(50 * 1000);
   }
   return true;
-}
-
-/// Every entry of an .alog file.
-inline std::vector<moos::AlogEntry> read_alog(const fs::path& path) {
-  std::vector<moos::AlogEntry> out;
-  std::ifstream in(path);
-  std::string line;
-  while (std::getline(in, line)) {
-    const auto p = moos::parse_alog_line(line);
-    if (p.kind == moos::AlogLineKind::kEntry) out.push_back(p.entry);
-  }
-  return out;
 }
 
 /// `key=value` fields of a MOOS string (commas inside {...} do not split).
@@ -140,13 +134,6 @@ inline std::map<std::string, std::string> read_truth(const fs::path& hazard_file
     out[f["label"]] = f["type"];
   }
   return out;
-}
-
-inline std::string read_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 /// This test process's folder for run folders: /tmp/mission_test_<pid>.

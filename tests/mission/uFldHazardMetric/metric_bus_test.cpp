@@ -17,7 +17,7 @@ using mission_test::any_contains;
 using mission_test::Bus;
 using mission_test::mission_text;
 using mission_test::run_warning_texts;
-using mission_test::write_file;
+using test_support::write_file;
 
 const char* kTruth =
     "// two hazards, two benign objects\n"
@@ -31,9 +31,7 @@ class MetricOnBus : public ::testing::Test {
  protected:
   bool start(const std::string& block, const std::string& truth = kTruth) {
     write_file(bus.dir / "fields/truth.txt", truth);
-    mission_app::MissionContext context;
-    context.directory = bus.dir.path().string();
-    app.emplace(context);
+    app.emplace();  // the hazard file is read from the mission's folder, bus.dir
     return bus.start(*app, kAppName, mission_text(kAppName, block));
   }
   std::vector<std::string> posted(const std::string& var) const { return bus.values_of(var, kAppName); }
@@ -59,14 +57,13 @@ TEST_F(MetricOnBus, StartupPostsTheRegionAndTheMissionParams_Spec14_2) {
 
 TEST_F(MetricOnBus, StartupPostingsWaitForTheConnection) {
   write_file(bus.dir / "fields/truth.txt", kTruth);
-  mission_app::MissionContext context;
-  context.directory = bus.dir.path().string();
-  HazardMetricApp late(context);
+  HazardMetricApp late;
   bus.comms = bus.bus.connect(kAppName);
   bus.comms->simulate_disconnect();
   moos::AppSettings settings;
   settings.app_name = settings.moos_name = kAppName;
   settings.config_lines = {{"hazard_file", "fields/truth.txt", "m.moos", 6}};
+  settings.mission_directory = bus.dir.path().string();
   ASSERT_TRUE(late.start(*bus.comms, settings));
   EXPECT_TRUE(bus.bus.postings_of("UHZ_MISSION_PARAMS").empty());
   ASSERT_TRUE(bus.comms->simulate_reconnect());
@@ -160,9 +157,7 @@ TEST(MetricInfo, ExampleBlockLoadsWithoutWarnings_Practice5) {
   ASSERT_NE(open, std::string::npos);
   Bus bus;
   write_file(bus.dir / "hazards.txt", kTruth);
-  mission_app::MissionContext context;
-  context.directory = bus.dir.path().string();
-  HazardMetricApp app(context);
+  HazardMetricApp app;
   ASSERT_TRUE(bus.start(app, kAppName, mission_text(kAppName, text.substr(open + 2, close - open - 2))));
   EXPECT_TRUE(app.appcast().config_warnings().empty())
       << ::testing::PrintToString(app.appcast().config_warnings());

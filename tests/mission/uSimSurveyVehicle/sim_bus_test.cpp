@@ -20,24 +20,20 @@ using mission_test::any_contains;
 using mission_test::Bus;
 using mission_test::mission_text;
 
+// The origin of mission_text's default globals (LatOrigin, LongOrigin).
 constexpr double kLat = 43.8253;
 constexpr double kLon = -70.3304;
 constexpr const char* kAlias = "uSimSurveyVehicle_archie";
 
 const std::string kRegion = "pts={0,0:100,0:100,-60:0,-60}";
 
-mission_app::MissionContext origin_context() {
-  mission_app::MissionContext c;
-  c.lat_origin_deg = kLat;
-  c.lon_origin_deg = kLon;
-  return c;
-}
-
 class SimOnBus : public ::testing::Test {
  protected:
-  bool start(const std::string& block, mission_app::MissionContext context = origin_context()) {
-    app.emplace(context);
-    return bus.start(*app, kAlias, mission_text(kAlias, block));
+  /// Starts the app on a mission with the kLat/kLon origin, or without globals.
+  bool start(const std::string& block, bool with_origin = true) {
+    app.emplace();
+    return bus.start(*app, kAlias,
+                     with_origin ? mission_text(kAlias, block) : mission_text(kAlias, block, ""));
   }
   std::vector<hazard::NodeReport> reports() const {
     std::vector<hazard::NodeReport> out;
@@ -89,7 +85,7 @@ TEST_F(SimOnBus, DeployForThisVehicleOnlyAndPlainDeployBothWork) {
   app->run_for(1.0);
   EXPECT_TRUE(app->deployed());
 
-  SimSurveyVehicle other(origin_context());
+  SimSurveyVehicle other;
   Bus bus2;
   ASSERT_TRUE(bus2.start(other, kAlias, mission_text(kAlias, kArchie)));
   bus2.post("DEPLOY", "true");  // a vehicle community fed by uFldShoreBroker
@@ -133,7 +129,7 @@ TEST_F(SimOnBus, NodeReportCarriesNameXYSpeedHeadingLatLonTimeAndType) {
 }
 
 TEST_F(SimOnBus, WithoutAnOriginTheReportHasNoLatLon) {
-  ASSERT_TRUE(start(kArchie, mission_app::MissionContext{}));
+  ASSERT_TRUE(start(kArchie, false));
   app->run_for(1.0);
   const auto r = reports().back();
   EXPECT_FALSE(r.lat_deg.has_value());
@@ -268,7 +264,7 @@ TEST_F(SimOnBus, UnplannableRegionIsAConfigWarningAndNoRoute) {
   ASSERT_TRUE(start("  vname = archie\n  region = " + kRegion + "\n  overlap = 0.5\n"
                     "  swath_width = 25\n  deploy = true\n  lane_extension = 0\n"));
   EXPECT_TRUE(app->appcast().config_warnings().empty());  // a valid plan
-  SimSurveyVehicle bad(origin_context());
+  SimSurveyVehicle bad;
   Bus bus2;
   // Not a convex polygon: rejected when the line is read.
   ASSERT_TRUE(bus2.start(bad, kAlias, mission_text(kAlias, "  region = 0,0:10,10\n")));
@@ -280,7 +276,7 @@ TEST(SimInfo, ExampleBlockLoadsWithoutWarnings_Practice5) {
   const std::string text = example_text();
   const auto open = text.find("{\n"), close = text.rfind("}");
   ASSERT_NE(open, std::string::npos);
-  SimSurveyVehicle app(origin_context());
+  SimSurveyVehicle app;
   Bus bus;
   ASSERT_TRUE(bus.start(app, kAppName,
                         mission_text(kAppName, text.substr(open + 2, close - open - 2))));

@@ -8,10 +8,10 @@
 //   decides (-e/--example/-example, -h/--help/-help, -i/--interface, -v/--version/-version);
 //   without one and without a mission file, the help is shown. The mission file, the run alias
 //   (argv[2] or --alias=) and the --moos_* switches are libmoos's parse_command_line's.
-// - run_main prints the chosen text (exit 0), or loads the mission's context (its folder and the
-//   LatOrigin / LongOrigin globals), builds the app and runs it with moos::run_app until SIGINT
-//   or SIGTERM (exit 0; 1 if the mission file cannot be read, the MOOSDB refuses the name, or
-//   start-up fails).
+// - run_main prints the chosen text (exit 0), or builds the app and runs it with moos::run_app
+//   until SIGINT or SIGTERM (exit 0; 1 if the mission file cannot be read, the MOOSDB refuses the
+//   name, or start-up fails). run_app reads the mission file once; the app finds the file's
+//   folder and globals (LatOrigin, LongOrigin) in its settings (moos::AppSettings).
 // - MissionApp::publish posts every posting of an Outputs value in order (doubles as MOOS doubles)
 //   and hands events and warnings to the AppCast. A posting that cannot be sent because the
 //   client is not connected yet is kept and sent, in order, by the next flush_unsent() (each app
@@ -34,20 +34,9 @@
 
 namespace mission_app {
 
-enum class LaunchAction { kRun, kHelp, kExample, kInterface, kVersion };
-
-/// The action the command line asks for (see the contract).
-LaunchAction decide_launch(const moos::CommandLine& command_line);
-
-/// What main learns from the mission file before the app starts.
-struct MissionContext {
-  std::string directory = ".";           ///< relative paths in the block are read from here
-  std::optional<double> lat_origin_deg;  ///< global LatOrigin, when it is a number
-  std::optional<double> lon_origin_deg;  ///< global LongOrigin, when it is a number
-};
-
-/// The context of the mission file named on the command line (defaults when none can be read).
-MissionContext read_mission_context(const moos::CommandLine& command_line);
+// The action the command line asks for (see the contract): libmoos's rule, as for every app.
+using moos::decide_launch;
+using moos::LaunchAction;
 
 /// The information texts of one application.
 struct InfoTexts {
@@ -57,7 +46,7 @@ struct InfoTexts {
   std::string (*version)();
 };
 
-using AppFactory = std::function<std::unique_ptr<moos::MoosApp>(const MissionContext&)>;
+using AppFactory = std::function<std::unique_ptr<moos::MoosApp>()>;
 
 /// The whole of main for a mission helper (see the contract). `app_name` is the default process
 /// name, printed in the launch line.

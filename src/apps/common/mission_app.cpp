@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <iostream>
 
+#include "app_support.hpp"
 #include "hazard/text.hpp"
 #include "hazard/version.hpp"
 #include "moos/mission.hpp"
@@ -21,14 +22,6 @@ constexpr std::size_t kSectionRuleWidth = 40;
 /// ANSI colours of the launch line (green on a terminal, as MOOS-IvP apps print it).
 constexpr const char* kGreen = "\x1b[32m";
 constexpr const char* kPlain = "\x1b[0m";
-
-std::optional<LaunchAction> information_switch(std::string_view arg) {
-  if (arg == "-e" || arg == "--example" || arg == "-example") return LaunchAction::kExample;
-  if (arg == "-h" || arg == "--help" || arg == "-help") return LaunchAction::kHelp;
-  if (arg == "-i" || arg == "--interface") return LaunchAction::kInterface;
-  if (arg == "-v" || arg == "--version" || arg == "-version") return LaunchAction::kVersion;
-  return std::nullopt;
-}
 
 /// Decimals of a double handed to a text parser (a pose or a flag never needs more).
 constexpr int kMailDoubleDecimals = 6;
@@ -51,31 +44,13 @@ std::string interface_section(const std::string& title,
 
 }  // namespace
 
-LaunchAction decide_launch(const moos::CommandLine& cl) {
-  for (const std::string& arg : cl.unhandled)
-    if (auto info = information_switch(arg)) return *info;
-  return cl.mission_file ? LaunchAction::kRun : LaunchAction::kHelp;
-}
-
-MissionContext read_mission_context(const moos::CommandLine& cl) {
-  MissionContext context;
-  if (!cl.mission_file) return context;
-  moos::MissionOptions options;
-  options.substitutions = cl.substitutions;
-  std::vector<moos::MissionError> ignored;  // run_app reports them when it loads the file again
-  const auto mission = moos::MissionFile::load(*cl.mission_file, options, &ignored);
-  if (!mission) return context;
-  context.directory = mission->directory();
-  context.lat_origin_deg = mission->global_double("LatOrigin");
-  context.lon_origin_deg = mission->global_double("LongOrigin");
-  return context;
-}
-
 int run_main(int argc, char** argv, const std::string& app_name, const InfoTexts& texts,
              const AppFactory& make_app) {
   const moos::CommandLine cl = moos::parse_command_line(argc, argv);
   switch (decide_launch(cl)) {
-    case LaunchAction::kHelp: return print(texts.help());
+    case LaunchAction::kHelp:
+    case LaunchAction::kUsageError:  // not from decide_launch: these apps add no switches
+      return print(texts.help());
     case LaunchAction::kExample: return print(texts.example());
     case LaunchAction::kInterface: return print(texts.interface());
     case LaunchAction::kVersion: return print(texts.version());
@@ -85,7 +60,7 @@ int run_main(int argc, char** argv, const std::string& app_name, const InfoTexts
   std::cout << (terminal ? kGreen : "") << app_name << " launching as "
             << moos::app_name_from(cl, app_name) << (terminal ? kPlain : "") << "\n\n"
             << std::flush;
-  const std::unique_ptr<moos::MoosApp> app = make_app(read_mission_context(cl));
+  const std::unique_ptr<moos::MoosApp> app = make_app();
   return moos::run_app(*app, cl, std::cout, std::cerr, terminal);
 }
 
@@ -101,27 +76,7 @@ std::string help_text(const std::string& app_name, const std::string& descriptio
          "\n"
          "Options:\n" +
          app_options +
-         "  --alias=<ProcessName>\n"
-         "      Launch " + app_name + " with the given process\n"
-         "      name rather than " + app_name + ".\n"
-         "  --example, -e\n"
-         "      Display example MOOS configuration block.\n"
-         "  --help, -h\n"
-         "      Display this help message.\n"
-         "  --interface, -i\n"
-         "      Display MOOS publications and subscriptions.\n"
-         "  --version,-v\n"
-         "      Display release version of " + app_name + ".\n"
-         "  --NAME=value\n"
-         "      Replaces $(NAME) in the mission file.\n"
-         "  --moos_host=HOST, --moos_port=PORT, --moos_time_warp=W,\n"
-         "  --moos_app_tick=HZ, --moos_name=NAME\n"
-         "      Generic MOOS switches; they override the mission file.\n"
-         "\n"
-         "Note: If argv[2] does not otherwise match a known option,\n"
-         "      then it will be interpreted as a run alias. This is\n"
-         "      to support pAntler launching conventions.\n"
-         "\n"
+         app_support::information_switches_help(app_name) + app_support::generic_switches_help() +
          "Exit codes: 0 after SIGINT/SIGTERM or an information switch; 1 if the\n"
          "mission file cannot be read, the MOOSDB refuses the name or start-up fails.\n";
 }
