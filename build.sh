@@ -7,6 +7,7 @@
 #   ./build.sh test     install dependencies, build (warnings as errors), run every test
 #   ./build.sh build    install dependencies and build only
 #   ./build.sh deps     install dependencies only
+#   ./build.sh packages print the Debian packages it needs, one a line (for .ci/run)
 #
 # Dependencies are Debian packages (apt-get, as root or through sudo) and, for the
 # wire-compatibility tests only, pymoos2 from PyPI in a virtual environment under build/.
@@ -96,8 +97,9 @@ run_tests() {
 case "${1:-build}" in
   demo)  shift; run_demo "$@" ;;
   deps)  install_dependencies ;;
+  packages) printf '%s\n' "${DEBIAN_PACKAGES[@]}" ;;
   build) install_dependencies; configure_and_build ;;
   test)  install_dependencies; configure_and_build; run_tests ;;
-  -h|--help|help) sed -n '2,11p' "$0" ;;
-  *) say "unknown job '$1' (try: demo, test, build, deps)"; exit 2 ;;
+  -h|--help|help) sed -n '2,12p' "$0" ;;
+  *) say "unknown job '$1' (try: demo, test, build, deps, packages)"; exit 2 ;;
 esac
