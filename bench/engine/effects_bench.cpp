@@ -26,6 +26,7 @@
 
 #include "hazard/dice.hpp"
 #include "hazard/engine.hpp"
+#include "hazard/reference_scenario.hpp"
 #include "hazard/text.hpp"
 
 // ---- counting allocator (this program only) -----------------------------------------------------
@@ -79,19 +80,19 @@ const char* kPlain =
     "sensor_config = width=25, exp=4, pclass=0.85\nmax_turn_rate = off\n"
     "max_vehicle_speed = off\nshow_swath = false\nshow_hazards = false\nshow_detections = 0\n";
 
+// The shared jittered grid (reference_scenario.hpp), one object a line, every third a hazard;
+// with `hr` and `aspect` each line gains the data that effect needs.
 std::string field_text(bool hr, bool aspect) {
-  const int side = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(kObjects))));
-  const double half_m = side * kSpacing_m / 2.0;
+  const std::string grid = hazard::grid_field_text(kObjects, kSpacing_m);
+  if (!hr && !aspect) return grid;
   std::string out;
-  for (int n = 0; n < kObjects; ++n) {
+  std::size_t start = 0;
+  for (int n = 0; start < grid.size(); ++n) {
+    const std::size_t end = grid.find('\n', start);
+    out.append(grid, start, end - start);
+    start = end + 1;
     const std::uint64_t h = hazard::mix64(static_cast<std::uint64_t>(n));
-    const double jx = (static_cast<double>(h % 1000) / 1000.0 - 0.5) * kSpacing_m / 1.5;
-    const double jy = (static_cast<double>((h >> 20) % 1000) / 1000.0 - 0.5) * kSpacing_m / 1.5;
-    const bool hazard = n % 3 == 0;
-    out += "hazard = x=" + hazard::fmt((n % side) * kSpacing_m - half_m + jx, 2) +
-           ",y=" + hazard::fmt((n / side) * kSpacing_m - half_m + jy, 2) + ",label=g" +
-           std::to_string(n) + ",type=" + (hazard ? "hazard" : "benign");
-    if (hr && !hazard) out += ",hr=0.5";
+    if (hr && n % 3 != 0) out += ",hr=0.5";
     if (aspect) out += ",aspect=" + std::to_string(h % 180) + ",aspect_min=10,aspect_max=40";
     out += "\n";
   }

@@ -104,14 +104,8 @@ void BM_ReferenceSurveyReplay(benchmark::State& state) {
     hazard::Engine engine(
         hazard::load_configuration(s.config, [](const std::string&) { return std::nullopt; }),
         hazard::SeedChoice{2024, hazard::SeedSource::kRandomSeed});
-    std::size_t next = 0;
-    for (long k = 0; k <= static_cast<long>(s.end_time_s * 4); ++k) {
-      const double now = k / 4.0;
-      for (; next < s.mail.size() && s.mail[next].time_s <= now; ++next) {
-        engine.on_mail(s.mail[next].variable, s.mail[next].value, s.mail[next].time_s);
-      }
-      benchmark::DoNotOptimize(engine.step(now));
-    }
+    hazard::play_mail(engine, s.mail, 4.0, s.end_time_s, {},
+                      [](const hazard::Outputs& out) { benchmark::DoNotOptimize(out); });
   }
 }
 BENCHMARK(BM_ReferenceSurveyReplay)->Unit(benchmark::kMillisecond);

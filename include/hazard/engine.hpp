@@ -23,7 +23,6 @@
 #include <optional>
 #include <string>
 #include <string_view>
-#include <unordered_map>
 #include <vector>
 
 #include "hazard/config.hpp"
@@ -117,7 +116,8 @@ class Engine {
   void post_object_visuals(Outputs& out) const;
 
   // Settings (D3, D4, D11, D20).
-  void apply_default_setting(VehicleState& v, double now_s, Outputs& out);
+  void set_default_width(VehicleId id, double pd, double now_s, Outputs& out);
+  void apply_default_setting(VehicleId id, double now_s, Outputs& out);
   OptionIndex option_or_smallest(std::optional<OptionIndex> choice, const VehicleState& v,
                                  Outputs& out) const;
   void record_width_setting(VehicleState& v, double now_s, bool opens_window);
@@ -128,7 +128,7 @@ class Engine {
 
   // The phases of step().
   void post_options_summary_if_due(double now_s, Outputs& out);
-  void sense(VehicleState& v, double now_s, Outputs& out);
+  void sense(VehicleId id, double now_s, Outputs& out);
   bool sensor_on(const VehicleState& v) const;
   bool gates_pass(double speed_mps, const std::optional<HeadingHistory>& history) const;
   void post_swath(const VehicleState& v, const Swath& swath, bool on, Outputs& out) const;
@@ -143,7 +143,10 @@ class Engine {
 
   bool active(const VehicleState& v, double now_s) const;
   double degradation(const HazardObject& o, double heading_deg) const;
-  VehicleState& vehicle_named(std::string_view name);
+  /// The id of the vehicle `name`, recorded (in name order) when first seen.
+  VehicleId vehicle_id(std::string_view name);
+  /// Where `name` is or belongs in by_name_.
+  std::vector<VehicleId>::const_iterator name_position(std::string_view name) const;
   void notify(const VehicleState& v, ObjectId id, std::uint32_t pass, DiePurpose purpose,
               bool outcome) const;
 
@@ -157,8 +160,7 @@ class Engine {
   Dice dice_;
 
   std::vector<VehicleState> vehicles_;
-  std::unordered_map<std::string, VehicleId> vehicle_ids_;
-  std::vector<VehicleId> by_name_;
+  std::vector<VehicleId> by_name_;  ///< ids in name order; also the name lookup
   std::optional<double> start_time_s_;
   std::optional<double> last_summary_s_;
   std::vector<ObjectId> scratch_inside_;          ///< reused by update_entries and sense_track

@@ -61,12 +61,8 @@ class LocalProjection {
   /// for enu and azimuthal).
   glm::dvec2 to_local(double lat_deg, double lon_deg) const;
 
-  GeodeticOrigin origin() const { return origin_; }
-  GeodesyMode mode() const { return mode_; }
-
  private:
   struct Impl;
-  GeodeticOrigin origin_;
   GeodesyMode mode_;
   std::shared_ptr<const Impl> impl_;  ///< immutable, so copies share it
 };

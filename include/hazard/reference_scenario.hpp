@@ -6,14 +6,18 @@
 // the 25 m option on two. Every object lies at least 5 m inside the swath's side edges, so which
 // objects a pass enters does not depend on how often poses are sampled. After the survey each
 // vehicle asks for a classification of every object (refusals included; some with priorities
-// and `top`). Data only: no I/O.
+// and `top`). play_mail() replays such mail into an engine. No I/O.
 
+#include <functional>
 #include <string>
 #include <vector>
 
 #include "hazard/config.hpp"
+#include "hazard/outputs.hpp"
 
 namespace hazard {
+
+class Engine;
 
 struct TimedMail {
   double time_s = 0.0;
@@ -29,6 +33,14 @@ struct Scenario {
 
 /// The survey with node reports at `node_report_hz` (poses on the same straight tracks).
 Scenario reference_survey(double node_report_hz);
+
+/// Plays `mail` (sorted by time) into `engine` in the caller's loop of engine.hpp: iterations at
+/// now = k / `tick_hz` (> 0), k = 0, 1, ..., while now <= `end_s`, each after the mail stamped at
+/// or before it, every piece delivered at its own time. `on_mail` and `on_step` (either may be
+/// empty) receive the outputs of each on_mail and each step call.
+void play_mail(Engine& engine, const std::vector<TimedMail>& mail, double tick_hz, double end_s,
+               const std::function<void(const Outputs&)>& on_mail = {},
+               const std::function<void(const Outputs&)>& on_step = {});
 
 /// A square field of `objects` objects on a jittered grid `spacing_m` apart, centred on the
 /// origin; every third a hazard. Lines are `hazard = ...` text (for benchmarks and replays).

@@ -15,6 +15,7 @@
 // Rejected alternatives: a k-d tree (no gain for near-uniform fields, harder to reason about),
 // a hash of occupied cells (only better for extremely sparse fields).
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -25,6 +26,12 @@ namespace hazard {
 struct Box {
   double min_x = 0, min_y = 0, max_x = 0, max_y = 0;
 };
+
+/// The smallest box holding both `a` and `b`.
+inline Box merged(const Box& a, const Box& b) {
+  return Box{std::min(a.min_x, b.min_x), std::min(a.min_y, b.min_y), std::max(a.max_x, b.max_x),
+             std::max(a.max_y, b.max_y)};
+}
 
 class SpatialGrid {
  public:

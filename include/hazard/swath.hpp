@@ -28,6 +28,9 @@
 
 namespace hazard {
 
+/// Radians per degree.
+inline constexpr double kRadPerDeg = 3.14159265358979323846 / 180.0;
+
 struct SinCos {
   double sin = 0.0;
   double cos = 1.0;
@@ -53,8 +56,6 @@ class Swath {
   std::array<glm::dvec2, 4> corners() const;
   /// The axis-aligned box around the corners (for the spatial index).
   Box bounds() const;
-  /// The box around the swath swept by `displacement_m` (both ends' boxes together).
-  Box swept_bounds(glm::dvec2 displacement_m) const;
 
  private:
   glm::dvec2 center_;

@@ -134,14 +134,22 @@ const std::vector<InterfaceVariable>& Engine::publications() {
   return v;
 }
 
-std::optional<VehicleId> Engine::find_vehicle(std::string_view name) const {
-  const auto it = vehicle_ids_.find(std::string(name));
-  if (it == vehicle_ids_.end()) return std::nullopt;
-  return it->second;
+// The name index is the lookup: a binary search over the ids in name order (a few compares for
+// a fleet of 100), so no second name -> id map has to be kept in step with it.
+std::vector<VehicleId>::const_iterator Engine::name_position(std::string_view name) const {
+  return std::lower_bound(by_name_.begin(), by_name_.end(), name,
+                          [&](VehicleId a, std::string_view n) { return vehicles_[a].name < n; });
 }
 
-VehicleState& Engine::vehicle_named(std::string_view name) {
-  if (const auto id = find_vehicle(name)) return vehicles_[*id];
+std::optional<VehicleId> Engine::find_vehicle(std::string_view name) const {
+  const auto pos = name_position(name);
+  if (pos == by_name_.end() || vehicles_[*pos].name != name) return std::nullopt;
+  return *pos;
+}
+
+VehicleId Engine::vehicle_id(std::string_view name) {
+  const auto pos = name_position(name);
+  if (pos != by_name_.end() && vehicles_[*pos].name == name) return *pos;
   const auto id = static_cast<VehicleId>(vehicles_.size());
   VehicleState v;
   v.name = std::string(name);
@@ -149,13 +157,8 @@ VehicleState& Engine::vehicle_named(std::string_view name) {
   v.name_hash = hash_name(name);
   if (effects_.turn_blackout) v.heading_history.emplace();
   vehicles_.push_back(std::move(v));
-  vehicle_ids_.emplace(std::string(name), id);
-  const auto pos = std::lower_bound(by_name_.begin(), by_name_.end(), name,
-                                    [&](VehicleId a, std::string_view n) {
-                                      return vehicles_[a].name < n;
-                                    });
   by_name_.insert(pos, id);
-  return vehicles_[id];
+  return id;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -218,7 +221,7 @@ Outputs Engine::on_mail(std::string_view variable, std::string_view value, doubl
 
 // A LAT/LON-only report was placed by the parser (geodesy.hpp); the engine only sees x/y.
 void Engine::handle_node_report(const NodeReport& r, double now_s, Outputs& out) {
-  VehicleState& v = vehicle_named(r.name);
+  VehicleState& v = vehicles_[vehicle_id(r.name)];
   v.pose = Pose{{r.x_m, r.y_m}, r.heading_deg, r.speed_mps};
   if (v.heading_history) v.heading_history->add(r.heading_deg, now_s);
   if (track_mode()) add_to_track(v, out);
@@ -229,7 +232,7 @@ void Engine::handle_node_report(const NodeReport& r, double now_s, Outputs& out)
 }
 
 void Engine::handle_sensor_request(std::string_view vname, double now_s) {
-  VehicleState& v = vehicle_named(vname);
+  VehicleState& v = vehicles_[vehicle_id(vname)];
   ++v.counters.sensor_requests;
   v.last_sensor_request_s = now_s;
 }
@@ -322,13 +325,20 @@ void Engine::record_width_setting(VehicleState& v, double now_s, bool opens_wind
   if (opens_window) v.width_window_start_s = now_s;
 }
 
-// D4: the default width through the width choice (so `max` applies; rulings "Width choice").
-void Engine::apply_default_setting(VehicleState& v, double now_s, Outputs& out) {
-  const VehicleId id = *find_vehicle(v.name);
+// D4: the default width through the width choice (so `max` applies; rulings "Width choice"),
+// with `pd`. Counts as a width setting but opens no min_reset_interval window.
+void Engine::set_default_width(VehicleId id, double pd, double now_s, Outputs& out) {
+  VehicleState& v = vehicles_[id];
   const auto choice = choose_option(config_.options.default_width_m(), id, now_s);
-  set_option(v, option_or_smallest(choice, v, out), kDefaultPd);
+  set_option(v, option_or_smallest(choice, v, out), pd);
   ++v.counters.width_attempts;
   record_width_setting(v, now_s, /*opens_window=*/false);
+}
+
+// A sensing vehicle without a setting gets the default one, announced like a request's (D4).
+void Engine::apply_default_setting(VehicleId id, double now_s, Outputs& out) {
+  set_default_width(id, kDefaultPd, now_s, out);
+  const VehicleState& v = vehicles_[id];
   out.events.push_back("Setting default sensor settings for: " + v.name);
   post_ack(v, out);
 }
@@ -340,8 +350,8 @@ void Engine::handle_config_request(const ConfigRequest& r, double now_s, Outputs
                                ": no sensor_config options exist; ignored");
     return;
   }
-  VehicleState& v = vehicle_named(r.vname);
-  const VehicleId id = *find_vehicle(r.vname);
+  const VehicleId id = vehicle_id(r.vname);
+  VehicleState& v = vehicles_[id];
   const char* what =
       r.width_m ? "Setting sensor settings for: " : "Setting sensor PD settings for: ";
   out.events.push_back(what + v.name);
@@ -355,10 +365,7 @@ void Engine::handle_config_request(const ConfigRequest& r, double now_s, Outputs
   if (!r.width_m) {
     if (!v.setting) {
       // pd-only without a setting: the default width with the requested pd, in one ack.
-      const auto choice = choose_option(config_.options.default_width_m(), id, now_s);
-      set_option(v, option_or_smallest(choice, v, out), *r.pd);
-      ++v.counters.width_attempts;
-      record_width_setting(v, now_s, /*opens_window=*/false);
+      set_default_width(id, *r.pd, now_s, out);
     }
     set_pd(*r.pd);  // pd-only updates are never rate-limited (D11)
     return post_ack(v, out);
@@ -498,7 +505,7 @@ void Engine::release_classifications(double now_s, Outputs& out) {
 Outputs Engine::step(double now_s) {
   Outputs out;
   post_options_summary_if_due(now_s, out);
-  for (VehicleId id : by_name_) sense(vehicles_[id], now_s, out);
+  for (VehicleId id : by_name_) sense(id, now_s, out);
   release_classifications(now_s, out);
   return out;
 }
@@ -512,7 +519,8 @@ void Engine::post_options_summary_if_due(double now_s, Outputs& out) {
   out.post("UHZ_OPTIONS_SUMMARY", format_options_summary(config_.options.summary()));
 }
 
-void Engine::sense(VehicleState& v, double now_s, Outputs& out) {
+void Engine::sense(VehicleId id, double now_s, Outputs& out) {
+  VehicleState& v = vehicles_[id];
   if (!active(v, now_s)) {
     if (track_mode()) collapse_track(v);  // inactive: the track's segments are not sensed
     return;
@@ -532,7 +540,7 @@ void Engine::sense(VehicleState& v, double now_s, Outputs& out) {
       if (track_mode()) collapse_track(v);
       return;
     }
-    apply_default_setting(v, now_s, out);
+    apply_default_setting(id, now_s, out);
   }
   const bool on = sensor_on(v);
   const Swath swath(v.pose->position_m, v.pose->heading_deg, v.setting->width_m,
@@ -623,16 +631,12 @@ void Engine::sense_track(VehicleState& v, double now_s, Outputs& out) {
   const std::vector<TrackPiece> pieces =
       track_pieces(v.track, !v.track_start_sensed, mode, config_.swath_substeps,
                    v.setting->width_m, config_.swath_length_m);
-  v.track_start_sensed = true;
-  v.track_overflowed = false;
-  v.track.erase(v.track.begin(), v.track.end() - 1);
+  collapse_track(v);            // the latest report starts the next track ...
+  v.track_start_sensed = true;  // ... and has been sensed now
   if (pieces.empty()) return;  // no sensed piece: nothing changes
 
   Box box = pieces.front().box;
-  for (const TrackPiece& p : pieces) {
-    box = Box{std::min(box.min_x, p.box.min_x), std::min(box.min_y, p.box.min_y),
-              std::max(box.max_x, p.box.max_x), std::max(box.max_y, p.box.max_y)};
-  }
+  for (const TrackPiece& p : pieces) box = merged(box, p.box);
   scratch_candidates_.assign(v.inside.begin(), v.inside.end());
   field_.grid().for_each_in_box(box, [&](ObjectId id, glm::dvec2) {
     scratch_candidates_.push_back(id);

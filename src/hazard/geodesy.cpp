@@ -135,7 +135,7 @@ struct LocalProjection::Impl {
 };
 
 LocalProjection::LocalProjection(GeodeticOrigin origin, GeodesyMode mode)
-    : origin_(origin), mode_(mode), impl_(std::make_shared<const Impl>(origin, mode)) {}
+    : mode_(mode), impl_(std::make_shared<const Impl>(origin, mode)) {}
 
 glm::dvec2 LocalProjection::to_local(double lat_deg, double lon_deg) const {
   return impl_->to_local(mode_, lat_deg, lon_deg);

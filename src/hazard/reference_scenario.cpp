@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "hazard/dice.hpp"
+#include "hazard/engine.hpp"
 #include "hazard/messages/classify_request.hpp"
 #include "hazard/messages/config_request.hpp"
 #include "hazard/messages/node_report.hpp"
@@ -113,6 +114,21 @@ Scenario reference_survey(double node_report_hz) {
                    [](const TimedMail& a, const TimedMail& b) { return a.time_s < b.time_s; });
   s.end_time_s = ask_s + kClassifyInterval_s * (static_cast<double>(labels.size()) + 2);
   return s;
+}
+
+void play_mail(Engine& engine, const std::vector<TimedMail>& mail, double tick_hz, double end_s,
+               const std::function<void(const Outputs&)>& on_mail,
+               const std::function<void(const Outputs&)>& on_step) {
+  std::size_t next = 0;
+  for (long k = 0; static_cast<double>(k) / tick_hz <= end_s; ++k) {
+    const double now_s = static_cast<double>(k) / tick_hz;
+    for (; next < mail.size() && mail[next].time_s <= now_s; ++next) {
+      const Outputs out = engine.on_mail(mail[next].variable, mail[next].value, mail[next].time_s);
+      if (on_mail) on_mail(out);
+    }
+    const Outputs out = engine.step(now_s);
+    if (on_step) on_step(out);
+  }
 }
 
 std::string grid_field_text(int objects, double spacing_m) {

@@ -9,13 +9,6 @@ namespace hazard {
 
 namespace {
 
-constexpr double kRadPerDeg = 3.14159265358979323846 / 180.0;
-
-Box merged(const Box& a, const Box& b) {
-  return Box{std::min(a.min_x, b.min_x), std::min(a.min_y, b.min_y), std::max(a.max_x, b.max_x),
-             std::max(a.max_y, b.max_y)};
-}
-
 bool in_box(const Box& b, glm::dvec2 p) {
   return p.x >= b.min_x && p.x <= b.max_x && p.y >= b.min_y && p.y <= b.max_y;
 }

@@ -5,19 +5,19 @@
 #include <limits>
 
 #include "hazard/text.hpp"
+#include "messages/fields.hpp"
 
 namespace hazard {
 
 namespace {
 
+using detail::field_value;
+using detail::missing_field;
+
 // Range limits of the rulings' validation table.
 constexpr double kMinExp = 1.0;
 constexpr double kMinPclass = 0.5;
 constexpr double kMaxPclass = 1.0;
-
-std::string field_value(std::string_view key, std::string_view value) {
-  return "field '" + std::string(key) + "' value '" + excerpt(value) + "'";
-}
 
 }  // namespace
 
@@ -45,9 +45,9 @@ SensorConfigParse parse_sensor_config(std::string_view value) {
     out.error = std::move(why);
     return out;
   };
-  if (!width) return fail("missing field 'width'");
-  if (!exp) return fail("missing field 'exp'");
-  if (!pclass) return fail("missing field 'pclass'");
+  if (!width) return fail(missing_field("width"));
+  if (!exp) return fail(missing_field("exp"));
+  if (!pclass) return fail(missing_field("pclass"));
   SensorOption o;
   const auto w = parse_number(*width);
   if (!w || !(*w > 0.0)) return fail(field_value("width", *width) + " is not a number > 0");

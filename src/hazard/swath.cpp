@@ -13,7 +13,6 @@ SinCos sin_cos_deg(double angle_deg) {
   if (a == 90.0) return {1.0, 0.0};
   if (a == 180.0) return {0.0, -1.0};
   if (a == 270.0) return {-1.0, 0.0};
-  constexpr double kRadPerDeg = 3.14159265358979323846 / 180.0;
   return {std::sin(a * kRadPerDeg), std::cos(a * kRadPerDeg)};
 }
 
@@ -94,14 +93,6 @@ Box Swath::bounds() const {
   b.max_x += margin;
   b.max_y += margin;
   return b;
-}
-
-Box Swath::swept_bounds(glm::dvec2 displacement_m) const {
-  Box b = bounds();
-  const Box end{b.min_x + displacement_m.x, b.min_y + displacement_m.y,
-                b.max_x + displacement_m.x, b.max_y + displacement_m.y};
-  return Box{std::min(b.min_x, end.min_x), std::min(b.min_y, end.min_y),
-             std::max(b.max_x, end.max_x), std::max(b.max_y, end.max_y)};
 }
 
 }  // namespace hazard

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
@@ -98,7 +97,6 @@ std::optional<double> parse_number(std::string_view text) {
   // strtod needs a terminated string; the grammar check above makes it locale-safe in the
   // "C" locale that our programs never change. Underflow (1e-400) yields a finite 0 and is kept.
   const std::string copy(text);
-  errno = 0;
   char* end = nullptr;
   const double v = std::strtod(copy.c_str(), &end);
   if (end != copy.c_str() + copy.size() || !std::isfinite(v)) return std::nullopt;

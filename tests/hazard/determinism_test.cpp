@@ -23,26 +23,15 @@ ReplayRun replay(const Scenario& s, double tick_hz, std::uint64_t seed = 2024) {
   Engine engine(load_configuration(s.config, [](const std::string&) { return std::nullopt; }),
                 SeedChoice{seed, SeedSource::kRandomSeed});
   ReplayRun run;
-  engine.set_decision_observer([&](const Decision& d) {
-    run.tuples.push_back(std::string(d.vehicle) + " " + std::string(d.label) + " " +
-                         std::to_string(d.pass) + " " +
-                         (d.purpose == DiePurpose::kDetection ? "detect " : "classify ") +
-                         (d.outcome ? "1" : "0"));
-  });
+  engine.set_decision_observer(
+      [&](const Decision& d) { run.tuples.push_back(testing::decision_tuple(d)); });
   engine.start(0);
-  std::size_t next = 0;
-  const auto ticks = static_cast<long>(s.end_time_s * tick_hz);
-  for (long k = 0; k <= ticks; ++k) {
-    const double now = static_cast<double>(k) / tick_hz;
-    for (; next < s.mail.size() && s.mail[next].time_s <= now; ++next) {
-      engine.on_mail(s.mail[next].variable, s.mail[next].value, s.mail[next].time_s);
-    }
-    const Outputs out = engine.step(now);
+  play_mail(engine, s.mail, tick_hz, s.end_time_s, {}, [&](const Outputs& out) {
     for (const auto& p : out.postings) {
       run.detections += p.variable == "UHZ_DETECTION_REPORT";
       run.answers += p.variable == "UHZ_HAZARD_REPORT";
     }
-  }
+  });
   const auto violations = engine.invariant_violations();
   EXPECT_TRUE(violations.empty()) << violations.front();
   std::sort(run.tuples.begin(), run.tuples.end());

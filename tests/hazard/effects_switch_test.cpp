@@ -50,29 +50,19 @@ SceneRun run(const Scene& scene, const std::string& switch_line) {
                                    [](const std::string&) { return std::nullopt; }, scene.origin),
                 SeedChoice{77, SeedSource::kCommandLine});
   SceneRun r;
-  engine.set_decision_observer([&](const Decision& d) {
-    r.decisions.push_back(std::string(d.vehicle) + " " + std::string(d.label) + " " +
-                          std::to_string(d.pass) +
-                          (d.purpose == DiePurpose::kDetection ? " detect " : " classify ") +
-                          (d.outcome ? "1" : "0"));
-  });
+  engine.set_decision_observer(
+      [&](const Decision& d) { r.decisions.push_back(testing::decision_tuple(d)); });
   r.text = serialise(engine.start(0));
-  std::size_t next = 0;
-  for (long k = 0; k / 4.0 <= scene.end_s; ++k) {
-    const double now = k / 4.0;
-    for (; next < scene.mail.size() && scene.mail[next].time_s <= now; ++next) {
-      const TimedMail& m = scene.mail[next];
-      r.text += serialise(engine.on_mail(m.variable, m.value, m.time_s));
-    }
-    const Outputs out = engine.step(now);
-    r.text += serialise(out);
-    for (const auto& p : out.postings) {
-      if (p.variable == "UHZ_DETECTION_REPORT") {
-        const auto at = p.value.find("label=") + 6;
-        r.detected.insert(p.value.substr(at, p.value.find(',', at) - at));
-      }
-    }
-  }
+  constexpr double kTick_hz = 4.0;
+  play_mail(
+      engine, scene.mail, kTick_hz, scene.end_s,
+      [&](const Outputs& out) { r.text += serialise(out); },
+      [&](const Outputs& out) {
+        r.text += serialise(out);
+        for (const auto& p : out.postings) {
+          if (p.variable == "UHZ_DETECTION_REPORT") r.detected.insert(testing::label_of(p.value));
+        }
+      });
   EXPECT_TRUE(engine.invariant_violations().empty());
   return r;
 }

@@ -12,6 +12,7 @@ namespace {
 using testing::contains;
 using testing::Driver;
 using testing::first_label;
+using testing::label_of;
 using testing::quiet_block;
 using testing::values_of;
 
@@ -32,11 +33,6 @@ void pass_over(Driver& d, const std::string& v = "v") {
   d.mail("UHZ_CONFIG_REQUEST", "vname=" + v + ",width=25,pd=1");
   d.pose(v, 0, 0, 90);
   d.tick();
-}
-
-std::string label_of(const std::string& report) {
-  const auto at = report.find("label=") + 6;
-  return report.substr(at, report.find(',', at) - at);
 }
 
 // (time, label) of every released answer of vehicle `v` while ticking once a second.

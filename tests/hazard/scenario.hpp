@@ -90,6 +90,15 @@ inline void append(Outputs& into, const Outputs& from) {
                               from.config_warnings.end());
 }
 
+/// The value of `key` in a report's key=value text: after the first "<key>=", up to the next ','
+/// (label_of, type_of: keys no other key of the report ends with).
+inline std::string report_field(const std::string& report, const std::string& key) {
+  const auto at = report.find(key + "=") + key.size() + 1;
+  return report.substr(at, report.find(',', at) - at);
+}
+inline std::string label_of(const std::string& report) { return report_field(report, "label"); }
+inline std::string type_of(const std::string& report) { return report_field(report, "type"); }
+
 inline bool contains(const std::vector<std::string>& texts, std::string_view needle) {
   for (const auto& t : texts) {
     if (t.find(needle) != std::string::npos) return true;
@@ -165,6 +174,14 @@ std::string first_label(std::uint64_t seed, const std::string& vehicle, const st
   }
   ADD_FAILURE() << "no label with the wanted dice";
   return prefix;
+}
+
+/// One die outcome as "vehicle label pass detect|classify 0|1" (what the determinism checks
+/// compare and hash).
+inline std::string decision_tuple(const Decision& d) {
+  return std::string(d.vehicle) + " " + std::string(d.label) + " " + std::to_string(d.pass) +
+         (d.purpose == DiePurpose::kDetection ? " detect " : " classify ") +
+         (d.outcome ? "1" : "0");
 }
 
 /// Binomial 5-sigma check helper: |k/n - p| <= 5 sqrt(p(1-p)/n).

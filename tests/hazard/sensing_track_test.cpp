@@ -266,14 +266,7 @@ std::vector<std::string> replay_mower(const Mower& m, const std::string& mode, d
   r.attach(engine);
   engine.start(0);
   engine.on_mail("UHZ_CONFIG_REQUEST", "vname=v,width=10,pd=0.8", 0);
-  std::size_t next = 0;
-  for (long k = 0; static_cast<double>(k) / hz <= m.end_s + 1; ++k) {
-    const double now = static_cast<double>(k) / hz;
-    for (; next < m.mail.size() && m.mail[next].time_s <= now; ++next) {
-      engine.on_mail(m.mail[next].variable, m.mail[next].value, m.mail[next].time_s);
-    }
-    engine.step(now);
-  }
+  play_mail(engine, m.mail, hz, m.end_s + 1);
   EXPECT_TRUE(engine.invariant_violations().empty());
   std::sort(r.tuples.begin(), r.tuples.end());
   return r.tuples;
@@ -382,14 +375,7 @@ TEST(SensingTrackEngine, SweepingTheReferenceSurveyFindsWhatSamplingFinds_Style1
     Decisions r;
     r.attach(engine);
     engine.start(0);
-    std::size_t next = 0;
-    for (long k = 0; k <= static_cast<long>(s.end_time_s * 4); ++k) {
-      const double now = k / 4.0;
-      for (; next < s.mail.size() && s.mail[next].time_s <= now; ++next) {
-        engine.on_mail(s.mail[next].variable, s.mail[next].value, s.mail[next].time_s);
-      }
-      engine.step(now);
-    }
+    play_mail(engine, s.mail, 4.0, s.end_time_s);
     std::sort(r.tuples.begin(), r.tuples.end());
     results[sweep] = r.tuples;
   }

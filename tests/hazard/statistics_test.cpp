@@ -12,17 +12,8 @@ namespace hazard {
 namespace {
 
 using testing::five_sigma;
-
-
-std::string label_of(const std::string& report) {
-  const auto at = report.find("label=") + 6;
-  return report.substr(at, report.find(',', at) - at);
-}
-
-std::string type_of(const std::string& report) {
-  const auto at = report.find("type=") + 5;
-  return report.substr(at, report.find(',', at) - at);
-}
+using testing::label_of;
+using testing::type_of;
 
 // Objects inside a 2 x 50 m wide, 100 m long swath around the origin (heading 90: along x),
 // `per_category` of each kind; category = the label's first letter.
@@ -107,7 +98,7 @@ TEST(Statistics, ClassificationRatesMatchTheModel_Manual3_2_6_2_7_2) {
       const Outputs out = engine.step(t);
       for (const auto& p : out.postings) {
         if (p.variable != "UHZ_DETECTION_REPORT") continue;  // vname=V,x=..,y=..,label=L
-        credits[p.value.substr(6, p.value.find(',') - 6)].push_back(label_of(p.value));
+        credits[testing::report_field(p.value, "vname")].push_back(label_of(p.value));
       }
       t += 1;
     }

@@ -2,6 +2,7 @@
 
 #include <set>
 
+#include "fields.hpp"
 #include "hazard/style.hpp"
 #include "hazard/text.hpp"
 
@@ -9,15 +10,14 @@ namespace hazard {
 
 namespace {
 
+using detail::field_value;
+using detail::missing_field;
+
 // Ranges from the rulings' validation table (D27, D28).
 constexpr double kMaxAspectDeg = 360.0;       // aspect in [0, 360)
 constexpr double kMaxAspectWindowDeg = 90.0;  // aspect_min, aspect_max in [0, 90], sum <= 90
 
 std::string quoted(std::string_view s) { return "'" + std::string(s) + "'"; }
-
-std::string field_value(std::string_view key, std::string_view value) {
-  return "field " + quoted(key) + " value " + quoted(excerpt(value));
-}
 
 // Collects what parse_hazard_line finds, field by field.
 struct LineReader {
@@ -153,10 +153,10 @@ struct LineReader {
     if (!result.error.empty()) return;
     if ((!x || !y) && lat_text && lon_text) place_lat_lon();
     if (!result.error.empty()) return;
-    if (!x || !y) return reject(std::string("missing field '") + (!x ? "x" : "y") + "'");
+    if (!x || !y) return reject(missing_field(!x ? "x" : "y"));
     if (!type) type = type_from_hazard_key;
-    if (!type) return reject("missing field 'type'");
-    if (!label || label->empty()) return reject("missing field 'label'");
+    if (!type) return reject(missing_field("type"));
+    if (!label || label->empty()) return reject(missing_field("label"));
     check_aspect_window();
     if (!result.error.empty()) return;
     object.x_m = *x;
