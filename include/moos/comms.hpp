@@ -30,6 +30,7 @@
 
 #include "moos/clock.hpp"
 #include "moos/message.hpp"
+#include "moos/wildcard.hpp"
 
 namespace moos {
 
@@ -105,15 +106,8 @@ class Comms {
  private:
   Message control_message(char type, char data_type, const std::string& key) const;
   Message register_message(const std::string& var, double interval_s) const;
-  Message wildcard_message(char type, const std::string& var_pattern,
-                           const std::string& app_pattern, double interval_s) const;
+  Message wildcard_message(char type, const WildcardSpec& spec) const;
   bool post_and_record(Message msg);
-
-  struct WildcardEntry {
-    std::string var_pattern;
-    std::string app_pattern;
-    double interval_s = 0.0;
-  };
 
   const std::string name_;
   mutable std::mutex book_mutex_;
@@ -121,7 +115,7 @@ class Comms {
   /// unset) or a wildcard pair.
   struct Subscription {
     bool wildcard = false;
-    WildcardEntry entry;
+    WildcardSpec entry;
   };
   std::vector<Subscription> subscriptions_;
   std::set<std::string> published_;

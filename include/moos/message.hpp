@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <string>
+#include <string_view>
 
 namespace moos {
 
@@ -31,6 +32,12 @@ inline constexpr char kString = 'S';
 inline constexpr char kBinary = 'B';
 inline constexpr char kNotSet = '~';
 }  // namespace data_type
+
+/// The identification key that selects asynchronous mode and the WELCOME string value that
+/// advertises it, compared case-insensitively (wire spec 1.5, 1.6).
+inline constexpr std::string_view kAsynchronousKey = "asynchronous";
+/// The key of TIMING messages (wire spec 2.6).
+inline constexpr std::string_view kTimingKey = "_async_timing";
 
 /// Unused doubles and ids are -1, as libMOOS writes them (wire spec 2.2).
 inline constexpr double kUnsetDouble = -1.0;

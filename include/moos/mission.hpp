@@ -55,6 +55,9 @@ struct MissionError {
   std::string block;
   /// "file:line: message" (or "file: message").
   std::string to_string() const;
+  /// True for a problem outside any block or in `app_name`'s block (case-insensitive): the
+  /// problems that program must report.
+  bool concerns(std::string_view app_name) const;
 };
 
 struct MissionOptions {

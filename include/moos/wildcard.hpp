@@ -14,6 +14,8 @@
 //   first skipped item is described there (an item without '=', an unknown key — keys are
 //   case-sensitive —, or an interval that is not a finite number >= 0), so a server can refuse
 //   the registration with a reason instead.
+// - WildcardSpec::matches tests a writer and a variable name against both patterns;
+//   same_patterns compares the pattern pair only (a filter's identity).
 
 #include <string>
 #include <string_view>
@@ -29,6 +31,15 @@ struct WildcardSpec {
   std::string app_pattern;
   std::string var_pattern;
   double interval_s = 0.0;
+
+  /// True if `writer` matches app_pattern and `variable` matches var_pattern (spec 5.5).
+  bool matches(std::string_view writer, std::string_view variable) const {
+    return wildcard_match(app_pattern, writer) && wildcard_match(var_pattern, variable);
+  }
+  /// Same pattern pair, whatever the intervals: a filter's identity (spec 5.5).
+  bool same_patterns(const WildcardSpec& other) const {
+    return app_pattern == other.app_pattern && var_pattern == other.var_pattern;
+  }
 };
 
 std::string format_wildcard_spec(const WildcardSpec& spec);

@@ -8,6 +8,7 @@
 #include <limits>
 #include <ostream>
 
+#include "moos/limits.hpp"
 #include "moos/tcp_client.hpp"
 #include "moos/text.hpp"
 
@@ -15,9 +16,6 @@ namespace moos {
 
 namespace {
 
-constexpr double kMaxTimeWarp = 400.0;             // spec 0.3
-constexpr int kMaxPort = 65535;
-constexpr long long kMaxCommsTickHz = 200;         // spec 4.2
 constexpr double kMaxTermReportInterval_s = 10.0;  // spec 7.2 clamp 0-10
 constexpr long long kMaxAppCastRunWarnings = 1000; // core-moos upper bound
 /// libMOOS waits this many MOOS seconds for the first connection before starting up (7.1).
@@ -30,7 +28,6 @@ constexpr double kScheduleToleranceFraction = 1e-3;
 
 constexpr std::string_view kAppCastRequestKey = "APPCAST_REQ";
 constexpr std::string_view kAppCastKey = "APPCAST";
-constexpr std::string_view kTimingKey = "_async_timing";
 
 constexpr std::string_view kFrameworkKeys[] = {
     "APPTICK",        "COMMSTICK",          "MAXAPPTICK",         "ITERATEMODE",
@@ -109,8 +106,7 @@ void apply_framework_line(const ConfigLine& line, AppSettings& s, bool& block_ap
   } else if (key == "MAX_APPCAST_RUN_WARNINGS") {
     if (auto n = clipped_count(line, 0, kMaxAppCastRunWarnings, s)) s.max_appcast_run_warnings = *n;
   } else if (key == "MOOS_TIME_WARP") {
-    const auto w = text::parse_number(v);
-    if (w && *w > 0 && *w <= kMaxTimeWarp) s.time_warp = *w;
+    if (const auto w = parse_time_warp(v)) s.time_warp = *w;
     else warn("Invalid moos_time_warp: " + v + " (must be a number in (0, 400])");
   }
 }
@@ -150,8 +146,7 @@ void apply_globals(const MissionFile& mission, AppSettings& s) {
       s.config_warnings.push_back("Invalid ServerPort: " + port->value + place(*port));
   }
   if (const ConfigLine* warp = mission.global_line("MOOSTimeWarp")) {
-    const auto w = text::parse_number(text::remove_blanks(warp->value));
-    if (w && *w > 0 && *w <= kMaxTimeWarp)
+    if (const auto w = parse_time_warp(text::remove_blanks(warp->value)))
       s.time_warp = *w;
     else
       s.config_warnings.push_back("Invalid MOOSTimeWarp: " + warp->value + place(*warp));
@@ -192,7 +187,7 @@ AppSettings resolve_app_settings(const AppTraits& traits, const CommandLine& cl,
     s.mission = std::make_shared<const MissionFile>(*mission);
     s.mission_directory = mission->directory();
     for (const auto& e : mission_errors)
-      if (e.block.empty() || text::iequals(e.block, s.app_name)) s.config_warnings.push_back(e.to_string());
+      if (e.concerns(s.app_name)) s.config_warnings.push_back(e.to_string());
     apply_globals(*mission, s);
     if (const ProcessBlock* block = mission->block(s.app_name)) {
       s.have_block = true;
@@ -327,9 +322,9 @@ void MoosApp::cycle() {
   if (!comms_->is_connected()) return;  // libMOOS iterates only while connected (7.1)
   post_status_if_due();
   ++iteration_;
-  const std::string moos_upper = text::to_upper(settings_.moos_name);
   if (traits_.post_iteration_timing && last_iterate_start_moos_s_)
-    comms_->notify(moos_upper + "_ITER_GAP", (now - *last_iterate_start_moos_s_) * settings_.app_tick_hz);
+    comms_->notify(text::to_upper(settings_.moos_name) + "_ITER_GAP",
+                   (now - *last_iterate_start_moos_s_) * settings_.app_tick_hz);
   last_iterate_start_moos_s_ = now;
   iterate();
   post_report(now);

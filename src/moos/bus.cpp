@@ -28,17 +28,12 @@ struct BusCore {
     Message last;  // the last accepted write, community filled in
     std::map<std::string, Subscription> subscribers;
   };
-  struct Filter {
-    std::string app_pattern;
-    std::string var_pattern;
-    double interval_s = 0.0;
-  };
   struct ClientState {
     BusClient* handle = nullptr;  // for on-mail callbacks; cleared when the client goes away
     bool connected = true;
     std::uint64_t connections = 1;
     std::vector<Message> inbox;
-    std::vector<Filter> filters;
+    std::vector<WildcardSpec> filters;
   };
 
   BusCore(Clock& c, InProcessBus::Options o) : clock(c), options(std::move(o)) {}
@@ -87,7 +82,7 @@ struct BusCore {
       // New variables are matched against stored filters at their first write (spec 5.3 step 2).
       for (auto& [client, state] : clients)
         for (const auto& f : state.filters)
-          if (wildcard_match(f.app_pattern, msg.source) && wildcard_match(f.var_pattern, msg.key))
+          if (f.matches(msg.source, msg.key))
             v.subscribers[client] = Subscription{f.interval_s, std::nullopt};
     }
     if (msg.data_type != v.data_type) {
@@ -111,33 +106,30 @@ struct BusCore {
     }
   }
 
+  // An existing variable matches by its last writer ("" while unwritten), spec 5.5.
+  static bool matches(const WildcardSpec& spec, const std::string& name, const Variable& v) {
+    return spec.matches(v.writes > 0 ? std::string_view(v.last.source) : std::string_view(), name);
+  }
+
   void on_wildcard_register(const std::string& client, const WildcardSpec& spec,
                             std::vector<std::string>& woken) {
     auto& filters = clients[client].filters;
-    const bool known = std::any_of(filters.begin(), filters.end(), [&](const Filter& f) {
-      return f.app_pattern == spec.app_pattern && f.var_pattern == spec.var_pattern;
-    });
+    const bool known = std::any_of(filters.begin(), filters.end(),
+                                   [&](const WildcardSpec& f) { return f.same_patterns(spec); });
     // Set semantics on the pattern pair: the first filter's interval stays (spec 5.5).
-    if (!known) filters.push_back(Filter{spec.app_pattern, spec.var_pattern, spec.interval_s});
+    if (!known) filters.push_back(spec);
     std::vector<std::string> matching;
     for (const auto& [name, v] : variables)
-      if (wildcard_match(spec.var_pattern, name) &&
-          wildcard_match(spec.app_pattern, v.writes > 0 ? v.last.source : std::string()))
-        matching.push_back(name);
+      if (matches(spec, name, v)) matching.push_back(name);
     for (const auto& name : matching) subscribe(client, name, spec.interval_s, woken);
   }
 
   void on_wildcard_unregister(const std::string& client, const WildcardSpec& spec) {
     for (auto& [name, v] : variables)
-      if (wildcard_match(spec.var_pattern, name) &&
-          wildcard_match(spec.app_pattern, v.writes > 0 ? v.last.source : std::string()))
-        v.subscribers.erase(client);
+      if (matches(spec, name, v)) v.subscribers.erase(client);
     auto& filters = clients[client].filters;
     filters.erase(std::remove_if(filters.begin(), filters.end(),
-                                 [&](const Filter& f) {
-                                   return f.app_pattern == spec.app_pattern &&
-                                          f.var_pattern == spec.var_pattern;
-                                 }),
+                                 [&](const WildcardSpec& f) { return f.same_patterns(spec); }),
                   filters.end());
   }
 

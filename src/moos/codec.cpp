@@ -4,9 +4,9 @@
 
 #include "moos/codec.hpp"
 
-#include <cctype>
 #include <cstring>
-#include <limits>
+
+#include "moos/text.hpp"
 
 namespace moos {
 
@@ -183,14 +183,7 @@ std::string protocol_banner() {
 
 bool banner_matches(std::string_view received) {
   const auto nul = received.find('\0');
-  const std::string_view text = received.substr(0, nul);
-  if (text.size() != kBannerText.size()) return false;
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    const auto a = static_cast<unsigned char>(text[i]);
-    const auto b = static_cast<unsigned char>(kBannerText[i]);
-    if (std::tolower(a) != std::tolower(b)) return false;
-  }
-  return true;
+  return text::iequals(received.substr(0, nul), kBannerText);
 }
 
 void append_message(std::string& out, const Message& msg) {

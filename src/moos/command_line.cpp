@@ -5,6 +5,7 @@
 
 #include <algorithm>
 
+#include "moos/limits.hpp"
 #include "moos/text.hpp"
 
 namespace moos {
@@ -13,11 +14,6 @@ namespace {
 
 constexpr std::string_view kMoosPrefix = "--moos_";
 constexpr std::string_view kAliasPrefix = "--alias=";
-constexpr int kMaxPort = 65535;
-/// Warp range accepted by libMOOS (spec 0.3).
-constexpr double kMaxTimeWarp = 400.0;
-/// CommsTick range of libMOOS (spec 4.2).
-constexpr int kMaxCommsTickHz = 200;
 /// Switches that libMOOS reads as "switch followed by a separate argument" (spec 6.4).
 constexpr std::string_view kSwitchesWithNextArgument[] = {"moos_app_name", "moos_comms_tick"};
 
@@ -43,8 +39,7 @@ void set_typed_switch(CommandLine& cl, const std::string& name, const std::strin
     if (auto p = text::parse_integer(value, 1, kMaxPort)) cl.moos_port = static_cast<int>(*p);
     else bad("not a port number in 1..65535");
   } else if (name == "moos_time_warp") {
-    const auto w = text::parse_number(value);
-    if (w && *w > 0 && *w <= kMaxTimeWarp) cl.moos_time_warp = *w;
+    if (const auto w = parse_time_warp(value)) cl.moos_time_warp = *w;
     else bad("time warp must be a number in (0, 400]");
   } else if (name == "moos_app_tick") {
     const auto f = text::parse_number(value);

@@ -17,6 +17,15 @@ constexpr double kUnregisterDval = 0.0;
 bool valid_pattern(const std::string& pattern) {
   return !pattern.empty() && pattern.find(',') == std::string::npos;
 }
+
+/// The book entry of a subscription: plain ones by variable name (their app pattern is empty),
+/// wildcards by pattern pair.
+template <typename Book>
+auto find_subscription(Book& book, bool wildcard, const WildcardSpec& key) {
+  return std::find_if(book.begin(), book.end(), [&](const auto& s) {
+    return s.wildcard == wildcard && s.entry.same_patterns(key);
+  });
+}
 }  // namespace
 
 Comms::~Comms() = default;
@@ -37,11 +46,10 @@ Message Comms::register_message(const std::string& var, double interval_s) const
   return m;
 }
 
-Message Comms::wildcard_message(char type, const std::string& var_pattern,
-                                const std::string& app_pattern, double interval_s) const {
+Message Comms::wildcard_message(char type, const WildcardSpec& spec) const {
   // The key of a wildcard message is the client's own name (ignored by the DB, spec 2.6).
   Message m = control_message(type, data_type::kString, name_);
-  m.sval = format_wildcard_spec(WildcardSpec{app_pattern, var_pattern, interval_s});
+  m.sval = format_wildcard_spec(spec);
   return m;
 }
 
@@ -49,11 +57,10 @@ bool Comms::register_variable(const std::string& var, double interval_s) {
   if (var.empty() || !(interval_s >= 0)) return false;
   {
     std::lock_guard<std::mutex> lock(book_mutex_);
-    auto it = std::find_if(subscriptions_.begin(), subscriptions_.end(), [&](const Subscription& s) {
-      return !s.wildcard && s.entry.var_pattern == var;
-    });
+    const WildcardSpec entry{{}, var, interval_s};
+    auto it = find_subscription(subscriptions_, false, entry);
     if (it == subscriptions_.end())
-      subscriptions_.push_back(Subscription{false, WildcardEntry{var, {}, interval_s}});
+      subscriptions_.push_back(Subscription{false, entry});
     else
       it->entry.interval_s = interval_s;  // registering again updates the interval (spec 4.1)
   }
@@ -64,9 +71,7 @@ bool Comms::register_variable(const std::string& var, double interval_s) {
 bool Comms::unregister_variable(const std::string& var) {
   {
     std::lock_guard<std::mutex> lock(book_mutex_);
-    auto it = std::find_if(subscriptions_.begin(), subscriptions_.end(), [&](const Subscription& s) {
-      return !s.wildcard && s.entry.var_pattern == var;
-    });
+    auto it = find_subscription(subscriptions_, false, WildcardSpec{{}, var, 0.0});
     if (it == subscriptions_.end()) return false;  // never registered: nothing to send (4.1)
     subscriptions_.erase(it);
   }
@@ -79,35 +84,32 @@ bool Comms::unregister_variable(const std::string& var) {
 bool Comms::register_wildcard(const std::string& var_pattern, const std::string& app_pattern,
                               double interval_s) {
   if (!valid_pattern(var_pattern) || !valid_pattern(app_pattern) || !(interval_s >= 0)) return false;
+  const WildcardSpec spec{app_pattern, var_pattern, interval_s};
   {
     std::lock_guard<std::mutex> lock(book_mutex_);
-    auto it = std::find_if(subscriptions_.begin(), subscriptions_.end(), [&](const Subscription& s) {
-      return s.wildcard && s.entry.var_pattern == var_pattern && s.entry.app_pattern == app_pattern;
-    });
+    auto it = find_subscription(subscriptions_, true, spec);
     if (it == subscriptions_.end())
-      subscriptions_.push_back(Subscription{true, WildcardEntry{var_pattern, app_pattern, interval_s}});
+      subscriptions_.push_back(Subscription{true, spec});
     else
       it->entry.interval_s = interval_s;
   }
-  transmit(wildcard_message(msg_type::kWildcardRegister, var_pattern, app_pattern, interval_s));
+  transmit(wildcard_message(msg_type::kWildcardRegister, spec));
   return true;
 }
 
 bool Comms::unregister_wildcard(const std::string& var_pattern, const std::string& app_pattern) {
   if (!valid_pattern(var_pattern) || !valid_pattern(app_pattern)) return false;
+  const WildcardSpec spec{app_pattern, var_pattern, 0.0};
   bool known = false;
   {
     std::lock_guard<std::mutex> lock(book_mutex_);
-    auto it = std::find_if(subscriptions_.begin(), subscriptions_.end(), [&](const Subscription& s) {
-      return s.wildcard && s.entry.var_pattern == var_pattern && s.entry.app_pattern == app_pattern;
-    });
+    auto it = find_subscription(subscriptions_, true, spec);
     if (it != subscriptions_.end()) {
       subscriptions_.erase(it);
       known = true;
     }
   }
-  const bool sent =
-      transmit(wildcard_message(msg_type::kWildcardUnregister, var_pattern, app_pattern, 0.0));
+  const bool sent = transmit(wildcard_message(msg_type::kWildcardUnregister, spec));
   return sent || known;
 }
 
@@ -186,8 +188,7 @@ std::vector<Message> Comms::replay_messages() const {
   out.reserve(copy.size());
   for (const auto& s : copy) {
     if (s.wildcard)
-      out.push_back(wildcard_message(msg_type::kWildcardRegister, s.entry.var_pattern,
-                                     s.entry.app_pattern, s.entry.interval_s));
+      out.push_back(wildcard_message(msg_type::kWildcardRegister, s.entry));
     else
       out.push_back(register_message(s.entry.var_pattern, s.entry.interval_s));
   }

@@ -405,6 +405,10 @@ std::string MissionError::to_string() const {
   return file + ": " + message;
 }
 
+bool MissionError::concerns(std::string_view app_name) const {
+  return block.empty() || text::iequals(block, app_name);
+}
+
 std::optional<MissionFile> MissionFile::load(const std::string& path, const MissionOptions& options,
                                              std::vector<MissionError>* errors) {
   const auto content = read_whole_file(path);

@@ -24,21 +24,16 @@
 #include <cmath>
 #include <cstring>
 
+#include "moos/limits.hpp"
 #include "moos/text.hpp"
 
 namespace moos {
 
 namespace {
 
-constexpr double kMaxTimeWarp = 400.0;  // spec 0.3
-constexpr int kMaxPort = 65535;
 /// Bytes read per recv call, and recv calls per wake-up (1 MiB) before sending gets a turn.
 constexpr std::size_t kReadChunkBytes = 64 * 1024;
 constexpr int kMaxReadChunksPerWake = 16;
-/// The identification key that selects asynchronous mode (spec 1.5).
-constexpr const char* kAsyncKey = "asynchronous";
-/// TIMING messages carry this key (spec 2.6).
-constexpr const char* kTimingKey = "_async_timing";
 /// The hostname token of WELCOME's source aux (spec 1.6).
 constexpr std::string_view kHostnameToken = "hostname";
 /// Skew filter weight of the previous value (spec 4.4).
@@ -60,6 +55,13 @@ int poll_timeout_ms(double seconds) {
 bool set_nonblocking(int fd) {
   const int flags = fcntl(fd, F_GETFL, 0);
   return flags >= 0 && fcntl(fd, F_SETFL, flags | O_NONBLOCK) == 0;
+}
+
+/// Empties the (non-blocking) self-pipe: one wake-up covers every byte written so far.
+void drain_wake_pipe(int fd) {
+  char buf[64];
+  while (::read(fd, buf, sizeof buf) > 0) {
+  }
 }
 
 std::string errno_text(const char* what) { return std::string(what) + ": " + std::strerror(errno); }
@@ -117,7 +119,7 @@ bool TcpClient::start() {
   std::string problem;
   if (options_.name.empty()) problem = "the client name is empty";
   else if (options_.port < 1 || options_.port > kMaxPort) problem = "port " + std::to_string(options_.port) + " is outside 1..65535";
-  else if (!(options_.time_warp > 0 && options_.time_warp <= kMaxTimeWarp))
+  else if (!is_valid_time_warp(options_.time_warp))
     problem = "time warp " + text::format_g(options_.time_warp) + " is outside (0, 400]";
   {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -253,11 +255,7 @@ void TcpClient::wait_for_wake(double timeout_real_s) {
     const double left = deadline - steady_now_s();
     if (left <= 0) return;
     pollfd p{wake_read_, POLLIN, 0};
-    if (::poll(&p, 1, poll_timeout_ms(left)) > 0) {
-      char buf[64];
-      while (::read(wake_read_, buf, sizeof buf) > 0) {
-      }
-    }
+    if (::poll(&p, 1, poll_timeout_ms(left)) > 0) drain_wake_pipe(wake_read_);
   }
 }
 
@@ -339,7 +337,7 @@ bool TcpClient::handshake() {
   Message ident;
   ident.type = msg_type::kData;
   ident.data_type = data_type::kString;
-  ident.key = kAsyncKey;
+  ident.key = kAsynchronousKey;
   ident.sval = name();
   ident.time = local_time();  // skew is 0 here, so this is the MOOS time libMOOS sends
   write_buffer_ = protocol_banner() + encode_packet({ident});
@@ -406,7 +404,7 @@ bool TcpClient::handshake() {
   {
     std::lock_guard<std::mutex> lock(mutex_);
     community_ = first.community;
-    server_async_ = text::iequals(first.sval, kAsyncKey);
+    server_async_ = text::iequals(first.sval, kAsynchronousKey);
     server_hostname_ = db_host;
     state_ = ConnectionState::kConnected;
     ++connections_;
@@ -484,11 +482,7 @@ void TcpClient::serve() {
       drop_connection(errno_text("poll"));
       return;
     }
-    if (p[1].revents & POLLIN) {
-      char buf[64];
-      while (::read(wake_read_, buf, sizeof buf) > 0) {
-      }
-    }
+    if (p[1].revents & POLLIN) drain_wake_pipe(wake_read_);
     if ((p[0].revents & (POLLIN | POLLERR | POLLHUP)) && !read_available()) return;
   }
 }

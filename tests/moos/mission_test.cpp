@@ -132,6 +132,17 @@ TEST(MissionBlocks, FirstOfTwoSameNameBlocksWinsAndTheSecondIsReported_6_3) {
   EXPECT_EQ(errors.at(0).block, "PA");
 }
 
+TEST(MissionErrors, AProblemConcernsTheAppOfItsBlockAnyCaseOrEveryAppOutsideBlocks) {
+  const MissionError in_block{"m.moos", 3, "bad", "pA"};
+  EXPECT_TRUE(in_block.concerns("pA"));
+  EXPECT_TRUE(in_block.concerns("PA"));
+  EXPECT_FALSE(in_block.concerns("pB"));
+  EXPECT_FALSE(in_block.concerns("pA_2"));
+  const MissionError outside{"m.moos", 1, "bad", ""};
+  EXPECT_TRUE(outside.concerns("pA"));
+  EXPECT_TRUE(outside.concerns("anything"));
+}
+
 TEST(MissionBlocks, HeaderMatchedAfterRemovingBlanksAnyCase_6_3) {
   std::vector<MissionError> errors;
   const auto m = parse("  processconfig=pA\n\n  // comment between\n   {  \n a = 1\n   }\n", &errors);

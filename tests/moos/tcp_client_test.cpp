@@ -14,6 +14,7 @@
 
 #include "moos/codec.hpp"
 #include "moos/tcp_client.hpp"
+#include "child_process.hpp"
 
 namespace moos {
 namespace test {
@@ -27,10 +28,7 @@ using test::hex_bytes;
 constexpr double kT0 = 1700000000.0;
 constexpr double kWait_s = 5.0;  // upper bound for anything that should happen quickly
 
-double now_s() {
-  using namespace std::chrono;
-  return duration_cast<duration<double>>(steady_clock::now().time_since_epoch()).count();
-}
+using test_support::steady_now_s;
 
 /// A one-connection-at-a-time TCP server driven by the test.
 class FakeServer {
@@ -69,7 +67,7 @@ class FakeServer {
   }
 
   std::optional<std::string> read_exact(std::size_t n, double timeout_s = kWait_s) {
-    const double deadline = now_s() + timeout_s;
+    const double deadline = steady_now_s() + timeout_s;
     while (buffer_.size() < n) {
       if (!fill(deadline)) return std::nullopt;
     }
@@ -93,9 +91,9 @@ class FakeServer {
   }
   /// Reads packets until one holds a message that is not TIMING; returns all its messages.
   std::optional<std::vector<Message>> read_non_timing(double timeout_s = kWait_s) {
-    const double deadline = now_s() + timeout_s;
-    while (now_s() < deadline) {
-      auto pkt = read_packet(deadline - now_s());
+    const double deadline = steady_now_s() + timeout_s;
+    while (steady_now_s() < deadline) {
+      auto pkt = read_packet(deadline - steady_now_s());
       if (!pkt) return std::nullopt;
       for (const auto& m : *pkt)
         if (m.type != msg_type::kTiming) return pkt;
@@ -108,8 +106,8 @@ class FakeServer {
   }
   /// True once the peer has closed (EOF) within the timeout.
   bool peer_closed(double timeout_s = kWait_s) {
-    const double deadline = now_s() + timeout_s;
-    while (now_s() < deadline) {
+    const double deadline = steady_now_s() + timeout_s;
+    while (steady_now_s() < deadline) {
       pollfd p{conn_, POLLIN, 0};
       if (::poll(&p, 1, 50) > 0) {
         char buf[4096];
@@ -122,7 +120,7 @@ class FakeServer {
 
  private:
   bool fill(double deadline) {
-    const double left = deadline - now_s();
+    const double left = deadline - steady_now_s();
     if (left <= 0 || conn_ < 0) return false;
     pollfd p{conn_, POLLIN, 0};
     if (::poll(&p, 1, static_cast<int>(left * 1000) + 1) <= 0) return false;
@@ -217,8 +215,8 @@ TEST_F(TcpClientTest, WelcomeGivesCommunityHostAndSkew_1_7_1_8) {
   EXPECT_DOUBLE_EQ(client.moos_time(), kT0 + 0.001);
   EXPECT_EQ(client.connection_count(), 1u);
   // The callback runs on the comms thread right after the handshake.
-  const double deadline = now_s() + kWait_s;
-  while (connects == 0 && now_s() < deadline) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  const double deadline = steady_now_s() + kWait_s;
+  while (connects == 0 && steady_now_s() < deadline) std::this_thread::sleep_for(std::chrono::milliseconds(5));
   EXPECT_EQ(connects, 1);
 }
 
@@ -275,9 +273,9 @@ TEST_F(TcpClientTest, RegistrationsAndNotificationsGoOutWithIncreasingIds_2_5) {
   ASSERT_TRUE(client.notify_binary("BLOB", std::string("\x00\xff\x10\x7f", 4)));
   ASSERT_TRUE(client.flush(kWait_s));
   std::vector<Message> got;
-  const double deadline = now_s() + kWait_s;
-  while (got.size() < 4 && now_s() < deadline) {
-    auto pkt = server.read_packet(deadline - now_s());
+  const double deadline = steady_now_s() + kWait_s;
+  while (got.size() < 4 && steady_now_s() < deadline) {
+    auto pkt = server.read_packet(deadline - steady_now_s());
     ASSERT_TRUE(pkt.has_value());
     ASSERT_FALSE(pkt->empty());  // never an empty packet (spec 3.4)
     for (auto& m : *pkt)
@@ -318,14 +316,14 @@ TEST_F(TcpClientTest, IdleClientSendsTimingAtLeastOncePerSecond_4_6) {
   ASSERT_TRUE(client.start());
   handshake();
   std::vector<double> arrivals;
-  const double deadline = now_s() + 2.6;
-  while (now_s() < deadline) {
-    auto pkt = server.read_packet(deadline - now_s());
+  const double deadline = steady_now_s() + 2.6;
+  while (steady_now_s() < deadline) {
+    auto pkt = server.read_packet(deadline - steady_now_s());
     if (!pkt) break;
     ASSERT_EQ(pkt->size(), 1u);
     EXPECT_EQ(pkt->at(0).type, msg_type::kTiming);
     EXPECT_EQ(pkt->at(0).source, "");
-    arrivals.push_back(now_s());
+    arrivals.push_back(steady_now_s());
   }
   ASSERT_GE(arrivals.size(), 3u);
   for (std::size_t i = 1; i < arrivals.size(); ++i)
@@ -340,9 +338,9 @@ TEST_F(TcpClientTest, LeadingTimingIsConsumedAndRefinesTheSkew_4_4) {
   Message mail = make_double_notify("X", 1.0, "other", kT0);
   // The manual clock stands still, so Tq = Tr = kT0 and measured = Ts - kT0.
   server.send({timing_echo(kT0, kT0 + 0.2), mail});
-  const double deadline = now_s() + kWait_s;
+  const double deadline = steady_now_s() + kWait_s;
   std::vector<Message> got;
-  while (got.empty() && now_s() < deadline) {
+  while (got.empty() && steady_now_s() < deadline) {
     got = client.fetch();
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
@@ -351,7 +349,7 @@ TEST_F(TcpClientTest, LeadingTimingIsConsumedAndRefinesTheSkew_4_4) {
   EXPECT_NEAR(client.skew_s(), 0.2, 1e-6);  // current skew was exactly 0: adopt the measurement
   server.send({timing_echo(kT0, kT0 + 1.2), mail});
   got.clear();
-  while (got.empty() && now_s() < deadline) {
+  while (got.empty() && steady_now_s() < deadline) {
     got = client.fetch();
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
@@ -371,8 +369,8 @@ TEST_F(TcpClientTest, NullsAndStrayTimingsAreDroppedNotSetTypesDelivered_4_6) {
   server.send({null_msg});
   server.send({make_string_notify("B", "b", "s", kT0)});
   std::vector<Message> got;
-  const double deadline = now_s() + kWait_s;
-  while (got.size() < 3 && now_s() < deadline) {
+  const double deadline = steady_now_s() + kWait_s;
+  while (got.size() < 3 && steady_now_s() < deadline) {
     for (auto& m : client.fetch()) got.push_back(m);
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
@@ -393,8 +391,8 @@ TEST_F(TcpClientTest, MailFollowingWelcomeInTheSameSegmentIsKept_5_1a) {
                     encode_packet({make_double_notify("EARLY", 7.0, "s", kT0)}));
   ASSERT_TRUE(client.wait_until_connected(kWait_s));
   std::vector<Message> got;
-  const double deadline = now_s() + kWait_s;
-  while (got.empty() && now_s() < deadline) {
+  const double deadline = steady_now_s() + kWait_s;
+  while (got.empty() && steady_now_s() < deadline) {
     got = client.fetch();
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
@@ -417,8 +415,8 @@ TEST_F(TcpClientTest, ReconnectsAndResendsEveryRegistrationFirst_1_9) {
   ASSERT_TRUE(client.flush(kWait_s));
 
   server.drop();  // the server goes away
-  const double deadline = now_s() + kWait_s;
-  while (client.is_connected() && now_s() < deadline) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  const double deadline = steady_now_s() + kWait_s;
+  while (client.is_connected() && steady_now_s() < deadline) std::this_thread::sleep_for(std::chrono::milliseconds(5));
   EXPECT_FALSE(client.is_connected());
   EXPECT_FALSE(client.notify("X", 1.0));  // posting while disconnected fails (spec 1.9)
 
@@ -437,8 +435,8 @@ TEST_F(TcpClientTest, ReconnectsAndResendsEveryRegistrationFirst_1_9) {
   EXPECT_EQ(regs[1].sval, "AppPattern=*,VarPattern=NAV_*,Interval=0.5");
   EXPECT_EQ(regs[2].key, "B");
   EXPECT_EQ(regs[2].dval, 2.0);
-  const double cb_deadline = now_s() + kWait_s;
-  while (connects < 2 && now_s() < cb_deadline) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  const double cb_deadline = steady_now_s() + kWait_s;
+  while (connects < 2 && steady_now_s() < cb_deadline) std::this_thread::sleep_for(std::chrono::milliseconds(5));
   EXPECT_EQ(connects, 2);
 }
 

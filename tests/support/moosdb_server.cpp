@@ -46,6 +46,14 @@ MoosdbServer::MoosdbServer(const std::string& binary, const std::vector<std::str
                 << stderr_text();
 }
 
+moos::TcpClientOptions local_client_options(int port, const std::string& name) {
+  moos::TcpClientOptions options;
+  options.host = "127.0.0.1";
+  options.port = port;
+  options.name = name;
+  return options;
+}
+
 std::optional<int> MoosdbServer::stop() {
   if (!child_) return std::nullopt;
   return child_->stop(kStopTimeout_s);

@@ -9,6 +9,7 @@
 //   server exits first or the time runs out, the test fails naming why (with the server's
 //   standard error) and ok() is false.
 // - Its standard error goes to a file the test can read (stderr_text, wait_for_log).
+// - local_client_options: what one of our clients needs to reach a server on this machine.
 // - The destructor stops it (stop()). It is a Child (child_process.hpp), so it also dies with the
 //   test process, and nothing is left behind even when a test fails.
 
@@ -17,6 +18,7 @@
 #include <vector>
 
 #include "child_process.hpp"
+#include "moos/tcp_client.hpp"
 #include "scratch_files.hpp"
 
 namespace test_support {
@@ -51,5 +53,8 @@ class MoosdbServer {
   std::optional<Child> child_;
   int port_ = 0;
 };
+
+/// Options of a TcpClient named `name` for a server on 127.0.0.1:`port`, the rest left default.
+moos::TcpClientOptions local_client_options(int port, const std::string& name);
 
 }  // namespace test_support

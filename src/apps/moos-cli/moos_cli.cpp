@@ -13,6 +13,7 @@
 #include <ostream>
 
 #include "moos/alog.hpp"
+#include "moos/limits.hpp"
 #include "moos/tcp_client.hpp"
 #include "moos/text.hpp"
 #include "moos/wildcard.hpp"
@@ -21,19 +22,12 @@ namespace moos_cli {
 
 namespace {
 
-constexpr int kMaxPort = 65535;
-constexpr double kMaxTimeWarp = 400.0;  // wire spec 0.3
 /// How long poke waits for its posts to reach the socket, real seconds.
 constexpr double kFlushTimeout_s = 10.0;
 
-bool starts_with(std::string_view s, std::string_view p) { return s.substr(0, p.size()) == p; }
-
-std::optional<double> parse_decimal(std::string_view s) { return moos::text::parse_number(s); }
-
-std::optional<long long> parse_whole(std::string_view s) {
-  return moos::text::parse_integer(s, std::numeric_limits<long long>::min(),
-                                   std::numeric_limits<long long>::max());
-}
+using moos::text::parse_integer;
+using moos::text::parse_number;
+using moos::text::starts_with;
 
 std::string default_name() { return "moos-cli-" + std::to_string(::getpid()); }
 
@@ -88,28 +82,28 @@ std::optional<Options> parse_options(const std::vector<std::string>& args, std::
       o.host = std::string(value_of("--host="));
       if (o.host.empty()) return fail("--host= needs a host");
     } else if (starts_with(a, "--port=")) {
-      const auto p = parse_whole(value_of("--port="));
-      if (!p || *p < 1 || *p > kMaxPort) return fail("bad port: " + a);
+      const auto p = parse_integer(value_of("--port="), 1, moos::kMaxPort);
+      if (!p) return fail("bad port: " + a);
       o.port = static_cast<int>(*p);
     } else if (starts_with(a, "--name=")) {
       o.name = std::string(value_of("--name="));
       if (o.name.empty()) return fail("--name= needs a name");
     } else if (starts_with(a, "--connect-timeout=")) {
-      const auto t = parse_decimal(value_of("--connect-timeout="));
+      const auto t = parse_number(value_of("--connect-timeout="));
       if (!t || *t <= 0) return fail("bad timeout: " + a);
       o.connect_timeout_s = *t;
     } else if (starts_with(a, "--moos_time_warp=")) {
-      const auto w = parse_decimal(value_of("--moos_time_warp="));
-      if (!w || *w <= 0 || *w > kMaxTimeWarp) return fail("bad time warp: " + a);
+      const auto w = moos::parse_time_warp(value_of("--moos_time_warp="));
+      if (!w) return fail("bad time warp: " + a);
       o.time_warp = *w;
     } else if (a == "--string" && o.command == Command::kPoke) {
       o.all_strings = true;
     } else if (starts_with(a, "--count=") && o.command == Command::kWatch) {
-      const auto n = parse_whole(value_of("--count="));
-      if (!n || *n < 1) return fail("bad count: " + a);
+      const auto n = parse_integer(value_of("--count="), 1, std::numeric_limits<long long>::max());
+      if (!n) return fail("bad count: " + a);
       o.count = *n;
     } else if (starts_with(a, "--timeout=") && o.command == Command::kWatch) {
-      const auto t = parse_decimal(value_of("--timeout="));
+      const auto t = parse_number(value_of("--timeout="));
       if (!t || *t <= 0) return fail("bad timeout: " + a);
       o.timeout_s = *t;
     } else if (starts_with(a, "-")) {
@@ -147,7 +141,7 @@ std::optional<Poke> parse_poke(std::string_view assignment, bool all_strings, st
     value = value.substr(1, value.size() - 2);
     force_string = true;
   }
-  const auto number = force_string ? std::nullopt : parse_decimal(value);
+  const auto number = force_string ? std::nullopt : parse_number(value);
   if (number) {
     p.is_double = true;
     p.dval = *number;

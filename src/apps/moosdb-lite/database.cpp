@@ -21,12 +21,12 @@
 
 #include "database.hpp"
 
-
 #include <algorithm>
 #include <cassert>
-#include <cctype>
 #include <cmath>
 #include <utility>
+
+#include "moos/text.hpp"
 
 namespace moosdb_lite {
 
@@ -36,26 +36,9 @@ using moos::Message;
 namespace mt = moos::msg_type;
 namespace dt = moos::data_type;
 
-/// Handshake key that selects asynchronous mode, compared case-insensitively (spec 1.5),
-/// and the WELCOME string value that advertises it (spec 1.6).
-constexpr const char* kAsynchronousKey = "asynchronous";
 /// Write-frequency estimate of a variable (dval2 of the `ALL` answer, spec 5.8): writes
 /// counted over windows of at least this many MOOS seconds.
 constexpr double kFrequencyWindow_moos_s = 1.0;
-
-bool equals_ignoring_case(const std::string& a, const std::string& b) {
-  if (a.size() != b.size()) return false;
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    if (std::tolower(static_cast<unsigned char>(a[i])) !=
-        std::tolower(static_cast<unsigned char>(b[i])))
-      return false;
-  }
-  return true;
-}
-
-bool same_patterns(const moos::WildcardSpec& a, const moos::WildcardSpec& b) {
-  return a.app_pattern == b.app_pattern && a.var_pattern == b.var_pattern;
-}
 
 bool is_value_type(char data_type) {
   return data_type == dt::kDouble || data_type == dt::kString || data_type == dt::kBinary;
@@ -117,7 +100,7 @@ bool Database::connect(ClientId id, const std::vector<Message>& identification,
 
   Client client;
   client.name = ident->sval;
-  client.async = equals_ignoring_case(ident->key, kAsynchronousKey);
+  client.async = moos::text::iequals(ident->key, moos::kAsynchronousKey);
   client_by_name_[client.name] = id;
   const std::string name = client.name;
   clients_.emplace(id, std::move(client));
@@ -127,7 +110,7 @@ bool Database::connect(ClientId id, const std::vector<Message>& identification,
   welcome.source_aux = "hostname=" + config_.hostname;
   welcome.community = config_.community;
   welcome.dval = now_moos_s - ident->time;
-  welcome.sval = kAsynchronousKey;
+  welcome.sval = moos::kAsynchronousKey;
   send_packet(id, {std::move(welcome)});
 
   publish_db_string("DB_EVENT", "connected=" + name, now_moos_s);
@@ -156,8 +139,7 @@ void Database::disconnect(ClientId id, double now_moos_s) {
 // ---------------------------------------------------------------------------------------
 // Packets (spec 5.2)
 
-void Database::process_packet(ClientId id, const std::vector<Message>& packet,
-                              double now_moos_s) {
+void Database::process_packet(ClientId id, std::vector<Message> packet, double now_moos_s) {
   if (clients_.count(id) == 0) return;
   // Step 2: a leading TIMING is echoed to asynchronous clients; synchronous clients never
   // receive TIMING (spec 5.6), so theirs is dropped. TIMING elsewhere is ignored.
@@ -171,7 +153,8 @@ void Database::process_packet(ClientId id, const std::vector<Message>& packet,
       echo->dval2 = 0.0;        // outgoing delay for this client, seconds (none)
     }
   }
-  for (std::size_t i = first; i < packet.size(); ++i) handle_message(id, packet[i], now_moos_s);
+  for (std::size_t i = first; i < packet.size(); ++i)
+    handle_message(id, std::move(packet[i]), now_moos_s);
 
   // Step 6: the reply. Sync: NULL first, always. Async: echo first, only if non-empty.
   Client& client = clients_.at(id);
@@ -189,9 +172,9 @@ void Database::process_packet(ClientId id, const std::vector<Message>& packet,
   flush_async_mail();
 }
 
-void Database::handle_message(ClientId id, const Message& msg, double now) {
+void Database::handle_message(ClientId id, Message msg, double now) {
   switch (msg.type) {
-    case mt::kNotify: handle_notify(id, msg, now); break;
+    case mt::kNotify: handle_notify(id, std::move(msg), now); break;
     case mt::kRegister: handle_register(id, msg, now); break;
     case mt::kUnregister: handle_unregister(id, msg); break;
     case mt::kWildcardRegister: handle_wildcard_register(id, msg, now); break;
@@ -277,8 +260,7 @@ void Database::bind_wildcard_filters(VarId var, const std::string& writer) {
   for (auto& [id, client] : clients_) {
     if (v.subscribers.count(id) != 0) continue;  // an explicit registration wins
     for (const auto& filter : client.filters) {
-      if (moos::wildcard_match(filter.app_pattern, writer) &&
-          moos::wildcard_match(filter.var_pattern, v.name)) {
+      if (filter.matches(writer, v.name)) {
         v.subscribers[id] = Subscription{filter.interval_s, 0.0};
         client.subscribed.insert(var);
         break;
@@ -289,8 +271,7 @@ void Database::bind_wildcard_filters(VarId var, const std::string& writer) {
 
 bool Database::matches(const moos::WildcardSpec& spec, const Variable& var) {
   // An existing variable matches by its last writer (empty if never written), spec 5.5.
-  return moos::wildcard_match(spec.app_pattern, var.writer) &&
-         moos::wildcard_match(spec.var_pattern, var.name);
+  return spec.matches(var.writer, var.name);
 }
 
 Database::VarId Database::find_or_create(const std::string& name) {
@@ -341,7 +322,7 @@ void Database::handle_wildcard_register(ClientId id, const Message& msg, double 
     return refuse(id, "WILDCARD_REGISTER \"" + msg.sval + "\" refused: " + problem);
   auto& filters = clients_.at(id).filters;
   const bool known = std::any_of(filters.begin(), filters.end(), [&](const moos::WildcardSpec& f) {
-    return same_patterns(f, spec);
+    return f.same_patterns(spec);
   });
   if (!known) filters.push_back(spec);  // set semantics on the pair: the first interval stays
   for (VarId var = 0; var < vars_.size(); ++var) {
@@ -357,7 +338,7 @@ void Database::handle_wildcard_unregister(ClientId id, const Message& msg) {
   Client& client = clients_.at(id);
   auto& filters = client.filters;
   const auto same = std::find_if(filters.begin(), filters.end(), [&](const moos::WildcardSpec& f) {
-    return same_patterns(f, spec);
+    return f.same_patterns(spec);
   });
   if (same != filters.end()) filters.erase(same);
   for (VarId var = 0; var < vars_.size(); ++var) {

@@ -89,8 +89,8 @@ class Database {
   void disconnect(ClientId id, double now_moos_s);
 
   /// Processes one packet from a connected client (spec 5.2) and queues the replies.
-  void process_packet(ClientId id, const std::vector<moos::Message>& packet,
-                      double now_moos_s);
+  /// Taken by value: its NOTIFYs are moved into storage, not copied.
+  void process_packet(ClientId id, std::vector<moos::Message> packet, double now_moos_s);
 
   /// Rewrites DB_TIME, DB_UPTIME, DB_CLIENTS and DB_RWSUMMARY (spec 5.7).
   void refresh_db_variables(double now_moos_s);
@@ -148,7 +148,7 @@ class Database {
   };
 
   // One handler per message type (spec 5.2 step 3).
-  void handle_message(ClientId id, const moos::Message& msg, double now);
+  void handle_message(ClientId id, moos::Message msg, double now);
   void handle_notify(ClientId id, moos::Message msg, double now);
   void handle_register(ClientId id, const moos::Message& msg, double now);
   void handle_unregister(ClientId id, const moos::Message& msg);

@@ -17,10 +17,11 @@
 #include <unistd.h>
 
 #include <cerrno>
-#include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <vector>
+
+#include "moos/clock.hpp"
 
 namespace moosdb_lite {
 
@@ -61,11 +62,6 @@ bool write_port_file(const std::string& path, int port, std::string* error) {
 }
 
 }  // namespace
-
-double unix_time_s() {
-  using namespace std::chrono;
-  return duration<double>(system_clock::now().time_since_epoch()).count();
-}
 
 EventLoop::EventLoop(EventLoopConfig config, Hub& hub, LogSink log)
     : config_(std::move(config)), hub_(hub), log_(std::move(log)) {}
@@ -126,7 +122,7 @@ void EventLoop::run(int wake_fd, const volatile std::sig_atomic_t& stop_requeste
       log_("poll failed: " + errno_text());
       return;
     }
-    double now = unix_time_s();
+    double now = moos::system_clock().unix_now_s();
     if (fds[1].revents != 0) {
       char drain[64];
       while (::read(wake_fd, drain, sizeof drain) > 0) {
@@ -136,7 +132,7 @@ void EventLoop::run(int wake_fd, const volatile std::sig_atomic_t& stop_requeste
     for (std::size_t i = 0; i < ids.size(); ++i) {
       if (fds[i + 2].revents & (POLLIN | POLLHUP | POLLERR)) read_from(ids[i], now);
     }
-    now = unix_time_s();
+    now = moos::system_clock().unix_now_s();
     hub_.tick(now);
     apply_actions(now);
     for (auto& [id, socket] : sockets_) {
@@ -231,7 +227,9 @@ void EventLoop::apply_actions(double now) {
       case Action::Kind::kSend:
         if (socket.broken) break;
         if (socket.pending() == 0) socket.last_progress_real_s = now;
-        socket.out += action.bytes;
+        // An empty buffer takes the packet's bytes as they are: no copy on the usual path.
+        if (socket.out.empty()) socket.out = std::move(action.bytes);
+        else socket.out += action.bytes;
         break;
       case Action::Kind::kClose:
         close_socket(action.id);

@@ -83,7 +83,4 @@ class EventLoop {
   std::map<ConnectionId, Socket> sockets_;
 };
 
-/// Wall-clock unix time in seconds (MOOS time is epoch based, spec 0.3).
-double unix_time_s();
-
 }  // namespace moosdb_lite

@@ -13,6 +13,8 @@
 #include <cstdio>
 #include <utility>
 
+#include "moos/text.hpp"
+
 namespace moosdb_lite {
 
 namespace {
@@ -34,12 +36,6 @@ std::string quote_bytes(std::string_view bytes, std::size_t max_bytes) {
     }
   }
   return out + "\"";
-}
-
-std::string seconds_text(double s) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", s);
-  return text;
 }
 
 }  // namespace
@@ -112,7 +108,7 @@ void Hub::process_packets(ConnectionId id, double now) {
       continue;
     }
     conn.last_packet_real_s = now;
-    db_.process_packet(id, packet, moos_time(now));
+    db_.process_packet(id, std::move(packet), moos_time(now));
     collect_database_output(now);
   }
 }
@@ -171,14 +167,14 @@ void Hub::tick(double now_real_s) {
     const double in_state_s = now_real_s - conn.state_since_real_s;
     if (conn.state == State::kBanner && in_state_s > config_.banner_timeout_s) {
       expired.emplace_back(id, "no protocol banner within " +
-                                   seconds_text(config_.banner_timeout_s) + " s");
+                                   moos::text::format_g(config_.banner_timeout_s) + " s");
     } else if (conn.state == State::kIdent && in_state_s > config_.handshake_timeout_s) {
       expired.emplace_back(id, "no identification packet within " +
-                                   seconds_text(config_.handshake_timeout_s) + " s");
+                                   moos::text::format_g(config_.handshake_timeout_s) + " s");
     } else if (conn.state == State::kActive && config_.client_timeout_s &&
                now_real_s - conn.last_packet_real_s > *config_.client_timeout_s) {
       expired.emplace_back(id, "no packet for more than " +
-                                   seconds_text(*config_.client_timeout_s) +
+                                   moos::text::format_g(*config_.client_timeout_s) +
                                    " s (ClientTimeout)");
     }
   }

@@ -16,7 +16,9 @@
 #include "alog_writer.hpp"
 #include "event_loop.hpp"
 #include "hub.hpp"
+#include "moos/clock.hpp"
 #include "moos/mission.hpp"
+#include "moos/text.hpp"
 #include "options.hpp"
 
 namespace {
@@ -56,12 +58,6 @@ std::string host_name() {
   char name[kHostNameBytes] = {};
   if (::gethostname(name, sizeof name - 1) != 0) return "localhost";
   return name;
-}
-
-std::string warp_text(double warp) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", warp);
-  return text;
 }
 
 bool file_exists(const std::string& path) { return ::access(path.c_str(), F_OK) == 0; }
@@ -134,7 +130,7 @@ int main(int argc, char** argv) {
   config.client_timeout_s = options.client_timeout_s;
   config.max_packet_bytes = options.max_packet_bytes;
 
-  const double start_real_s = unix_time_s();
+  const double start_real_s = moos::system_clock().unix_now_s();
   AlogWriter alog;
   if (options.log_file) {
     std::string error;
@@ -159,7 +155,7 @@ int main(int argc, char** argv) {
     return kExitCannotStart;
   }
   log_line("community \"" + options.community + "\" listening on " + options.bind_address + ":" +
-           std::to_string(loop.bound_port()) + ", time warp " + warp_text(options.time_warp) +
+           std::to_string(loop.bound_port()) + ", time warp " + moos::text::format_g(options.time_warp) +
            (options.mission_file ? ", mission " + *options.mission_file : std::string()));
 
   loop.run(g_wake_pipe[0], g_stop_requested, [&alog] { alog.flush(); });

@@ -5,12 +5,12 @@
 #include <arpa/inet.h>
 
 #include <cmath>
-#include <cstdio>
 #include <limits>
 
 #include "database.hpp"
 #include "hub.hpp"
 #include "moos/codec.hpp"
+#include "moos/limits.hpp"
 #include "moos/message.hpp"
 #include "moos/text.hpp"
 
@@ -20,8 +20,6 @@ namespace {
 
 /// The smallest packet that can hold one message: below this no client could talk.
 constexpr std::size_t kMinPacketLimitBytes = moos::kPacketHeaderSize + moos::Message::kFixedEncodedSize;
-/// Highest TCP port number.
-constexpr int kMaxPort = 65535;
 
 // Switches of the reference MOOSDB (spec 5.11) that moosdb-lite accepts and ignores.
 struct IgnoredSwitch {
@@ -56,15 +54,9 @@ const std::vector<IgnoredSwitch>& ignored_globals() {
 
 std::optional<int> parse_port(std::string_view text) {
   const auto value = moos::text::parse_number(text);
-  if (!value || *value != std::floor(*value) || *value < 0 || *value > kMaxPort)
+  if (!value || *value != std::floor(*value) || *value < 0 || *value > moos::kMaxPort)
     return std::nullopt;
   return static_cast<int>(*value);
-}
-
-std::optional<double> parse_warp(std::string_view text) {
-  const auto value = moos::text::parse_number(text);
-  if (!value || *value <= 0.0 || *value > kMaxTimeWarp) return std::nullopt;
-  return value;
 }
 
 std::optional<double> parse_non_negative(std::string_view text) {
@@ -105,12 +97,6 @@ void set_from(std::optional<T>& field, std::string_view arg, std::string_view va
   field = *parsed;
 }
 
-std::string number_text(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", value);
-  return text;
-}
-
 }  // namespace
 
 const std::vector<OptionDoc>& option_docs() {
@@ -121,10 +107,10 @@ const std::vector<OptionDoc>& option_docs() {
                                "); 0 lets the OS pick a free port"},
       {"--moos_community=NAME",
        std::string("community name (default: Community, else ") + kDefaultCommunity + ")"},
-      {"--moos_time_warp=W", "time warp, 0 < W <= " + number_text(kMaxTimeWarp) +
+      {"--moos_time_warp=W", "time warp, 0 < W <= " + moos::text::format_g(moos::kMaxTimeWarp) +
                                  " (default: MOOSTimeWarp, else 1)"},
       {"--moos_timeout=S", "drop a client silent for S seconds (default: ClientTimeout, else " +
-                               number_text(kDefaultClientTimeout_s) + "; 0 = never)"},
+                               moos::text::format_g(kDefaultClientTimeout_s) + "; 0 = never)"},
       {"--bind=ADDR", std::string("IPv4 address to listen on (default ") + kDefaultBindAddress +
                           "; 0.0.0.0 = every interface)"},
       {"--port-file=FILE", "write the bound port number to FILE once listening"},
@@ -134,9 +120,9 @@ const std::vector<OptionDoc>& option_docs() {
       {"--max-output-bytes=N", "unsent bytes allowed per client before it is dropped (default " +
                                    std::to_string(kDefaultMaxPendingBytes) + ")"},
       {"--banner-timeout=S", "seconds a new connection has to send the protocol banner (default " +
-                                 number_text(kDefaultBannerTimeout_s) + ")"},
+                                 moos::text::format_g(kDefaultBannerTimeout_s) + ")"},
       {"--handshake-timeout=S", "seconds to send the identification after the banner (default " +
-                                    number_text(kDefaultHandshakeTimeout_s) + ")"},
+                                    moos::text::format_g(kDefaultHandshakeTimeout_s) + ")"},
       {"--help, -h", "print this help and exit"},
       {"--version", "print the version and exit"},
       {"--response= -s --single_threaded -d --dns --tcpnodelay --audit_port= --event_log= "
@@ -152,7 +138,7 @@ const std::vector<OptionDoc>& mission_global_docs() {
       {"ServerPort", "TCP port (default " + std::to_string(kDefaultPort) + ")"},
       {"MOOSTimeWarp", "time warp (default 1)"},
       {"ClientTimeout", "seconds of silence before a client is dropped (default " +
-                            number_text(kDefaultClientTimeout_s) + "; 0 = never)"},
+                            moos::text::format_g(kDefaultClientTimeout_s) + "; 0 = never)"},
   };
   return table;
 }
@@ -184,7 +170,7 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
     } else if (name == "--moos_community") {
       if (want_value()) set_from(cli.community, arg, value, text, "empty community name", errors);
     } else if (name == "--moos_time_warp") {
-      if (want_value()) set_from(cli.time_warp, arg, value, parse_warp, "time warp must be a number in (0, 400]", errors);
+      if (want_value()) set_from(cli.time_warp, arg, value, moos::parse_time_warp, "time warp must be a number in (0, 400]", errors);
     } else if (name == "--moos_timeout") {
       if (want_value()) set_from(cli.client_timeout_s, arg, value, parse_non_negative, "timeout must be a number of seconds >= 0", errors);
     } else if (name == "--bind") {
@@ -260,7 +246,7 @@ ServerOptions resolve_options(const CommandLine& cli, const std::string& mission
       else bad("ServerPort", *v, "not a port number (0-65535)");
     }
     if (auto v = mission_global("MOOSTimeWarp")) {
-      if (auto warp = parse_warp(*v)) options.time_warp = *warp;
+      if (auto warp = moos::parse_time_warp(*v)) options.time_warp = *warp;
       else bad("MOOSTimeWarp", *v, "time warp must be a number in (0, 400]");
     }
     if (auto v = mission_global("ClientTimeout")) {

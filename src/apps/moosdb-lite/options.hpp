@@ -25,8 +25,6 @@ namespace moosdb_lite {
 inline constexpr int kDefaultPort = 9000;
 inline constexpr const char* kDefaultBindAddress = "127.0.0.1";
 inline constexpr const char* kDefaultMissionFile = "Mission.moos";
-/// Time warp limits of libMOOS (spec 0.3): 0 < warp <= 400.
-inline constexpr double kMaxTimeWarp = 400.0;
 
 /// One row of the option table: what --help prints.
 struct OptionDoc {

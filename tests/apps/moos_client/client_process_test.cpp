@@ -14,6 +14,7 @@
 namespace moos {
 namespace {
 
+using test_support::local_client_options;
 using test_support::MoosdbServer;
 using test_support::steady_now_s;
 
@@ -22,11 +23,7 @@ constexpr double kDelivery_s = 60.0;  // upper bound for 30,000 messages on a lo
 constexpr int kMessagesPerType = 10000;
 
 std::unique_ptr<TcpClient> connect_client(int port, const std::string& name) {
-  TcpClientOptions o;
-  o.host = "127.0.0.1";
-  o.port = port;
-  o.name = name;
-  auto c = std::make_unique<TcpClient>(o);
+  auto c = std::make_unique<TcpClient>(local_client_options(port, name));
   if (!c->start() || !c->wait_until_connected(kConnect_s)) return nullptr;
   return c;
 }
@@ -213,11 +210,7 @@ TEST(ClientServerPoison, SecondClientWithTheSameNameIsRefusedForGood_1_6) {
   ASSERT_TRUE(server.ok());
   auto first = connect_client(server.port(), "pSame");
   ASSERT_TRUE(first);
-  TcpClientOptions o;
-  o.host = "127.0.0.1";
-  o.port = server.port();
-  o.name = "pSame";
-  TcpClient second(o);
+  TcpClient second(local_client_options(server.port(), "pSame"));
   ASSERT_TRUE(second.start());
   EXPECT_FALSE(second.wait_until_connected(kConnect_s));
   EXPECT_EQ(second.state(), ConnectionState::kPoisoned);

@@ -14,6 +14,7 @@ namespace {
 
 using test_support::alog_entries;
 using test_support::Child;
+using test_support::local_client_options;
 using test_support::MoosdbServer;
 using test_support::run_program;
 using test_support::RunResult;
@@ -27,11 +28,7 @@ RunResult run_cli(const std::vector<std::string>& args) {
 
 /// Waits until moos-cli watch has subscribed (its client name appears in DB_CLIENTS).
 bool wait_for_client(int port, const std::string& name) {
-  TcpClientOptions o;
-  o.host = "127.0.0.1";
-  o.port = port;
-  o.name = "probe_" + name;
-  TcpClient probe(o);
+  TcpClient probe(local_client_options(port, "probe_" + name));
   if (!probe.start() || !probe.wait_until_connected(5.0)) return false;
   probe.register_variable("DB_CLIENTS");
   const double deadline = steady_now_s() + 10.0;
@@ -69,11 +66,7 @@ TEST_F(CliWithServer, WatchPrintsWhatPokePostsAsAlogLines) {
   EXPECT_EQ(poke.out,
             "NUM = 12.5\nTXT_A = \"hello world\"\nTXT_B = \"42\"\nNUM = \"not a number\"\n");
   // The fourth message: a binary value from our own client.
-  TcpClientOptions o;
-  o.host = "127.0.0.1";
-  o.port = server->port();
-  o.name = "binposter";
-  TcpClient bin(o);
+  TcpClient bin(local_client_options(server->port(), "binposter"));
   ASSERT_TRUE(bin.start() && bin.wait_until_connected(5.0));
   ASSERT_TRUE(bin.notify_binary("BIN", std::string("\x00\xff\x10\x7f", 4)));
   ASSERT_TRUE(bin.flush(5.0));
@@ -105,11 +98,7 @@ TEST_F(CliWithServer, WatchWithoutCountEndsNormallyAtTheTimeout) {
 }
 
 TEST_F(CliWithServer, DuplicateNameIsRefusedWithExitFour) {
-  TcpClientOptions o;
-  o.host = "127.0.0.1";
-  o.port = server->port();
-  o.name = "taken";
-  TcpClient holder(o);
+  TcpClient holder(local_client_options(server->port(), "taken"));
   ASSERT_TRUE(holder.start() && holder.wait_until_connected(5.0));
   const RunResult poke = run_cli({"poke", port_arg, "--name=taken", "X=1"});
   EXPECT_EQ(poke.exit_code, 4);

@@ -8,11 +8,11 @@
 #include <unistd.h>
 
 #include <cerrno>
-#include <chrono>
 
 #include <gtest/gtest.h>
 
 #include "child_process.hpp"
+#include "moos/clock.hpp"
 #include "test_messages.hpp"
 
 namespace moosdb_lite::test {
@@ -25,10 +25,7 @@ constexpr std::size_t kReadChunkBytes = 64 * 1024;
 
 }  // namespace
 
-double moos_now() {
-  using namespace std::chrono;
-  return duration<double>(system_clock::now().time_since_epoch()).count();
-}
+double moos_now() { return moos::system_clock().unix_now_s(); }
 
 RawClient::~RawClient() { close(); }
 
