@@ -43,6 +43,17 @@ std::vector<hazard::ConfigEntry> to_config_entries(const std::vector<moos::Confi
   return out;
 }
 
+hazard::Engine make_sensor_engine(const std::vector<moos::ConfigLine>& block_lines,
+                                  const std::string& mission_directory,
+                                  const hazard::MissionOrigin& origin,
+                                  std::optional<std::uint64_t> command_line_seed,
+                                  const std::function<std::uint64_t()>& os_seed) {
+  hazard::EngineSetup setup = hazard::load_configuration(
+      to_config_entries(block_lines), mission_relative_reader(mission_directory), origin);
+  const hazard::SeedChoice seed = hazard::resolve_seed(command_line_seed, setup.config, os_seed);
+  return hazard::Engine(std::move(setup), seed);
+}
+
 std::string information_switches_help(const std::string& app_name) {
   return "  --alias=<ProcessName>\n"
          "      Launch " + app_name + " with the given process\n"

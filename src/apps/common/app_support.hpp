@@ -1,13 +1,16 @@
 #pragma once
 // Edge helpers shared by the programs (uFldHazardSensor, hazard_replay, gen_hazards, the
-// mission apps): the I/O and operating-system pieces that the pure libraries leave to callers.
+// mission apps): the I/O and operating-system pieces that the pure libraries leave to callers,
+// and the one wiring of the sensor engine that uFldHazardSensor and hazard_replay share.
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "hazard/config.hpp"
+#include "hazard/engine.hpp"
 #include "moos/mission.hpp"
 
 namespace app_support {
@@ -25,6 +28,18 @@ hazard::HazardFileReader mission_relative_reader(std::string mission_directory);
 
 /// A ProcessConfig block's lines as engine configuration entries (key, value, file, line).
 std::vector<hazard::ConfigEntry> to_config_entries(const std::vector<moos::ConfigLine>& lines);
+
+/// The sensor engine of a uFldHazardSensor block, built the one way uFldHazardSensor and
+/// hazard_replay both use: the block's lines go to hazard::load_configuration in file order
+/// with their file and line, hazard files are read relative to `mission_directory`, `origin`
+/// (the mission's LatOrigin/LongOrigin) places LAT/LON-only input, and the seed is resolved
+/// (`command_line_seed`, else random_seed, else seed_random: `os_seed()`, else seed 1; rulings
+/// "Seeds"). Never fails: configuration problems become the engine's config warnings (D26).
+hazard::Engine make_sensor_engine(const std::vector<moos::ConfigLine>& block_lines,
+                                  const std::string& mission_directory,
+                                  const hazard::MissionOrigin& origin,
+                                  std::optional<std::uint64_t> command_line_seed,
+                                  const std::function<std::uint64_t()>& os_seed);
 
 /// --help lines of the switches every app takes (the MOOS-IvP wording): --alias and the four
 /// information switches.

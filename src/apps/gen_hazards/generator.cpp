@@ -190,9 +190,7 @@ AspectWindowTenths resolve_aspect_window(AspectWindowTenths drawn) {
 std::optional<GenerationError> generate(const GeneratorConfig& config,
                                         const std::function<void(const GeneratedObject&)>& sink,
                                         const GeneratorLimits& limits) {
-  std::uint64_t total = 0;
-  for (const auto& set : config.sets) total += set.count;
-  if (total == 0) return std::nullopt;
+  if (total_objects(config) == 0) return std::nullopt;
   if (config.regions.empty()) {
     return GenerationError{"'" + config.sets.front().argument + "': objects need a --polygon"};
   }

@@ -68,12 +68,6 @@ void apply_polygon(const ArgContext& c) {
       Region{std::get<mission::ConvexPolygon>(std::move(parsed)), std::string(c.arg)});
 }
 
-std::uint64_t total_objects(const CommandLine& cli) {
-  std::uint64_t total = 0;
-  for (const auto& set : cli.config.sets) total += set.count;
-  return total;
-}
-
 void apply_objects(const ArgContext& c) {
   const auto comma = c.value.find(',');
   if (comma == std::string_view::npos) {
@@ -97,7 +91,7 @@ void apply_objects(const ArgContext& c) {
            " is neither 'hazard' nor 'benign' (the only types uFldHazardSensor accepts)");
     return;
   }
-  if (*count > kMaxTotalObjects - total_objects(c.cli)) {
+  if (*count > kMaxTotalObjects - total_objects(c.cli.config)) {
     c.fail("more than " + std::to_string(kMaxTotalObjects) + " objects in total");
     return;
   }
@@ -151,7 +145,7 @@ struct OptionSpec {
 };
 
 const std::vector<OptionSpec>& option_table() {
-  const std::string window = interval(0.0, kMaxAspectWindowDeg);
+  static const std::string window = interval(0.0, kMaxAspectWindowDeg);
   static const std::vector<OptionSpec> table = {
       {"--polygon",
        {"--polygon=POLY",
@@ -253,6 +247,12 @@ std::string shell_word(const std::string& arg) {
 }
 
 }  // namespace
+
+std::uint64_t total_objects(const GeneratorConfig& config) {
+  std::uint64_t total = 0;
+  for (const auto& set : config.sets) total += set.count;
+  return total;
+}
 
 CommandLine parse_command_line(const std::vector<std::string>& args) {
   CommandLine cli;

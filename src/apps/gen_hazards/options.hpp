@@ -83,6 +83,9 @@ struct GeneratorConfig {
   std::uint64_t seed = 0;
 };
 
+/// The objects of all sets together.
+std::uint64_t total_objects(const GeneratorConfig& config);
+
 struct CommandLine {
   bool help = false;
   bool version = false;

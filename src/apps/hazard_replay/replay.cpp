@@ -4,7 +4,6 @@
 #include <filesystem>
 #include <fstream>
 #include <ostream>
-#include <sstream>
 
 #include "app_support.hpp"
 #include "hazard/config.hpp"
@@ -124,9 +123,7 @@ int run(const Options& options, std::ostream& out, std::ostream& err) {
     return 1;
   }
   for (const moos::MissionError& e : mission_errors) {
-    if (e.block.empty() || hazard::iequals(e.block, options.app_name)) {
-      err << e.to_string() << "\n";
-    }
+    if (e.concerns(options.app_name)) err << e.to_string() << "\n";
   }
   const moos::ProcessBlock* block = mission->block(options.app_name);
   if (!block) {
@@ -142,14 +139,11 @@ int run(const Options& options, std::ostream& out, std::ostream& err) {
 
   // Hazard files are named relative to the mission file.
   // LatOrigin/LongOrigin place LAT/LON-only node reports and lat/lon hazard lines (geodesy).
-  hazard::EngineSetup setup =
-      hazard::load_configuration(app_support::to_config_entries(block->lines),
-                                 app_support::mission_relative_reader(mission->directory()),
-                                 hazard::mission_origin(*mission));
-  const double tick_hz = setup.config.app_tick_hz;
-  const hazard::SeedChoice seed =
-      hazard::resolve_seed(options.seed, setup.config, app_support::operating_system_seed);
-  hazard::Engine engine(std::move(setup), seed);
+  hazard::Engine engine = app_support::make_sensor_engine(
+      block->lines, mission->directory(), hazard::mission_origin(*mission), options.seed,
+      app_support::operating_system_seed);
+  const double tick_hz = engine.config().app_tick_hz;
+  const hazard::SeedChoice& seed = engine.seed();
   err << "hazard_replay: seed " << seed.seed << " (" << hazard::seed_source_name(seed.source)
       << "), AppTick " << hazard::fmt(tick_hz) << " Hz\n";
 

@@ -7,11 +7,11 @@
 // that time is at or before the end (the last input, or --until); mail stamped at or before an
 // iteration's time is delivered before that iteration. Mail after the last iteration but not
 // after the end is still delivered (its postings are written), with no further iteration.
-// Input lines are replayed in time order (stable for equal times). The mission file's
-// LatOrigin/LongOrigin globals go to the engine (geodesy: LAT/LON-only node reports, lat/lon
-// hazard lines). Postings are written with
-// the time of the mail or iteration that produced them; warnings, events and the seed go to the
-// error stream. Nothing depends on the wall clock except an operating-system seed when neither
+// Input lines are replayed in time order (stable for equal times). The engine is built from the
+// block as uFldHazardSensor builds it (app_support::make_sensor_engine); the mission file's
+// LatOrigin/LongOrigin globals go to it (geodesy: LAT/LON-only node reports, lat/lon hazard
+// lines). Postings are written with the time of the mail or iteration that produced them;
+// warnings, events and the seed go to the error stream. Nothing depends on the wall clock except an operating-system seed when neither
 // --seed, random_seed nor seed_random = false fixes one.
 
 #include <cstdint>

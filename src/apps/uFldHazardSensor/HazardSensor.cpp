@@ -13,7 +13,6 @@ namespace ufld_hazard_sensor {
 
 namespace {
 
-
 /// The engine reads text: strings and binary values as they are, doubles in their shortest
 /// exact form (a NODE_REPORT posted as a double then fails to parse, with a warning).
 std::string mail_text(const moos::Message& m) {
@@ -37,12 +36,9 @@ HazardSensor::HazardSensor(HazardSensorOptions options)
 }
 
 bool HazardSensor::on_start_up() {
-  hazard::EngineSetup setup = hazard::load_configuration(
-      app_support::to_config_entries(config_lines()),
-      app_support::mission_relative_reader(settings().mission_directory),
-      hazard::mission_origin(settings()));
-  const hazard::SeedChoice seed = hazard::resolve_seed(std::nullopt, setup.config, options_.os_seed);
-  engine_.emplace(std::move(setup), seed);
+  engine_.emplace(app_support::make_sensor_engine(config_lines(), settings().mission_directory,
+                                                  hazard::mission_origin(settings()),
+                                                  std::nullopt, options_.os_seed));
   for (const hazard::InterfaceVariable& v : hazard::Engine::subscriptions()) {
     register_variable(std::string(v.name));
   }

@@ -3,7 +3,8 @@
 // application base and the pure engine (hazard::Engine). It holds no model logic.
 //
 // Contract:
-// - on_start_up: the app's block lines (framework keys already taken by libmoos) go to
+// - on_start_up: the engine is built by app_support::make_sensor_engine, the wiring
+//   hazard_replay shares: the app's block lines (framework keys already taken by libmoos) go to
 //   hazard::load_configuration in file order with their file and line; hazard files are read
 //   relative to the mission file's folder; the mission's LatOrigin/LongOrigin globals go with
 //   them (geodesy); folder and globals come with the settings (moos::AppSettings, from the one

@@ -7,7 +7,6 @@
 #include "hazard/config.hpp"
 #include "hazard/engine.hpp"
 #include "hazard/version.hpp"
-#include "moos/appcast.hpp"
 #include "moos/text.hpp"
 
 namespace ufld_hazard_sensor {

@@ -21,6 +21,8 @@ namespace ufld_hazard_sensor {
 namespace {
 
 using test_support::write_file;
+using testing::contains;
+using testing::is_framework_posting;
 using testing::kFirstBlockLine;
 using testing::SensorOnBus;
 
@@ -35,15 +37,6 @@ const char* kField =
 const char* kOptions =
     "  sensor_config = width=20, exp=2, pclass=1.0\n"
     "  sensor_config = width=10, exp=4, pclass=0.90\n";
-
-bool is_framework_posting(const std::string& var) {
-  return var == "APPCAST" || moos::text::ends_with(var, "_STATUS") ||
-         moos::text::ends_with(var, "_ITER_GAP") || moos::text::ends_with(var, "_ITER_LEN");
-}
-
-bool contains(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
 
 /// The config warnings that contain `part`.
 int warnings_with(const moos::AppCast& cast, const std::string& part) {
@@ -417,12 +410,9 @@ TEST_F(SensorOnBus, PostsExactlyWhatTheEngineDecidesWhenDrivenTheSameWay) {
   start(block);
 
   // The reference: the same block through the engine alone, driven as hazard_replay drives it.
-  std::vector<hazard::ConfigEntry> entries;
-  for (const auto& l : mission->block("uFldHazardSensor")->lines)
-    entries.push_back({l.key, l.value, l.file, l.line});
-  hazard::EngineSetup setup = hazard::load_configuration(entries, [](const std::string&) {
-    return std::optional<std::string>();
-  });
+  hazard::EngineSetup setup = hazard::load_configuration(
+      app_support::to_config_entries(mission->block("uFldHazardSensor")->lines),
+      [](const std::string&) { return std::optional<std::string>(); });
   const hazard::SeedChoice seed = hazard::resolve_seed(std::nullopt, setup.config, nullptr);
   hazard::Engine reference(std::move(setup), seed);
   std::vector<hazard::Posting> expected = reference.start(kT0).postings;

@@ -34,14 +34,11 @@ namespace ufld_hazard_sensor {
 namespace {
 
 using test_support::write_file;
+using testing::contains;
 using testing::SensorOnBus;
 
 /// Help lines fit a classic terminal.
 constexpr std::size_t kMaxHelpColumns = 80;
-
-bool contains(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
 
 std::vector<std::string> lines_of(const std::string& text) {
   std::vector<std::string> out;

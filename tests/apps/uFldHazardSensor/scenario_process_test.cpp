@@ -19,6 +19,7 @@ namespace {
 using test_support::Alog;
 using test_support::Child;
 using test_support::write_file;
+using testing::is_framework_posting;
 using testing::kPatience_s;
 using testing::SensorProcess;
 
@@ -51,11 +52,6 @@ std::string without_time(const std::string& circle) {
   if (at == std::string::npos) return circle;
   const auto end = circle.find(',', at + 1);
   return circle.substr(0, at) + (end == std::string::npos ? "" : circle.substr(end));
-}
-
-bool is_framework_posting(const std::string& var) {
-  return var == "APPCAST" || moos::text::ends_with(var, "_STATUS") ||
-         moos::text::ends_with(var, "_ITER_GAP") || moos::text::ends_with(var, "_ITER_LEN");
 }
 
 /// What the app posted, per variable, in order (framework bookkeeping aside).

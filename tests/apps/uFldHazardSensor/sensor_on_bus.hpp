@@ -17,6 +17,7 @@
 #include "moos/clock.hpp"
 #include "moos/command_line.hpp"
 #include "moos/mission.hpp"
+#include "moos/text.hpp"
 #include "scratch_files.hpp"
 
 namespace ufld_hazard_sensor::testing {
@@ -31,6 +32,18 @@ inline std::string mission_text(const std::string& block, const std::string& app
          "{\n" + block + "}\n";
 }
 inline constexpr int kFirstBlockLine = 6;
+
+/// True if `part` occurs in `text`.
+inline bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+/// The MOOS application framework's own postings (APPCAST, <APPNAME>_STATUS, _ITER_GAP,
+/// _ITER_LEN): what the app posts besides what the engine decides.
+inline bool is_framework_posting(const std::string& var) {
+  return var == "APPCAST" || moos::text::ends_with(var, "_STATUS") ||
+         moos::text::ends_with(var, "_ITER_GAP") || moos::text::ends_with(var, "_ITER_LEN");
+}
 
 /// The app started on a bus (community "shoreside", warp 1) at ManualClock's default epoch.
 class SensorOnBus : public ::testing::Test {
