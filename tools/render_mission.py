@@ -432,6 +432,10 @@ HANDLERS = {
 CONFIG_ACK_PREFIX = "UHZ_CONFIG_ACK"   # UHZ_CONFIG_ACK and UHZ_CONFIG_ACK_<V> carry the same
 
 
+def warn_malformed(path, n):
+    warn("%s:%d: malformed line skipped (expected TIME VARIABLE SOURCE VALUE)" % (path, n))
+
+
 def read_alog(path, run):
     """Stream the log once: TIME VARIABLE SOURCE VALUE per line, `%%` lines are the header."""
     try:
@@ -451,8 +455,7 @@ def read_alog(path, run):
                         run.log_name = name[0]
                 continue
             if len(parts) < 3:
-                warn("%s:%d: malformed line skipped (expected TIME VARIABLE SOURCE VALUE)"
-                     % (path, n))
+                warn_malformed(path, n)
                 continue
             var = parts[1]
             handler = HANDLERS.get(var)
@@ -462,8 +465,7 @@ def read_alog(path, run):
                 handler = on_config_ack
             t = number(parts[0])
             if t is None:
-                warn("%s:%d: malformed line skipped (expected TIME VARIABLE SOURCE VALUE)"
-                     % (path, n))
+                warn_malformed(path, n)
                 continue
             value = parts[3].rstrip() if len(parts) > 3 else ""
             place = (path, n)   # formatted only for a warning
@@ -1190,6 +1192,12 @@ def heading_row(text):
                               '%s</text>' % (PANEL_X, y + 16, escape(text))])
 
 
+def setting_text(ack):
+    """A vehicle's acknowledged sensor setting (UHZ_CONFIG_ACK fields), "?" for a missing one."""
+    return "swath %s m, pd %s, pfa %s, pclass %s" % (
+        ack.get("width", "?"), ack.get("pd", "?"), ack.get("pfa", "?"), ack.get("pclass", "?"))
+
+
 def score_rows_full(run, colour, vehicles_shown):
     """Four lines per vehicle: score, sensor setting, found/missed/false alarms, penalty split."""
     rows = []
@@ -1210,9 +1218,7 @@ def score_rows_full(run, colour, vehicles_shown):
         rows.append(Row(20, score_line))
         ack = run.acks.get(vname)
         if ack:
-            rows.append(text_row("sensor: swath %s m, pd %s, pfa %s, pclass %s" % (
-                ack.get("width", "?"), ack.get("pd", "?"), ack.get("pfa", "?"),
-                ack.get("pclass", "?")), 12, "#444", 16, indent=10))
+            rows.append(text_row("sensor: " + setting_text(ack), 12, "#444", 16, indent=10))
         rows.append(text_row("found %s, missed %s, false alarms %s" % (
             e.get("correct_hazards", "?"), e.get("missed_hazards", "?"),
             e.get("false_alarms", "?")), 12, "#444", 16, indent=10))
@@ -1245,10 +1251,7 @@ def setting_rows(run, vehicles):
     for vname in vehicles:
         ack = run.acks.get(vname)
         if ack:
-            key = "swath %s m, pd %s, pfa %s, pclass %s" % (
-                ack.get("width", "?"), ack.get("pd", "?"), ack.get("pfa", "?"),
-                ack.get("pclass", "?"))
-            settings.setdefault(key, []).append(vname)
+            settings.setdefault(setting_text(ack), []).append(vname)
     if len(settings) > MAX_SETTING_ROWS:
         return [text_row("sensor: %d different settings" % len(settings), 12, "#444", 16)]
     rows = []

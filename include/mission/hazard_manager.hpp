@@ -207,7 +207,7 @@ class HazardManager {
   void index(Id id);
   std::vector<Id> near(glm::dvec2 center_m, double radius_m) const;
   void add_track_sample(const TrackSample& sample);
-  void update_passes(const TrackSample& sample, Outputs& out);
+  void update_passes(const TrackSample& sample);
   void resolve_passes(double now_s, Outputs& out);
   void resolve(Record& r, Outputs& out);
   /// (pd, pfa) of each clear pass over r's position that ended before `before_s`.

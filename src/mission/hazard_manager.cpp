@@ -47,15 +47,18 @@ void for_each_cell_around(glm::dvec2 center_m, double radius_m, F&& f) {
 }
 
 // The sensor's footprint at one pose, and its core (W - margin to each side), built once per
-// pose: every object near the pose is tested against both.
+// pose: every object near the pose is tested against both. Length and margin are the
+// configuration's (sensor_swath_length, pass_margin).
 class Footprint {
  public:
-  Footprint(glm::dvec2 position_m, double heading_deg, double half_width_m, double length_m,
-            double margin_m)
-      : center_(position_m), reach_m_(std::hypot(half_width_m, 0.5 * length_m)) {
+  Footprint(glm::dvec2 position_m, double heading_deg, double half_width_m,
+            const ManagerConfig& config)
+      : center_(position_m),
+        reach_m_(std::hypot(half_width_m, 0.5 * config.sensor_swath_length_m)) {
+    const double length_m = config.sensor_swath_length_m;
     if (half_width_m > 0.0) full_.emplace(position_m, heading_deg, half_width_m, length_m);
-    if (half_width_m - margin_m > 0.0)
-      core_.emplace(position_m, heading_deg, half_width_m - margin_m, length_m);
+    if (half_width_m - config.pass_margin_m > 0.0)
+      core_.emplace(position_m, heading_deg, half_width_m - config.pass_margin_m, length_m);
   }
   bool in_full(glm::dvec2 p) const { return full_ && near(p) && full_->contains(p); }
   bool in_core(glm::dvec2 p) const { return core_ && near(p) && core_->contains(p); }
@@ -314,7 +317,7 @@ Outputs HazardManager::on_pose(glm::dvec2 position_m, double heading_deg, double
                     track_.back().half_width_m != sample.half_width_m;
   if (keep) add_track_sample(sample);
   last_pose_ = sample;
-  update_passes(sample, out);
+  update_passes(sample);
   return out;
 }
 
@@ -328,10 +331,9 @@ void HazardManager::add_track_sample(const TrackSample& sample) {
   track_max_half_width_m_ = std::max(track_max_half_width_m_, sample.half_width_m);
 }
 
-void HazardManager::update_passes(const TrackSample& s, Outputs& /*out*/) {
+void HazardManager::update_passes(const TrackSample& s) {
   if (!s.sensor_on) return;  // the sensor freezes its inside/outside state while off (spec 8.5)
-  const Footprint foot(s.position_m, s.heading_deg, s.half_width_m, config_.sensor_swath_length_m,
-                       config_.pass_margin_m);
+  const Footprint foot(s.position_m, s.heading_deg, s.half_width_m, config_);
   // Exits (and core reached) for the objects inside.
   for (std::size_t i = 0; i < inside_.size();) {
     Record& r = records_[inside_[i]];
@@ -436,8 +438,7 @@ std::vector<std::pair<double, double>> HazardManager::hindsight_misses(const Rec
     previous = i;
     const TrackSample& s = track_[i];
     if (!s.sensor_on) continue;  // frozen
-    const Footprint foot(s.position_m, s.heading_deg, s.half_width_m, config_.sensor_swath_length_m,
-                         config_.pass_margin_m);
+    const Footprint foot(s.position_m, s.heading_deg, s.half_width_m, config_);
     if (!foot.in_full(r.position_m)) {
       leave();
       continue;
@@ -485,7 +486,7 @@ Outputs HazardManager::on_detection(const hazard::DetectionReport& report, doubl
     r.pass->detected = true;
   } else if (is_new && last_pose_ && last_pose_->sensor_on &&
              Footprint(last_pose_->position_m, last_pose_->heading_deg, last_pose_->half_width_m,
-                       config_.sensor_swath_length_m, config_.pass_margin_m)
+                       config_)
                  .in_full(r.position_m)) {
     // First sight while inside: this is the pass in progress.
     r.inside = true;

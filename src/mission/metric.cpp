@@ -3,6 +3,8 @@
 #include "mission/metric.hpp"
 
 #include <algorithm>
+#include <string_view>
+#include <unordered_set>
 
 #include "hazard/messages/view_polygon.hpp"
 #include "hazard/text.hpp"
@@ -188,8 +190,13 @@ HazardsetEval HazardMetric::evaluate(const HazardsetReport& report, double now_s
   HazardsetEval e;
   e.vname = report.source;
   e.report_name = report.name;
+  // The report's labels, collected once: HazardsetReport::has_label per truth object would cost
+  // truth x report comparisons (50 million for a 10,000-object field and a 5,000-object report).
+  std::unordered_set<std::string_view> reported_labels;
+  for (const ReportedObject& r : report.objects)
+    if (r.label) reported_labels.insert(*r.label);
   for (const hazard::HazardObject& truth : truth_.objects()) {
-    ObjectEval o{truth.label, hazard::type_name(truth.type), report.has_label(truth.label),
+    ObjectEval o{truth.label, hazard::type_name(truth.type), reported_labels.count(truth.label) > 0,
                  std::nullopt};
     if (o.reported && truth.is_hazard()) {
       ++e.correct_hazards;

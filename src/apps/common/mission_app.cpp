@@ -165,6 +165,24 @@ moos::AppTraits mission_traits(const std::string& app_name, double app_tick_hz) 
   return t;
 }
 
+std::string bool_param(const std::string& key, const std::string& value, bool& field) {
+  const auto b = hazard::parse_bool(value);
+  if (!b) return "parameter " + key + "='" + value + "' is not true or false";
+  field = *b;
+  return {};
+}
+
+std::string name_param(const std::string& key, const std::string& value, std::string& field,
+                       const std::string& what) {
+  if (!is_name(value)) return "parameter " + key + "='" + value + "' is not " + what;
+  field = value;
+  return {};
+}
+
+std::string column(const std::string& text, std::size_t width) {
+  return text + std::string(text.size() < width ? width - text.size() : 1, ' ');
+}
+
 bool is_name(std::string_view text) {
   return !text.empty() && text.find_first_of(" \t,=#") == std::string_view::npos;
 }
@@ -187,15 +205,37 @@ void MissionApp::publish(const mission::Outputs& out) {
   for (const std::string& e : out.events) report_event(e);
 }
 
-bool MissionApp::flush_unsent() {
+void MissionApp::flush_unsent() {
   std::size_t sent = 0;
   while (sent < unsent_.size() && send(unsent_[sent])) ++sent;
   unsent_.erase(unsent_.begin(), unsent_.begin() + static_cast<std::ptrdiff_t>(sent));
-  return unsent_.empty();
+}
+
+void MissionApp::iterate() {
+  flush_unsent();
+  on_iterate();
 }
 
 void MissionApp::warn_at(const moos::ConfigLine& line, const std::string& text) {
   report_config_warning(at_line(line, text));
+}
+
+void MissionApp::apply_config_lines(
+    const std::function<std::string(const moos::ConfigLine&)>& apply) {
+  for (const moos::ConfigLine& line : config_lines()) {
+    const std::string problem = apply(line);
+    if (!problem.empty()) warn_at(line, problem);
+  }
+}
+
+std::string MissionApp::vehicle_name(const std::string& configured) {
+  std::string name = configured.empty() ? community() : configured;
+  if (!is_name(name)) {
+    report_config_warning("no vehicle name: set vname (the community name '" + name +
+                          "' is not one)");
+    name = traits().default_name;
+  }
+  return name;
 }
 
 }  // namespace mission_app

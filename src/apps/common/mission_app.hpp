@@ -14,9 +14,9 @@
 //   folder and globals (LatOrigin, LongOrigin) in its settings (moos::AppSettings).
 // - MissionApp::publish posts every posting of an Outputs value in order (doubles as MOOS doubles)
 //   and hands events and warnings to the AppCast. A posting that cannot be sent because the
-//   client is not connected yet is kept and sent, in order, by the next flush_unsent() (each app
-//   calls it first thing in iterate(), which libmoos runs only while connected): start-up
-//   postings are never lost to a slow first connection.
+//   client is not connected yet is kept and sent, in order, at the start of the next iteration
+//   (MissionApp's iterate(), which libmoos runs only while connected, sends them before the app's
+//   on_iterate()): start-up postings are never lost to a slow first connection.
 
 #include <functional>
 #include <iosfwd>
@@ -118,20 +118,42 @@ std::string mail_text(const moos::Message& message);
 /// "file:line: text" for a configuration line (the place of a configuration warning).
 std::string at_line(const moos::ConfigLine& line, const std::string& text);
 
+/// A true/false parameter into `field`: "" when set, else "parameter <key>='<value>' is not true
+/// or false" (the field is unchanged).
+std::string bool_param(const std::string& key, const std::string& value, bool& field);
+/// A name parameter (is_name) into `field`: "" when set, else "parameter <key>='<value>' is not
+/// <what>" (the field is unchanged).
+std::string name_param(const std::string& key, const std::string& value, std::string& field,
+                       const std::string& what);
+
+/// `text` as a report-table column: padded with blanks to `width`, and at least one blank after.
+std::string column(const std::string& text, std::size_t width);
+
 class MissionApp : public moos::MoosApp {
  public:
   using moos::MoosApp::MoosApp;
 
  protected:
+  /// Sends the postings kept while the client was not connected, then runs on_iterate().
+  void iterate() final;
+  /// The app's own iteration (the hook apps override instead of iterate()).
+  virtual void on_iterate() {}
+
   /// Posts `out` in order and reports its events and warnings (see the contract).
   void publish(const mission::Outputs& out);
-  /// Sends the postings kept while the client was not connected; false if some are still kept.
-  bool flush_unsent();
   /// A configuration warning naming the line.
   void warn_at(const moos::ConfigLine& line, const std::string& text);
+  /// Hands every line of the block to `apply`, in file order; a non-empty answer is a
+  /// configuration warning naming the line (warn_at).
+  void apply_config_lines(const std::function<std::string(const moos::ConfigLine&)>& apply);
+  /// The vehicle name: `configured`, else the community name; when that is not a name (is_name),
+  /// a configuration warning and the app's default process name.
+  std::string vehicle_name(const std::string& configured);
 
  private:
   bool send(const mission::Posting& posting);
+  /// Sends the postings kept while the client was not connected, in order, until one fails.
+  void flush_unsent();
   std::vector<mission::Posting> unsent_;
 };
 

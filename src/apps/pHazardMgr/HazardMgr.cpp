@@ -49,17 +49,10 @@ long HazardMgr::outstanding_answers() const {
 std::optional<std::string> HazardMgr::apply_app_param(const moos::ConfigLine& line) {
   const std::string key = hazard::to_lower(line.key);
   const std::string& value = line.value;
-  auto name_value = [&](std::string& field) -> std::string {
-    if (!mission_app::is_name(value)) return "parameter " + key + "='" + value + "' is not a name";
-    field = value;
-    return {};
+  auto name_value = [&](std::string& field) {
+    return mission_app::name_param(key, value, field, "a name");
   };
-  auto bool_value = [&](bool& field) -> std::string {
-    const auto b = hazard::parse_bool(value);
-    if (!b) return "parameter " + key + "='" + value + "' is not true or false";
-    field = *b;
-    return {};
-  };
+  auto bool_value = [&](bool& field) { return mission_app::bool_param(key, value, field); };
   auto number_value = [&](double& field, double low, bool low_inclusive) -> std::string {
     const auto v = hazard::parse_number(value);
     if (!v || *v < low || (!low_inclusive && *v == low))
@@ -88,17 +81,11 @@ std::optional<std::string> HazardMgr::apply_app_param(const moos::ConfigLine& li
 }
 
 bool HazardMgr::on_start_up() {
-  for (const moos::ConfigLine& line : config_lines()) {
+  apply_config_lines([&](const moos::ConfigLine& line) {
     std::optional<std::string> problem = apply_app_param(line);
-    if (!problem) problem = mission::apply_manager_param(config_, line.key, line.value);
-    if (!problem->empty()) warn_at(line, *problem);
-  }
-  config_.vname = app_.vname.empty() ? community() : app_.vname;
-  if (!mission_app::is_name(config_.vname)) {
-    report_config_warning("no vehicle name: set vname (the community name '" + config_.vname +
-                          "' is not one)");
-    config_.vname = kAppName;
-  }
+    return problem ? *problem : mission::apply_manager_param(config_, line.key, line.value);
+  });
+  config_.vname = vehicle_name(app_.vname);
   if (const std::string problem = mission::validate(config_); !problem.empty()) {
     report_config_warning(problem + "; the manager's defaults are used");
     const std::string vname = config_.vname;
@@ -228,8 +215,7 @@ void HazardMgr::post_report(double now_s) {
   ++reports_posted_;
 }
 
-void HazardMgr::iterate() {
-  flush_unsent();
+void HazardMgr::on_iterate() {
   const double now_s = std::max(cycle_time(), last_mail_time_s_);
   publish(manager_->tick(now_s));
   if (report_ready(now_s)) post_report(now_s);
@@ -242,13 +228,12 @@ std::string HazardMgr::object_table() const {
   std::size_t shown = 0;
   for (const mission::ObjectBelief& b : beliefs) {
     if (shown++ == kMaxReportRows) break;
-    auto col = [](const std::string& s, std::size_t w) {
-      return s + std::string(s.size() < w ? w - s.size() : 1, ' ');
-    };
-    out += col(b.label, 11) + col(hazard::fmt(b.position_m.x, 1), 9) +
-           col(hazard::fmt(b.position_m.y, 1), 9) + col(hazard::fix(b.p_hazard, 3), 8) +
-           col(std::to_string(b.own.detections), 4) + col(std::to_string(b.own.missed_passes), 5) +
-           col(std::to_string(b.own.said_hazard) + "/" + std::to_string(b.own.said_benign), 6) +
+    using mission_app::column;
+    out += column(b.label, 11) + column(hazard::fmt(b.position_m.x, 1), 9) +
+           column(hazard::fmt(b.position_m.y, 1), 9) + column(hazard::fix(b.p_hazard, 3), 8) +
+           column(std::to_string(b.own.detections), 4) +
+           column(std::to_string(b.own.missed_passes), 5) +
+           column(std::to_string(b.own.said_hazard) + "/" + std::to_string(b.own.said_benign), 6) +
            (b.reported ? "yes" : "no") + (b.handed_over ? " (handed over)" : "") + "\n";
   }
   if (beliefs.size() > kMaxReportRows)

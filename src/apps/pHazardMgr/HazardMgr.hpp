@@ -88,10 +88,11 @@ class HazardMgr final : public mission_app::MissionApp {
  protected:
   bool on_start_up() override;
   void on_new_mail(const std::vector<moos::Message>& mail) override;
-  void iterate() override;
+  void on_iterate() override;
   std::string build_report() override;
 
  private:
+  /// Applies one of the app's own parameters; nullopt if the key is not one of them.
   std::optional<std::string> apply_app_param(const moos::ConfigLine& line);
   void handle(const moos::Message& m, double time_s);
   void on_node_report(const std::string& text, double time_s);

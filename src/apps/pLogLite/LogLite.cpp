@@ -42,15 +42,10 @@ void LogLite::close() {
   out_ = nullptr;
 }
 
-std::optional<std::string> LogLite::apply(const moos::ConfigLine& line) {
+std::string LogLite::apply(const moos::ConfigLine& line) {
   const std::string key = hazard::to_lower(line.key);
   const std::string& value = line.value;
-  auto boolean = [&](bool& field) -> std::string {
-    const auto b = hazard::parse_bool(value);
-    if (!b) return "parameter " + key + "='" + value + "' is not true or false";
-    field = *b;
-    return {};
-  };
+  auto boolean = [&](bool& field) { return mission_app::bool_param(key, value, field); };
   if (key == "path") {
     if (value.empty()) return "parameter path is empty";
     path_ = value;
@@ -81,10 +76,7 @@ std::optional<std::string> LogLite::apply(const moos::ConfigLine& line) {
 }
 
 bool LogLite::on_start_up() {
-  for (const moos::ConfigLine& line : config_lines()) {
-    const std::optional<std::string> problem = apply(line);
-    if (problem && !problem->empty()) warn_at(line, *problem);
-  }
+  apply_config_lines([&](const moos::ConfigLine& line) { return apply(line); });
   if (!wildcard_logging_ && requests_.empty())
     report_config_warning("nothing to log: set wildcard_logging = true or add log = VAR lines");
 
@@ -125,7 +117,7 @@ void LogLite::on_new_mail(const std::vector<moos::Message>& mail) {
   }
 }
 
-void LogLite::iterate() {
+void LogLite::on_iterate() {
   if (out_ && std::fflush(out_) != 0 && !write_failed_) {
     write_failed_ = true;
     report_run_warning("cannot write to " + file_path_);

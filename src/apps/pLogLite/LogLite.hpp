@@ -58,11 +58,12 @@ class LogLite final : public mission_app::MissionApp {
  protected:
   bool on_start_up() override;
   void on_new_mail(const std::vector<moos::Message>& mail) override;
-  void iterate() override;
+  void on_iterate() override;
   std::string build_report() override;
 
  private:
-  std::optional<std::string> apply(const moos::ConfigLine& line);
+  /// Applies one line of the block: "" when accepted, else the configuration warning.
+  std::string apply(const moos::ConfigLine& line);
   bool omitted(const std::string& variable) const;
   void close();
 

@@ -46,8 +46,7 @@ void HazardMetricApp::on_new_mail(const std::vector<moos::Message>& mail) {
   }
 }
 
-void HazardMetricApp::iterate() {
-  flush_unsent();
+void HazardMetricApp::on_iterate() {
   publish(metric_.iterate(static_cast<long>(iteration()), cycle_time()));
 }
 
@@ -70,14 +69,12 @@ std::string HazardMetricApp::build_report() {
          "\n\n";
   out += "Source      Reports  Score   Correct  Missed  False alarms\n";
   out += "----------  -------  ------  -------  ------  ------------\n";
-  auto col = [](const std::string& s, std::size_t w) {
-    return s + std::string(s.size() < w ? w - s.size() : 1, ' ');
-  };
+  using mission_app::column;
   for (const auto& [source, record] : metric_.sources()) {
     const mission::HazardsetEval& e = record.eval;
-    out += col(source, 12) + col(std::to_string(record.reports_received), 9) +
-           col(hazard::fmt(e.norm_score, 2), 8) + col(std::to_string(e.correct_hazards), 9) +
-           col(std::to_string(e.missed_hazards), 8) + std::to_string(e.false_alarms) + "\n";
+    out += column(source, 12) + column(std::to_string(record.reports_received), 9) +
+           column(hazard::fmt(e.norm_score, 2), 8) + column(std::to_string(e.correct_hazards), 9) +
+           column(std::to_string(e.missed_hazards), 8) + std::to_string(e.false_alarms) + "\n";
   }
   if (metric_.sources().empty()) out += "(no reports yet)\n";
   return out;

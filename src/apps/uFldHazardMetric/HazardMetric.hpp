@@ -39,7 +39,7 @@ class HazardMetricApp final : public mission_app::MissionApp {
  protected:
   bool on_start_up() override;
   void on_new_mail(const std::vector<moos::Message>& mail) override;
-  void iterate() override;
+  void on_iterate() override;
   std::string build_report() override;
 
  private:

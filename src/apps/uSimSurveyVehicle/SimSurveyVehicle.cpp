@@ -22,6 +22,11 @@ const std::vector<mission::ParamInfo> kAppParameters = {
     {"done_flag", "", "VAR=value posted when the route is done (repeatable)"},
 };
 
+/// DEPLOY_<V>: the deploy flag of this vehicle alone (upper-cased like SURVEY_ROUTE_<V>).
+std::string deploy_variable_for(std::string_view vname) {
+  return "DEPLOY_" + hazard::to_upper(vname);
+}
+
 }  // namespace
 
 const std::vector<mission::ParamInfo>& app_parameters() { return kAppParameters; }
@@ -43,41 +48,26 @@ SimSurveyVehicle::SimSurveyVehicle() : mission_app::MissionApp(sim_traits()) {}
 std::optional<std::string> SimSurveyVehicle::apply_app_param(const moos::ConfigLine& line) {
   const std::string key = hazard::to_lower(line.key);
   const std::string& value = line.value;
-  if (key == "vname") {
-    if (!mission_app::is_name(value)) return "parameter vname='" + value + "' is not a vehicle name";
-    vname_ = value;
-  } else if (key == "node_report_var") {
-    if (!mission_app::is_name(value)) return "parameter node_report_var='" + value + "' is not a variable";
-    node_report_var_ = value;
-  } else if (key == "vehicle_type") {
-    if (!mission_app::is_name(value)) return "parameter vehicle_type='" + value + "' is not a type name";
-    vehicle_type_ = value;
-  } else if (key == "deploy") {
-    const auto b = hazard::parse_bool(value);
-    if (!b) return "parameter deploy='" + value + "' is not true or false";
-    deployed_ = *b;
-  } else if (key == "done_flag") {
+  if (key == "vname") return mission_app::name_param(key, value, vname_, "a vehicle name");
+  if (key == "node_report_var")
+    return mission_app::name_param(key, value, node_report_var_, "a variable");
+  if (key == "vehicle_type") return mission_app::name_param(key, value, vehicle_type_, "a type name");
+  if (key == "deploy") return mission_app::bool_param(key, value, deployed_);
+  if (key == "done_flag") {
     auto flag = parse_flag(value);
     if (!flag) return "parameter done_flag='" + value + "' is not VAR=value";
     done_flags_.push_back(std::move(*flag));
-  } else {
-    return std::nullopt;
+    return std::string();
   }
-  return std::string();
+  return std::nullopt;
 }
 
 bool SimSurveyVehicle::on_start_up() {
-  for (const moos::ConfigLine& line : config_lines()) {
+  apply_config_lines([&](const moos::ConfigLine& line) {
     std::optional<std::string> problem = apply_app_param(line);
-    if (!problem) problem = mission::apply_survey_vehicle_param(config_, line.key, line.value);
-    if (!problem->empty()) warn_at(line, *problem);
-  }
-  if (vname_.empty()) vname_ = community();
-  if (!mission_app::is_name(vname_)) {
-    report_config_warning("no vehicle name: set vname (the community name '" + vname_ +
-                          "' is not one)");
-    vname_ = kAppName;
-  }
+    return problem ? *problem : mission::apply_survey_vehicle_param(config_, line.key, line.value);
+  });
+  vname_ = vehicle_name(vname_);
   if (const std::string problem = mission::validate(config_.vehicle); !problem.empty()) {
     report_config_warning(problem + "; the vehicle's defaults are used");
     config_.vehicle = mission::VehicleParams{};
@@ -105,7 +95,7 @@ bool SimSurveyVehicle::on_start_up() {
 
   register_variable("DEPLOY");
   register_variable("DEPLOY_ALL");
-  register_variable("DEPLOY_" + hazard::to_upper(vname_));
+  register_variable(deploy_variable_for(vname_));
   register_variable(survey_route_variable_for(vname_));
   start_route_if_ready();
   return true;
@@ -113,11 +103,11 @@ bool SimSurveyVehicle::on_start_up() {
 
 void SimSurveyVehicle::on_new_mail(const std::vector<moos::Message>& mail) {
   const std::string route_var = survey_route_variable_for(vname_);
+  const std::string deploy_var = deploy_variable_for(vname_);
   for (const moos::Message& m : mail) {
     if (m.key == route_var) {
       on_route(m);
-    } else if (m.key == "DEPLOY" || m.key == "DEPLOY_ALL" ||
-               m.key == "DEPLOY_" + hazard::to_upper(vname_)) {
+    } else if (m.key == "DEPLOY" || m.key == "DEPLOY_ALL" || m.key == deploy_var) {
       on_deploy(m);
     }
   }
@@ -155,8 +145,7 @@ void SimSurveyVehicle::start_route_if_ready() {
   done_posted_ = false;
 }
 
-void SimSurveyVehicle::iterate() {
-  flush_unsent();
+void SimSurveyVehicle::on_iterate() {
   const double now_s = cycle_time();
   last_pose_ = vehicle_->advance_to(now_s);
   if (!last_report_s_ ||

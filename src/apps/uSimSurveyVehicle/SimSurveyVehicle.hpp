@@ -68,7 +68,7 @@ class SimSurveyVehicle final : public mission_app::MissionApp {
  protected:
   bool on_start_up() override;
   void on_new_mail(const std::vector<moos::Message>& mail) override;
-  void iterate() override;
+  void on_iterate() override;
   std::string build_report() override;
 
  private:

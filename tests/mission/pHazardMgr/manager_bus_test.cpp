@@ -18,6 +18,7 @@ namespace {
 
 using mission_test::any_contains;
 using mission_test::Bus;
+using mission_test::example_block;
 using mission_test::mission_text;
 using mission_test::run_warning_texts;
 
@@ -329,12 +330,11 @@ TEST_F(MgrOnBus, VehicleNameDefaultsToTheCommunity_Spec13) {
 }
 
 TEST(MgrInfo, ExampleBlockLoadsWithoutWarnings_Practice5) {
-  const std::string text = example_text();
-  const auto open = text.find("{\n"), close = text.rfind("}");
-  ASSERT_NE(open, std::string::npos);
+  const auto block = example_block(example_text());
+  ASSERT_TRUE(block);
   HazardMgr app;
   Bus bus;
-  ASSERT_TRUE(bus.start(app, kAppName, mission_text(kAppName, text.substr(open + 2, close - open - 2))));
+  ASSERT_TRUE(bus.start(app, kAppName, mission_text(kAppName, *block)));
   EXPECT_TRUE(app.appcast().config_warnings().empty())
       << ::testing::PrintToString(app.appcast().config_warnings());
   EXPECT_EQ(app.app_config().handover_to, "betty");

@@ -15,6 +15,7 @@ namespace {
 
 using mission_test::any_contains;
 using mission_test::Bus;
+using mission_test::example_block;
 using mission_test::mission_text;
 using test_support::read_file;
 
@@ -137,16 +138,14 @@ TEST(LoggerParse, LogRequests) {
 }
 
 TEST(LoggerInfo, ExampleBlockLoadsWithoutWarnings_Practice5) {
-  const std::string text = example_text();
-  const auto open = text.find("{\n"), close = text.rfind("}");
-  ASSERT_NE(open, std::string::npos);
+  auto block = example_block(example_text());
+  ASSERT_TRUE(block);
   Bus bus;
-  std::string block = text.substr(open + 2, close - open - 2);
   // The example logs to the current folder; here, to the scratch folder.
-  block.replace(block.find("path"), std::string("path").size(), "// path");
+  block->replace(block->find("path"), std::string("path").size(), "// path");
   LogLite app;
   ASSERT_TRUE(bus.start(app, kAppName,
-                        mission_text(kAppName, "  path = " + bus.dir.path().string() + "\n" + block)));
+                        mission_text(kAppName, "  path = " + bus.dir.path().string() + "\n" + *block)));
   EXPECT_TRUE(app.appcast().config_warnings().empty())
       << ::testing::PrintToString(app.appcast().config_warnings());
 }

@@ -70,15 +70,9 @@ notanumber NODE_REPORT          uSimSurvey       NAME=archie,X=1,Y=1,SPD=1,HDG=0
 """
 
 
-def run_tool(workdir, alog_text, hazards_text=HAZARDS, extra=()):
-    alog = os.path.join(workdir, "run.alog")
-    hazards = os.path.join(workdir, "hazards.txt")
+def run_on_files(workdir, alog, hazards, extra=()):
+    """Runs the tool on the files; (result, the SVG's text or "" when none was written, its path)."""
     svg = os.path.join(workdir, "out.svg")
-    with open(alog, "w") as f:
-        f.write(alog_text)
-    if hazards_text is not None:
-        with open(hazards, "w") as f:
-            f.write(hazards_text)
     command = [sys.executable, TOOL, "--alog", alog, "--hazards", hazards, "--svg", svg, *extra]
     result = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, timeout=100)
     svg_text = ""
@@ -86,6 +80,18 @@ def run_tool(workdir, alog_text, hazards_text=HAZARDS, extra=()):
         with open(svg) as f:
             svg_text = f.read()
     return result, svg_text, svg
+
+
+def run_tool(workdir, alog_text, hazards_text=HAZARDS, extra=()):
+    """Writes the log (and the hazard file, unless None) into workdir and runs the tool on them."""
+    alog = os.path.join(workdir, "run.alog")
+    hazards = os.path.join(workdir, "hazards.txt")
+    with open(alog, "w") as f:
+        f.write(alog_text)
+    if hazards_text is not None:
+        with open(hazards, "w") as f:
+            f.write(hazards_text)
+    return run_on_files(workdir, alog, hazards, extra)
 
 
 def count(svg, pattern):
@@ -241,14 +247,6 @@ def estimated_width_em(text):
 SVG_BYTES_PER_OBJECT_MAX = 100      # the field view: measured about 46 per object
 FIELD_SVG_ELEMENTS_MAX = 250        # the field view draws paths per style, not per object
 LARGE_OBJECTS, LARGE_VEHICLES = 5000, 6
-
-
-def run_on_files(workdir, alog, hazards, extra=()):
-    svg = os.path.join(workdir, "out.svg")
-    command = [sys.executable, TOOL, "--alog", alog, "--hazards", hazards, "--svg", svg, *extra]
-    result = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, timeout=100)
-    with open(svg) as f:
-        return result, f.read(), svg
 
 
 def synthetic_run(workdir, n_objects, n_vehicles, extra=("--no-png",), name_prefix="v"):

@@ -82,6 +82,14 @@ class Bus {
   std::optional<moos::MissionFile> mission;
 };
 
+/// The body of an --example text's `ProcessConfig = app { ... }` block (between "{\n" and the
+/// last "}"); nullopt when the text has no block.
+inline std::optional<std::string> example_block(const std::string& example_text) {
+  const auto open = example_text.find("{\n"), close = example_text.rfind("}");
+  if (open == std::string::npos) return std::nullopt;
+  return example_text.substr(open + 2, close - open - 2);
+}
+
 /// True if some text in `texts` contains `part`.
 inline bool any_contains(const std::vector<std::string>& texts, const std::string& part) {
   for (const auto& t : texts)

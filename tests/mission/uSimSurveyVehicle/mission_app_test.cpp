@@ -68,7 +68,6 @@ class StartupPoster : public MissionApp {
     publish(out);
     return true;
   }
-  void iterate() override { flush_unsent(); }
 };
 
 TEST(MissionAppPublish, PostingsMadeBeforeTheConnectionAreSentInOrderOnceConnected) {

@@ -18,6 +18,7 @@ namespace {
 
 using mission_test::any_contains;
 using mission_test::Bus;
+using mission_test::example_block;
 using mission_test::mission_text;
 
 // The origin of mission_text's default globals (LatOrigin, LongOrigin).
@@ -273,13 +274,11 @@ TEST_F(SimOnBus, UnplannableRegionIsAConfigWarningAndNoRoute) {
 
 TEST(SimInfo, ExampleBlockLoadsWithoutWarnings_Practice5) {
   // --example is built from the parameter tables: as a block it must be accepted as it is.
-  const std::string text = example_text();
-  const auto open = text.find("{\n"), close = text.rfind("}");
-  ASSERT_NE(open, std::string::npos);
+  const auto block = example_block(example_text());
+  ASSERT_TRUE(block);
   SimSurveyVehicle app;
   Bus bus;
-  ASSERT_TRUE(bus.start(app, kAppName,
-                        mission_text(kAppName, text.substr(open + 2, close - open - 2))));
+  ASSERT_TRUE(bus.start(app, kAppName, mission_text(kAppName, *block)));
   EXPECT_TRUE(app.appcast().config_warnings().empty())
       << ::testing::PrintToString(app.appcast().config_warnings());
   EXPECT_EQ(app.vname(), "archie");
