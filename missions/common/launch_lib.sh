@@ -288,7 +288,7 @@ ml_stop_all() {
 ml_on_signal() {
   local code="$1" what="$2"
   trap '' INT TERM HUP
-  [ -n "${ML_PROGRESS_SHOWN:-}" ] && printf '\n' >&2
+  ml_break_progress_line
   ml_say "$what: stopping every process"
   ml_stop_all
   ml_say "stopped; the run folder is $ML_RUN_DIR"
@@ -380,7 +380,7 @@ ml_check_processes() {
     if ! ml_alive "${ML_PIDS[i]}"; then
       ml_record_exit "$i"
       local status="${ML_LAST_STATUS}"
-      [ -n "${ML_PROGRESS_SHOWN:-}" ] && printf '\n' >&2
+      ml_break_progress_line
       ml_say "${ML_NAMES[i]} (pid ${ML_PIDS[i]}) exited with status $status; see $ML_RUN_DIR/logs/${ML_NAMES[i]}.err"
       ML_FAILED_PROCESS="${ML_NAMES[i]}"
       return 1
@@ -390,18 +390,33 @@ ml_check_processes() {
 
 ml_count() { grep -c " $1 " "$ML_WATCH_FILE" 2>/dev/null || true; }
 
+# True when the last HAZARDSET_REPORT of vehicle $1 names no object (the grader evaluates only
+# reports that do, see the header).
+ml_last_report_is_empty() {
+  grep " HAZARDSET_REPORT .*source=$1\(#\|\$\)" "$ML_WATCH_FILE" 2>/dev/null | tail -n 1 |
+    grep -q -v "label="
+}
+
+# When each final vehicle's empty report was first seen (real seconds), for the grace period.
+declare -A ML_EMPTY_SINCE=()
+
 # True once every final vehicle's report was evaluated (or reported empty, see the header).
 ml_mission_done() {
   local v upper
   for v in "${ML_FINAL_VEHICLES[@]}"; do
     upper="$(printf '%s' "$v" | tr '[:lower:]' '[:upper:]')"
     grep -q " HAZARDSET_EVAL_$upper " "$ML_WATCH_FILE" 2>/dev/null && continue
-    if grep -q " HAZARDSET_REPORT .*source=$v\(#\|\$\)" "$ML_WATCH_FILE" 2>/dev/null; then
-      : "${ML_EMPTY_SINCE:=$(date +%s)}"
-      [ $(( $(date +%s) - ML_EMPTY_SINCE )) -ge "$ML_EMPTY_REPORT_GRACE_S" ] && continue
+    if ml_last_report_is_empty "$v"; then
+      : "${ML_EMPTY_SINCE[$v]:=$(date +%s)}"
+      [ $(( $(date +%s) - ML_EMPTY_SINCE[$v] )) -ge "$ML_EMPTY_REPORT_GRACE_S" ] && continue
     fi
     return 1
   done
+}
+
+# Ends the progress display's line (if one is shown) so that a message starts on its own line.
+ml_break_progress_line() {
+  if [ -n "${ML_PROGRESS_SHOWN:-}" ]; then printf '\n' >&2; fi
 }
 
 ml_progress_line() {
@@ -420,7 +435,7 @@ ml_run_until_done() {
     ml_check_processes || return 1
     now="$(date +%s)"
     if [ $((now - start)) -ge "${ML_TIMEOUT_S%.*}" ]; then
-      [ -n "${ML_PROGRESS_SHOWN:-}" ] && printf '\n' >&2
+      ml_break_progress_line
       ml_say "time limit of $ML_TIMEOUT_S s reached before the mission ended"
       return 1
     fi
