@@ -4,7 +4,7 @@
 // Contract: samples (heading, receipt time) are kept only while they can matter: those within
 // kTurnWindow_s of the newest sample (at most kMaxSamples). A sample is added only if its time is
 // strictly after the newest (several reports in one mail batch count once). The turn rate is the
-// sum of absolute heading steps |norm180(h_i - h_(i-1))| over the samples inside the window,
+// sum of absolute heading steps |base::norm180(h_i - h_(i-1))| over the samples inside the window,
 // divided by the time from the oldest sample inside the window to the newest; 0 when that time
 // is 0 (one sample). It is anchored at the newest sample, not at "now" (frozen if reports stop),
 // and it wraps correctly across 0/360 (norm180 of each step: 359.9 -> 0.1 is a 0.2 deg step).

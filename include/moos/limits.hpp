@@ -4,14 +4,14 @@
 //
 // Contract:
 // - A time warp is valid in (0, kMaxTimeWarp] (wire spec 0.3).
-// - parse_time_warp accepts what text::parse_number accepts and a valid warp; nullopt otherwise.
+// - parse_time_warp accepts what base::parse_number accepts and a valid warp; nullopt otherwise.
 // - kMaxPort is the highest TCP port number; clients connect to ports 1..kMaxPort.
 // - CommsTick is a whole number of Hz in 1..kMaxCommsTickHz (wire spec 4.2).
 
 #include <optional>
 #include <string_view>
 
-#include "moos/text.hpp"
+#include "base/text.hpp"
 
 namespace moos {
 
@@ -25,9 +25,9 @@ inline constexpr int kMaxCommsTickHz = 200;
 /// True for 0 < warp <= kMaxTimeWarp (false for NaN).
 constexpr bool is_valid_time_warp(double warp) { return warp > 0 && warp <= kMaxTimeWarp; }
 
-/// A number (text::parse_number) that is a valid time warp; nullopt otherwise.
+/// A number (base::parse_number) that is a valid time warp; nullopt otherwise.
 inline std::optional<double> parse_time_warp(std::string_view text) {
-  const std::optional<double> warp = text::parse_number(text);
+  const std::optional<double> warp = base::parse_number(text);
   if (!warp || !is_valid_time_warp(*warp)) return std::nullopt;
   return warp;
 }

@@ -5,7 +5,7 @@
 #include <map>
 
 #include "hazard/style.hpp"
-#include "hazard/text.hpp"
+#include "base/text.hpp"
 
 namespace hazard {
 
@@ -141,7 +141,7 @@ const std::vector<ParameterSpec>& table() {
   return t;
 }
 
-std::string number_text(double v) { return std::isinf(v) ? (v > 0 ? "inf" : "-inf") : fmt(v); }
+std::string number_text(double v) { return std::isinf(v) ? (v > 0 ? "inf" : "-inf") : base::fmt(v); }
 
 bool in_range(double v, const ValueRange& r) {
   if (r.min && (v < *r.min || (!r.min_inclusive && v == *r.min))) return false;
@@ -164,12 +164,12 @@ struct Applied {
 };
 
 Applied apply_number(double& field, const ParameterSpec& spec, std::string_view value) {
-  const auto v = parse_number(value);
+  const auto v = base::parse_number(value);
   if (!v) return {"not a finite number", {}};
   if (!in_range(*v, spec.range)) return {"outside " + interval_text(spec.range), {}};
   if (spec.range.raise_below && *v < *spec.range.raise_below) {
     field = *spec.range.raise_below;
-    return {{}, "raised to " + fmt(*spec.range.raise_below)};
+    return {{}, "raised to " + base::fmt(*spec.range.raise_below)};
   }
   field = *v;
   return {};
@@ -186,7 +186,7 @@ Applied apply_value(EngineConfig& config, const ParameterSpec& spec, std::string
       return {};
     case ParamKind::kGate: {
       auto& field = config.*std::get<std::optional<double> EngineConfig::*>(spec.target);
-      if (iequals(value, "off")) {
+      if (base::iequals(value, "off")) {
         field.reset();
         return {};
       }
@@ -198,11 +198,11 @@ Applied apply_value(EngineConfig& config, const ParameterSpec& spec, std::string
     }
     case ParamKind::kBool: {
       bool& field = config.*std::get<bool EngineConfig::*>(spec.target);
-      if (iequals(value, "toggle")) {
+      if (base::iequals(value, "toggle")) {
         field = !field;
         return {};
       }
-      const auto b = parse_bool(value);
+      const auto b = base::parse_bool(value);
       if (!b) return {"not a boolean word (true/false, yes/no, on/off, toggle)", {}};
       field = *b;
       return {};
@@ -212,14 +212,14 @@ Applied apply_value(EngineConfig& config, const ParameterSpec& spec, std::string
       config.*std::get<std::string EngineConfig::*>(spec.target) = std::string(value);
       return {};
     case ParamKind::kShape: {
-      const std::string shape = to_lower(value);
+      const std::string shape = base::to_lower(value);
       if (!is_known_shape(shape)) return {"not a known shape", {}};
       config.*std::get<std::string EngineConfig::*>(spec.target) = shape;
       return {};
     }
     case ParamKind::kShowDetections: {
       auto& field = config.*std::get<DetectionCircles EngineConfig::*>(spec.target);
-      if (iequals(value, "nolimit") || iequals(value, "unlimited")) {
+      if (base::iequals(value, "nolimit") || base::iequals(value, "unlimited")) {
         field = DetectionCircles{true, std::nullopt};
         return {};
       }
@@ -233,7 +233,7 @@ Applied apply_value(EngineConfig& config, const ParameterSpec& spec, std::string
       return a;
     }
     case ParamKind::kSeed: {
-      const auto seed = parse_unsigned(value);
+      const auto seed = base::parse_unsigned(value);
       if (!seed) return {"not a whole number in [0, 2^64)", {}};
       config.*std::get<std::optional<std::uint64_t> EngineConfig::*>(spec.target) = *seed;
       return {};
@@ -264,7 +264,7 @@ Applied apply_value(EngineConfig& config, const ParameterSpec& spec, std::string
 std::string place(const ConfigEntry& e) { return e.file + ":" + std::to_string(e.line) + ": "; }
 
 std::string parameter_value(const ConfigEntry& e) {
-  return "parameter '" + e.key + "' value '" + excerpt(e.value) + "'";
+  return "parameter '" + e.key + "' value '" + base::excerpt(e.value) + "'";
 }
 
 // The value the block gives `geodesy` (its last valid line, D36), read before the other lines
@@ -285,11 +285,11 @@ std::optional<double> origin_value(const char* name, const std::optional<double>
                                    bool (*valid)(double), const char* range,
                                    std::string& problem) {
   if (!text && !value) return std::nullopt;
-  const std::string written = text ? *text : fmt(*value);
+  const std::string written = text ? *text : base::fmt(*value);
   if (!value) {
-    problem = std::string(name) + " value '" + excerpt(written) + "' is not a number";
+    problem = std::string(name) + " value '" + base::excerpt(written) + "' is not a number";
   } else if (!valid(*value)) {
-    problem = std::string(name) + " value '" + excerpt(written) + "' is outside " + range;
+    problem = std::string(name) + " value '" + base::excerpt(written) + "' is outside " + range;
   } else {
     return value;
   }
@@ -307,11 +307,11 @@ class Loader {
   void load(const ConfigEntry& e) {
     const ParameterSpec* spec = find_parameter(e.key);
     if (!spec) {
-      warn(place(e) + "unknown parameter '" + e.key + "' (value '" + excerpt(e.value) +
+      warn(place(e) + "unknown parameter '" + e.key + "' (value '" + base::excerpt(e.value) +
            "') ignored");
       return;
     }
-    if (trim(e.value).empty()) {
+    if (base::trim(e.value).empty()) {
       warn(place(e) + "parameter '" + e.key + "' has no value; ignored");
       return;
     }
@@ -374,7 +374,7 @@ class Loader {
 
   void load_hazard_file(const ConfigEntry& e) {
     HazardFileStatus status;
-    status.path = std::string(trim(e.value));
+    status.path = std::string(base::trim(e.value));
     const std::optional<std::string> text = read_(status.path);
     if (!text) {
       warn(place(e) + "cannot read hazard file '" + status.path + "'");
@@ -399,14 +399,14 @@ class Loader {
   }
 
   void load_scalar(const ParameterSpec& spec, const ConfigEntry& e) {
-    const std::string canonical = to_lower(spec.name == "moos_*" ? e.key : spec.name);
+    const std::string canonical = base::to_lower(spec.name == "moos_*" ? e.key : spec.name);
     const auto [it, first] = seen_.emplace(canonical, place(e));
     if (!first) {
       warn(place(e) + "parameter '" + e.key + "' repeated (also at " +
            it->second.substr(0, it->second.size() - 2) + "); the last value is used");
       it->second = place(e);
     }
-    const Applied a = apply_value(setup_.config, spec, trim(e.value));
+    const Applied a = apply_value(setup_.config, spec, base::trim(e.value));
     if (!a.error.empty()) {
       warn(place(e) + parameter_value(e) + ": " + a.error + "; ignored");
     } else if (!a.note.empty()) {
@@ -440,14 +440,14 @@ EngineConfig::EngineConfig() {
 const std::vector<ParameterSpec>& parameter_table() { return table(); }
 
 const ParameterSpec* find_parameter(std::string_view key) {
-  key = trim(key);
+  key = base::trim(key);
   for (const ParameterSpec& spec : table()) {
-    if (iequals(spec.name, key)) return &spec;
-    for (std::string_view alias : split_trimmed(spec.aliases, ',')) {
-      if (!alias.empty() && iequals(alias, key)) return &spec;
+    if (base::iequals(spec.name, key)) return &spec;
+    for (std::string_view alias : base::split_trimmed(spec.aliases, ',')) {
+      if (!alias.empty() && base::iequals(alias, key)) return &spec;
     }
   }
-  if (key.size() > 5 && iequals(key.substr(0, 5), "moos_")) {
+  if (key.size() > 5 && base::iequals(key.substr(0, 5), "moos_")) {
     for (const ParameterSpec& spec : table()) {
       if (spec.name == "moos_*") return &spec;
     }

@@ -14,7 +14,7 @@
 #include "hazard/messages/view_polygon.hpp"
 #include "hazard/messages/view_seglist.hpp"
 #include "hazard/sensor_model.hpp"
-#include "hazard/text.hpp"
+#include "base/text.hpp"
 #include "hazard/time_rules.hpp"
 
 namespace hazard {
@@ -153,7 +153,7 @@ VehicleId Engine::vehicle_id(std::string_view name) {
   const auto id = static_cast<VehicleId>(vehicles_.size());
   VehicleState v;
   v.name = std::string(name);
-  v.variable_suffix = "_" + to_upper(name);
+  v.variable_suffix = "_" + base::to_upper(name);
   v.name_hash = hash_name(name);
   if (effects_.turn_blackout) v.heading_history.emplace();
   vehicles_.push_back(std::move(v));
@@ -183,12 +183,12 @@ Outputs Engine::on_mail(std::string_view variable, std::string_view value, doubl
     out.run_warnings.push_back(std::string(variable) + ": value of " +
                                std::to_string(value.size()) + " bytes exceeds " +
                                std::to_string(kMaxMailValueBytes) + "; ignored: '" +
-                               excerpt(value) + "'");
+                               base::excerpt(value) + "'");
     return out;
   }
   auto malformed = [&](const std::string& error) {
     out.run_warnings.push_back(std::string(variable) + ": " + error + "; ignored: '" +
-                               excerpt(value) + "'");
+                               base::excerpt(value) + "'");
   };
   // Each message: its module's parser, then its handler; a parse failure is one warning.
   auto route = [&](auto parse, auto handle) {
@@ -451,8 +451,8 @@ void Engine::handle_classify_request(const ClassifyRequest& r, double now_s, Out
   v.queue.push(answer, r.priority.value_or(kDefaultClassifyPriority), top);
   if (top) v.last_top_s = now_s;
   out.events.push_back("Classify request queued for " + v.name + ": label " + o.label +
-                       ", pass " + std::to_string(credit.pass) + ", pc " + fix(pc_aspect, 5) +
-                       ", die " + fix(die, 4));
+                       ", pass " + std::to_string(credit.pass) + ", pc " + base::fix(pc_aspect, 5) +
+                       ", die " + base::fix(die, 4));
 }
 
 void Engine::clear_queue(std::string_view vname, Outputs& out) {
@@ -570,11 +570,11 @@ void Engine::post_swath(const VehicleState& v, const Swath& swath, bool on, Outp
   p.points.assign(corners.begin(), corners.end());
   p.label = "sensor_swath_" + v.name;
   if (config_.show_pd && config_.show_pfa) {
-    p.msg = fix(s.pd, 2) + "/" + fix(s.pfa, 2);
+    p.msg = base::fix(s.pd, 2) + "/" + base::fix(s.pfa, 2);
   } else if (config_.show_pd) {
-    p.msg = fix(s.pd, 2);
+    p.msg = base::fix(s.pd, 2);
   } else if (config_.show_pfa) {
-    p.msg = "pfa=" + fix(s.pfa, 2);
+    p.msg = "pfa=" + base::fix(s.pfa, 2);
   } else {
     p.msg = "_null_";  // the original's "no label" word
   }

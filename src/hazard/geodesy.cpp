@@ -11,7 +11,7 @@
 #include <GeographicLib/TransverseMercator.hpp>
 #include <GeographicLib/UTMUPS.hpp>
 
-#include "hazard/text.hpp"
+#include "base/text.hpp"
 
 namespace hazard {
 
@@ -45,7 +45,7 @@ const char* geodesy_mode_name(GeodesyMode mode) {
 
 std::optional<GeodesyMode> parse_geodesy_mode(std::string_view word) {
   for (const Word& w : kWords) {
-    if (iequals(trim(word), w.name)) return w.mode;
+    if (base::iequals(base::trim(word), w.name)) return w.mode;
   }
   return std::nullopt;
 }

@@ -4,7 +4,7 @@
 
 #include "hazard/dice.hpp"
 #include "hazard/messages/hazard_line.hpp"
-#include "hazard/text.hpp"
+#include "base/text.hpp"
 
 namespace hazard {
 
@@ -71,11 +71,11 @@ HazardFileCounts load_hazard_file_text(std::string_view text, std::string_view f
         text.substr(start, end == std::string_view::npos ? std::string_view::npos : end - start);
     start = end == std::string_view::npos ? text.size() + 1 : end + 1;
     ++line_number;
-    const std::string_view line = trim(without_comment(raw));
+    const std::string_view line = base::trim(without_comment(raw));
     if (line.empty()) continue;
     const auto eq = line.find('=');
-    const std::string_view key = trim(line.substr(0, eq));
-    if (eq != std::string_view::npos && iequals(key, "hazard")) {
+    const std::string_view key = base::trim(line.substr(0, eq));
+    if (eq != std::string_view::npos && base::iequals(key, "hazard")) {
       const std::size_t before = field.size();
       if (load_hazard_spec(line.substr(eq + 1), file, line_number, field, warnings, placement)) {
         (field.object(static_cast<ObjectId>(before)).is_hazard() ? counts.hazards
@@ -83,10 +83,10 @@ HazardFileCounts load_hazard_file_text(std::string_view text, std::string_view f
       } else {
         ++counts.rejected_lines;
       }
-    } else if (eq != std::string_view::npos && (iequals(key, "region") || iequals(key, "source"))) {
+    } else if (eq != std::string_view::npos && (base::iequals(key, "region") || base::iequals(key, "source"))) {
       continue;  // gen_hazards' region and the grader's source: not the sensor's business
     } else {
-      warnings.push_back(place(file, line_number) + "unrecognised line '" + excerpt(line) +
+      warnings.push_back(place(file, line_number) + "unrecognised line '" + base::excerpt(line) +
                          "' ignored (expected 'hazard = ...', 'region = ...' or 'source = ...')");
     }
   }

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "hazard/text.hpp"
+#include "base/text.hpp"
 #include "hazard/time_rules.hpp"
 
 namespace hazard {
@@ -22,7 +22,7 @@ double HeadingHistory::turn_rate_dps() const {
   if (samples_.size() < 2) return 0.0;
   double sum_deg = 0.0;
   for (std::size_t i = 1; i < samples_.size(); ++i) {
-    sum_deg += std::fabs(norm180(samples_[i].heading_deg - samples_[i - 1].heading_deg));
+    sum_deg += std::fabs(base::norm180(samples_[i].heading_deg - samples_[i - 1].heading_deg));
   }
   const double span_s = samples_.back().time_s - samples_.front().time_s;
   return span_s > 0.0 ? sum_deg / span_s : 0.0;

@@ -9,7 +9,7 @@
 #include "hazard/messages/config_request.hpp"
 #include "hazard/messages/node_report.hpp"
 #include "hazard/messages/sensor_request.hpp"
-#include "hazard/text.hpp"
+#include "base/text.hpp"
 
 namespace hazard {
 
@@ -33,7 +33,7 @@ double drive(const std::string& name, const std::vector<Waypoint>& path, double 
   for (std::size_t i = 0; i + 1 < path.size(); ++i) {
     const double dx = path[i + 1].x - path[i].x, dy = path[i + 1].y - path[i].y;
     const double length = std::hypot(dx, dy);
-    const double heading = norm360(std::atan2(dx, dy) * 180.0 / 3.14159265358979323846);
+    const double heading = base::norm360(std::atan2(dx, dy) * 180.0 / 3.14159265358979323846);
     const int steps = static_cast<int>(std::ceil(length / (kSpeed_mps * dt)));
     for (int k = 0; k < steps; ++k) {
       const double f = static_cast<double>(k) / steps;
@@ -71,7 +71,7 @@ Scenario reference_survey(double node_report_hz) {
   add("sensor_config", "width=50, exp=2, pclass=0.60");
   add("sensor_config", "width=10, exp=6, pclass=0.93");
   add("swath_length", "10");
-  add("min_classify_interval", fmt(kClassifyInterval_s));
+  add("min_classify_interval", base::fmt(kClassifyInterval_s));
   add("random_seed", "2024");
   add("show_pfa", "true");
   add("show_detections", "60");
@@ -79,10 +79,10 @@ Scenario reference_survey(double node_report_hz) {
   for (int i = 0; i < 20; ++i) {
     for (int j = 0; j < 10; ++j) {
       const int n = i * 10 + j;
-      std::string line = "x=" + fmt(5 + 10 * i) + ",y=" + fmt(5 + 10 * j) + ",label=r" +
+      std::string line = "x=" + base::fmt(5 + 10 * i) + ",y=" + base::fmt(5 + 10 * j) + ",label=r" +
                          std::to_string(n) + ",type=" + (n % 3 == 0 ? "hazard" : "benign");
       if (n % 4 == 1) line += ",hr=0.5";
-      if (n % 5 == 2) line += ",aspect=" + fmt((n * 37) % 180) + ",aspect_min=10,aspect_max=40";
+      if (n % 5 == 2) line += ",aspect=" + base::fmt((n * 37) % 180) + ",aspect_min=10,aspect_max=40";
       add("hazard", line);
       labels.push_back("r" + std::to_string(n));
     }
@@ -143,7 +143,7 @@ std::string grid_field_text(int objects, double spacing_m) {
     const double jy = (static_cast<double>((h >> 20) % 1000) / 1000.0 - 0.5) * spacing_m / 1.5;
     const double x = (n % side) * spacing_m - half_m + jx;
     const double y = static_cast<double>(n / side) * spacing_m - half_m + jy;
-    out += "hazard = x=" + fmt(x, 2) + ",y=" + fmt(y, 2) + ",label=g" + std::to_string(n) +
+    out += "hazard = x=" + base::fmt(x, 2) + ",y=" + base::fmt(y, 2) + ",label=g" + std::to_string(n) +
            ",type=" + (n % 3 == 0 ? "hazard" : "benign") + "\n";
   }
   return out;

@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "hazard/engine.hpp"
-#include "hazard/text.hpp"
+#include "base/text.hpp"
 
 namespace hazard {
 
@@ -29,12 +29,12 @@ std::string hazard_file_label(const std::vector<HazardFileStatus>& files) {
 // "3(12)": a count and the time of the latest one relative to the start ("-" if never).
 std::string count_with_time(int count, std::optional<double> time_s,
                             std::optional<double> start_s) {
-  const std::string when = time_s ? fix(*time_s - start_s.value_or(0.0), 0) : "-";
+  const std::string when = time_s ? base::fix(*time_s - start_s.value_or(0.0), 0) : "-";
   return std::to_string(count) + "(" + when + ")";
 }
 
 std::string rate(int reports, int chances) {
-  return chances > 0 ? fix(static_cast<double>(reports) / chances, 2) : "n/a";
+  return chances > 0 ? base::fix(static_cast<double>(reports) / chances, 2) : "n/a";
 }
 
 std::string join(const std::vector<std::string>& items) {
@@ -100,7 +100,7 @@ std::string format_report(const ReportData& d) {
   out += section("Sensor Configuration Options");
   std::vector<std::vector<std::string>> options;
   for (const SensorOption& o : d.options) {
-    options.push_back({fix(o.width_m, 1), fix(o.exp, 1), fix(o.pclass, 3),
+    options.push_back({base::fix(o.width_m, 1), base::fix(o.exp, 1), base::fix(o.pclass, 3),
                        std::to_string(o.max_vehicles)});
   }
   out += format_table({{"Width", "Exp", "Classify", "Max"}}, options);
@@ -110,8 +110,8 @@ std::string format_report(const ReportData& d) {
   std::vector<std::vector<std::string>> settings, stats;
   for (const ReportVehicleRow& v : d.vehicles) {
     const VehicleCounters& c = v.counters;
-    settings.push_back({v.name, fix(v.setting.width_m, 1), fix(v.setting.pd, 3),
-                        fix(v.setting.pfa, 3), fix(v.setting.pclass, 3),
+    settings.push_back({v.name, base::fix(v.setting.width_m, 1), base::fix(v.setting.pd, 3),
+                        base::fix(v.setting.pfa, 3), base::fix(v.setting.pclass, 3),
                         std::to_string(c.width_attempts),
                         count_with_time(c.width_resets, c.last_width_reset_s, d.start_time_s),
                         count_with_time(c.pd_resets, c.last_pd_reset_s, d.start_time_s)});

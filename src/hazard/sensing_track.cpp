@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "hazard/text.hpp"
+#include "base/text.hpp"
 
 namespace hazard {
 
@@ -64,7 +64,7 @@ glm::dvec2 position_at(const TrackPose& a, const TrackPose& b, double t, bool la
   return last ? b.position_m : a.position_m + (b.position_m - a.position_m) * t;
 }
 double heading_at(const TrackPose& a, const TrackPose& b, double turn_deg, double t, bool last) {
-  return last ? b.heading_deg : norm360(a.heading_deg + turn_deg * t);
+  return last ? b.heading_deg : base::norm360(a.heading_deg + turn_deg * t);
 }
 
 }  // namespace
@@ -98,7 +98,7 @@ std::vector<TrackPiece> track_pieces(const std::vector<TrackPose>& track, bool s
     const TrackPose& a = track[k - 1];
     const TrackPose& b = track[k];
     if (!b.sensor_on) continue;  // not sensed: nothing changes over this segment
-    const double turn_deg = norm180(b.heading_deg - a.heading_deg);
+    const double turn_deg = base::norm180(b.heading_deg - a.heading_deg);
     // Sub-stepping samples N poses; sweeping walks n pieces sharing their junction poses.
     const bool sample = mode == TrackMode::kSubsteps;
     const int n = sample ? substeps : sweep_pieces_for_turn(turn_deg, half_diagonal_m);

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "hazard/text.hpp"
+#include "base/text.hpp"
 
 namespace hazard {
 
@@ -20,7 +20,7 @@ double roc_false_alarm_probability(double pd, double exp) {
 double resemblance_false_alarm_probability(double pfa, double hr) { return (pfa + hr) / 2.0; }
 
 double aspect_difference_deg(double heading_deg, double aspect_deg) {
-  const double d = std::fabs(norm180(heading_deg - aspect_deg));  // [0, 180]
+  const double d = std::fabs(base::norm180(heading_deg - aspect_deg));  // [0, 180]
   return std::min(d, 180.0 - d);
 }
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "hazard/text.hpp"
+#include "base/text.hpp"
 #include "messages/fields.hpp"
 
 namespace hazard {
@@ -24,10 +24,10 @@ constexpr double kMaxPclass = 1.0;
 SensorConfigParse parse_sensor_config(std::string_view value) {
   SensorConfigParse out;
   std::optional<std::string_view> width, exp, pclass, max;
-  for (const KeyValue& kv : split_key_values(value)) {
-    const std::string key = to_lower(kv.key);
+  for (const base::KeyValue& kv : base::split_key_values(value)) {
+    const std::string key = base::to_lower(kv.key);
     if (!kv.has_equals) {
-      out.warnings.push_back("piece '" + excerpt(kv.key) + "' has no '='; ignored");
+      out.warnings.push_back("piece '" + base::excerpt(kv.key) + "' has no '='; ignored");
     } else if (key == "width") {
       width = kv.value;
     } else if (key == "exp") {
@@ -38,7 +38,7 @@ SensorConfigParse parse_sensor_config(std::string_view value) {
       max = kv.value;
     } else {
       out.warnings.push_back("unknown key '" + std::string(kv.key) + "' (value '" +
-                             excerpt(kv.value) + "') ignored");
+                             base::excerpt(kv.value) + "') ignored");
     }
   }
   auto fail = [&](std::string why) {
@@ -49,16 +49,16 @@ SensorConfigParse parse_sensor_config(std::string_view value) {
   if (!exp) return fail(missing_field("exp"));
   if (!pclass) return fail(missing_field("pclass"));
   SensorOption o;
-  const auto w = parse_number(*width);
+  const auto w = base::parse_number(*width);
   if (!w || !(*w > 0.0)) return fail(field_value("width", *width) + " is not a number > 0");
-  const auto e = parse_number(*exp);
+  const auto e = base::parse_number(*exp);
   if (!e || !(*e >= kMinExp)) return fail(field_value("exp", *exp) + " is not a number >= 1");
-  const auto p = parse_number(*pclass);
+  const auto p = base::parse_number(*pclass);
   if (!p || !(*p >= kMinPclass && *p <= kMaxPclass)) {
     return fail(field_value("pclass", *pclass) + " is not a number in [0.5, 1]");
   }
   if (max) {
-    const auto m = parse_unsigned(*max);
+    const auto m = base::parse_unsigned(*max);
     if (!m || *m > static_cast<std::uint64_t>(std::numeric_limits<int>::max())) {
       return fail(field_value("max", *max) + " is not a whole number >= 0");
     }
@@ -76,7 +76,7 @@ SensorConfigParse parse_sensor_config(std::string_view value) {
 std::optional<std::string> SensorOptions::add(SensorOption option) {
   for (const SensorOption& o : sorted_) {
     if (std::fabs(o.width_m - option.width_m) <= kWidthMatchTolerance_m) {
-      return "width " + fmt(option.width_m) + " is already configured";
+      return "width " + base::fmt(option.width_m) + " is already configured";
     }
   }
   config_order_.push_back(option.as_written);

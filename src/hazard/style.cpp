@@ -4,7 +4,7 @@
 #include <array>
 #include <string>
 
-#include "hazard/text.hpp"
+#include "base/text.hpp"
 
 namespace hazard {
 
@@ -40,16 +40,16 @@ constexpr int kMaxGrayLevel = 100;  // X11 defines gray0 .. gray100
 
 std::string normalized_color_word(std::string_view text) {
   std::string out;
-  for (char c : trim(text)) {
+  for (char c : base::trim(text)) {
     if (c != '_' && c != ' ') out.push_back(c);
   }
-  return to_lower(out);
+  return base::to_lower(out);
 }
 
 bool is_gray_level(std::string_view word) {
   for (std::string_view prefix : {"gray", "grey"}) {
     if (word.size() > prefix.size() && word.substr(0, prefix.size()) == prefix) {
-      const auto level = parse_unsigned(word.substr(prefix.size()));
+      const auto level = base::parse_unsigned(word.substr(prefix.size()));
       return level && *level <= kMaxGrayLevel;
     }
   }
@@ -59,7 +59,7 @@ bool is_gray_level(std::string_view word) {
 // "hex:RR,GG,BB" with two hex digits per channel.
 bool is_hex_color(std::string_view word) {
   if (word.substr(0, 4) != "hex:") return false;
-  const auto parts = split_trimmed(word.substr(4), ',');
+  const auto parts = base::split_trimmed(word.substr(4), ',');
   if (parts.size() != 3) return false;
   return std::all_of(parts.begin(), parts.end(), [](std::string_view p) {
     return p.size() == 2 && std::all_of(p.begin(), p.end(), [](char c) {
@@ -70,10 +70,10 @@ bool is_hex_color(std::string_view word) {
 
 bool is_fraction_triple(std::string_view word) {
   for (char sep : {',', ':', '%', '$', '#'}) {
-    const auto parts = split_trimmed(word, sep);
+    const auto parts = base::split_trimmed(word, sep);
     if (parts.size() != 3) continue;
     return std::all_of(parts.begin(), parts.end(), [](std::string_view p) {
-      const auto v = parse_number(p);
+      const auto v = base::parse_number(p);
       return v && *v >= 0.0 && *v <= 1.0;
     });
   }

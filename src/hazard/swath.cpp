@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <cmath>
 
-#include "hazard/text.hpp"
+#include "base/text.hpp"
 
 namespace hazard {
 
 SinCos sin_cos_deg(double angle_deg) {
-  const double a = norm360(angle_deg);
+  const double a = base::norm360(angle_deg);
   if (a == 0.0) return {0.0, 1.0};
   if (a == 90.0) return {1.0, 0.0};
   if (a == 180.0) return {0.0, -1.0};

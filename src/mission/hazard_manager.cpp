@@ -19,7 +19,7 @@
 #include "hazard/messages/config_request.hpp"
 #include "hazard/messages/sensor_request.hpp"
 #include "hazard/swath.hpp"
-#include "hazard/text.hpp"
+#include "base/text.hpp"
 #include "mission/transit_lane.hpp"
 
 namespace mission {
@@ -75,7 +75,7 @@ class Footprint {
 // ---- parameter table -----------------------------------------------------------------------
 
 std::string problem(std::string_view name, double value, const char* rule) {
-  return "parameter " + std::string(name) + "=" + hazard::fmt(value, 6) + " " + rule;
+  return "parameter " + std::string(name) + "=" + base::fmt(value, 6) + " " + rule;
 }
 std::string check_positive(std::string_view name, double v) {
   return v > 0.0 ? std::string() : problem(name, v, "must be > 0");
@@ -106,7 +106,7 @@ struct ParamRow {
 
 ParamRow number_row(ParamInfo info, double ManagerConfig::*field, NumberCheck check) {
   return {info, [info, field, check](ManagerConfig& c, std::string_view value) -> std::string {
-            const auto v = hazard::parse_number(value);
+            const auto v = base::parse_number(value);
             if (!v) return "parameter " + std::string(info.name) + "='" + std::string(value) +
                            "' is not a number";
             if (std::string error = check(info.name, *v); !error.empty()) return error;
@@ -118,7 +118,7 @@ ParamRow number_row(ParamInfo info, double ManagerConfig::*field, NumberCheck ch
 
 ParamRow bool_row(ParamInfo info, bool ManagerConfig::*field) {
   return {info, [info, field](ManagerConfig& c, std::string_view value) -> std::string {
-            const auto v = hazard::parse_bool(value);
+            const auto v = base::parse_bool(value);
             if (!v) return "parameter " + std::string(info.name) + "='" + std::string(value) +
                            "' is not true or false";
             c.*field = *v;
@@ -136,7 +136,7 @@ const std::vector<ParamRow>& param_rows() {
                  &ManagerConfig::prior_hazard, check_open_probability),
       {{"report_name", "", "name= part of HAZARDSET_REPORT (quotes stripped)"},
        [](ManagerConfig& c, std::string_view value) -> std::string {
-         std::string v(hazard::trim(value));
+         std::string v(base::trim(value));
          v.erase(std::remove(v.begin(), v.end(), '"'), v.end());
          c.report_name = v;
          return {};
@@ -155,7 +155,7 @@ const std::vector<ParamRow>& param_rows() {
                &ManagerConfig::classify),
       {{"classify_lookahead", "2", "answers valued together for a request's priority, 1..20"},
        [](ManagerConfig& c, std::string_view value) -> std::string {
-         const auto v = hazard::parse_unsigned(value);
+         const auto v = base::parse_unsigned(value);
          if (!v || *v < 1 || *v > static_cast<std::uint64_t>(kMaxLookaheadAnswers))
            return "parameter classify_lookahead='" + std::string(value) +
                   "' is not a whole number in [1, 20]";
@@ -193,8 +193,8 @@ const std::vector<ParamRow>& param_rows() {
 }
 
 std::string fmt_setting(double width, double pd, double pfa, double pclass) {
-  return "width=" + hazard::fmt(width, 1) + ",pd=" + hazard::fmt(pd, 3) + ",pfa=" +
-         hazard::fmt(pfa, 3) + ",pclass=" + hazard::fmt(pclass, 3);
+  return "width=" + base::fmt(width, 1) + ",pd=" + base::fmt(pd, 3) + ",pfa=" +
+         base::fmt(pfa, 3) + ",pclass=" + base::fmt(pclass, 3);
 }
 
 }  // namespace
@@ -206,11 +206,11 @@ const std::vector<ParamInfo>& manager_parameters() {
 
 std::string apply_manager_param(ManagerConfig& config, std::string_view key,
                                 std::string_view value) {
-  std::string name = hazard::to_lower(hazard::trim(key));
+  std::string name = base::to_lower(base::trim(key));
   if (name == "pd") name = "sensor_pd";  // spec 13: both names are accepted
   for (const ParamRow& row : param_rows())
     if (name == row.info.name) return row.apply(config, value);
-  return "unknown parameter '" + std::string(hazard::trim(key)) + "'";
+  return "unknown parameter '" + std::string(base::trim(key)) + "'";
 }
 
 std::string validate(const ManagerConfig& c) {
@@ -391,7 +391,7 @@ void HazardManager::resolve(Record& r, Outputs& out) {
     r.own.add_missed_pass(setting_->pd, setting_->pfa);
     ++counters_.missed_passes;
     out.events.push_back("Pass over " + r.label + " without a detection: P(hazard)=" +
-                         hazard::fmt(logistic(log_odds(r)), 3));
+                         base::fmt(logistic(log_odds(r)), 3));
   } else {
     ++counters_.doubtful_passes;
   }
@@ -497,7 +497,7 @@ Outputs HazardManager::on_detection(const hazard::DetectionReport& report, doubl
   }
   r.own.add_detection(setting_->pd, setting_->pfa);
   out.events.push_back("Detection of " + r.label + ": P(hazard)=" +
-                       hazard::fmt(logistic(log_odds(r)), 3));
+                       base::fmt(logistic(log_odds(r)), 3));
   if (config_.classify) out.append(request_classification(r));
   return out;
 }
@@ -534,7 +534,7 @@ Outputs HazardManager::on_classification(const hazard::HazardReport& report, dou
   r.own.add_classification(said_hazard, pclass);
   ++counters_.classify_answers;
   out.events.push_back("Classified " + r.label + " as " + (said_hazard ? "hazard" : "benign") +
-                       ": P(hazard)=" + hazard::fmt(logistic(log_odds(r)), 3));
+                       ": P(hazard)=" + base::fmt(logistic(log_odds(r)), 3));
   return out;
 }
 

@@ -7,7 +7,7 @@
 #include <unordered_set>
 
 #include "hazard/messages/view_polygon.hpp"
-#include "hazard/text.hpp"
+#include "base/text.hpp"
 #include "mission/messages/hazard_search.hpp"
 
 namespace mission {
@@ -58,8 +58,8 @@ const std::vector<ParamInfo>& metric_parameters() {
 }
 
 HazardMetric::ConfigResult HazardMetric::configure(std::string_view key, std::string_view value) {
-  const std::string name = hazard::to_lower(hazard::trim(key));
-  value = hazard::trim(value);
+  const std::string name = base::to_lower(base::trim(key));
+  value = base::trim(value);
   if (name == kHazardFile.name) return {"", std::string(value)};
   ConfigResult result;
   // Only applied lines count as settings; a rejected line does not make the next one a repeat.
@@ -69,16 +69,16 @@ HazardMetric::ConfigResult HazardMetric::configure(std::string_view key, std::st
     return result;
   };
   if (name == kShowXpath.name) {
-    const auto v = hazard::parse_bool(value);
+    const auto v = base::parse_bool(value);
     if (!v) return warn("parameter show_xpath='" + std::string(value) + "' is not true or false");
     config_.show_xpath = *v;
   } else {
     const auto row = std::find_if(number_params().begin(), number_params().end(),
                                   [&](const NumberParam& p) { return name == p.info.name; });
     if (row == number_params().end())
-      return warn("unknown parameter '" + std::string(hazard::trim(key)) + "'");
-    const auto v = hazard::parse_number(value);
-    const std::string keeps = "; keeps " + hazard::fmt(config_.*(row->field));
+      return warn("unknown parameter '" + std::string(base::trim(key)) + "'");
+    const auto v = base::parse_number(value);
+    const std::string keeps = "; keeps " + base::fmt(config_.*(row->field));
     const std::string text(value);
     if (!v) return warn("parameter " + name + "='" + text + "' is not a number" + keeps);
     if (*v < 0.0) return warn("parameter " + name + "=" + text + " must be >= 0" + keeps);
@@ -98,16 +98,16 @@ std::vector<std::string> HazardMetric::load_hazard_file(std::string_view file_na
   hazard::load_hazard_file_text(text, file_name, truth_, warnings);
   if (first_file_.empty()) first_file_ = std::string(file_name);
   int line_number = 0;
-  for (std::string_view raw : hazard::split_trimmed(text, '\n')) {
+  for (std::string_view raw : base::split_trimmed(text, '\n')) {
     ++line_number;
-    const std::string_view line = hazard::trim(without_comment(raw));
+    const std::string_view line = base::trim(without_comment(raw));
     const auto eq = line.find('=');
     if (eq == std::string_view::npos) continue;
-    const std::string_view left = hazard::trim(line.substr(0, eq));
-    const std::string_view right = hazard::trim(line.substr(eq + 1));
-    if (hazard::iequals(left, "source")) {
+    const std::string_view left = base::trim(line.substr(0, eq));
+    const std::string_view right = base::trim(line.substr(eq + 1));
+    if (base::iequals(left, "source")) {
       source_ = std::string(right);
-    } else if (hazard::iequals(left, "region")) {
+    } else if (base::iequals(left, "region")) {
       auto parsed = ConvexPolygon::parse(right);
       if (auto* error = std::get_if<ConvexPolygon::Error>(&parsed)) {
         warnings.push_back(std::string(file_name) + ":" + std::to_string(line_number) +
@@ -255,7 +255,7 @@ Outputs HazardMetric::on_hazardset_report(std::string_view text, double now_s) {
   record.eval = evaluate(report, now_s);
   record.report = std::move(report);
   ++record.reports_received;
-  const std::string suffix = "_" + hazard::to_upper(record.eval.vname);
+  const std::string suffix = "_" + base::to_upper(record.eval.vname);
   out.post_double(kHazardSearchScoreVar, record.eval.norm_score);
   const std::string full = format_hazardset_eval_full(record.eval);
   const std::string brief = format_hazardset_eval(record.eval);
@@ -264,7 +264,7 @@ Outputs HazardMetric::on_hazardset_report(std::string_view text, double now_s) {
   out.post(kHazardsetEvalVar, brief);
   out.post(std::string(kHazardsetEvalVar) + suffix, brief);
   out.events.push_back("Received valid report from: " + record.eval.vname + " (score " +
-                       hazard::fmt(record.eval.norm_score, 2) + ")");
+                       base::fmt(record.eval.norm_score, 2) + ")");
   return out;
 }
 

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "hazard/text.hpp"
+#include "base/text.hpp"
 
 namespace mission {
 
@@ -25,7 +25,7 @@ double signed_area_m2(const std::vector<glm::dvec2>& v) {
 // The text between "pts={" and its closing brace, or the whole text when there is no "pts=".
 std::variant<std::string_view, std::string> points_text(std::string_view text) {
   const auto pts = text.find("pts=");
-  if (pts == std::string_view::npos) return hazard::trim(text);
+  if (pts == std::string_view::npos) return base::trim(text);
   const auto open = text.find_first_not_of(" \t", pts + 4);
   if (open == std::string_view::npos || text[open] != '{')
     return std::string("'pts=' must be followed by '{'");
@@ -51,7 +51,7 @@ std::variant<ConvexPolygon, ConvexPolygon::Error> ConvexPolygon::make(
     const double turn = cross(b - a, c - b) * orientation;
     if (turn < 0.0) {
       return Error{"the polygon is not convex at vertex " + std::to_string((i + 1) % n + 1) +
-                   " (" + hazard::fmt(b.x, 2) + "," + hazard::fmt(b.y, 2) + ")"};
+                   " (" + base::fmt(b.x, 2) + "," + base::fmt(b.y, 2) + ")"};
     }
     if (b != a && c != b) turning_rad += std::atan2(turn, glm::dot(b - a, c - b));
   }
@@ -65,7 +65,7 @@ std::variant<ConvexPolygon, ConvexPolygon::Error> ConvexPolygon::parse(std::stri
   if (auto* error = std::get_if<Error>(&points)) return *error;
   auto polygon = make(std::get<std::vector<glm::dvec2>>(std::move(points)));
   if (auto* error = std::get_if<Error>(&polygon))
-    return Error{"polygon '" + std::string(hazard::trim(text)) + "': " + error->message};
+    return Error{"polygon '" + std::string(base::trim(text)) + "': " + error->message};
   return polygon;
 }
 
@@ -118,7 +118,7 @@ std::string format_points(const std::vector<glm::dvec2>& points_m) {
   std::string out = "pts={";
   for (std::size_t i = 0; i < points_m.size(); ++i) {
     if (i > 0) out += ':';
-    out += hazard::fmt(points_m[i].x, 1) + "," + hazard::fmt(points_m[i].y, 1);
+    out += base::fmt(points_m[i].x, 1) + "," + base::fmt(points_m[i].y, 1);
   }
   return out + "}";
 }
@@ -127,18 +127,18 @@ std::variant<std::vector<glm::dvec2>, ConvexPolygon::Error> parse_points(std::st
   using Error = ConvexPolygon::Error;
   const auto body = points_text(text);
   if (const auto* problem = std::get_if<std::string>(&body))
-    return Error{"polygon '" + std::string(hazard::trim(text)) + "': " + *problem};
-  const std::string_view list = hazard::trim(std::get<std::string_view>(body));
-  if (list.empty()) return Error{"polygon '" + std::string(hazard::trim(text)) + "': no vertices"};
+    return Error{"polygon '" + std::string(base::trim(text)) + "': " + *problem};
+  const std::string_view list = base::trim(std::get<std::string_view>(body));
+  if (list.empty()) return Error{"polygon '" + std::string(base::trim(text)) + "': no vertices"};
   std::vector<glm::dvec2> points;
-  for (std::string_view vertex : hazard::split_trimmed(list, ':')) {
-    const auto coords = hazard::split_trimmed(vertex, ',');
-    const auto x = coords.size() >= 2 ? hazard::parse_number(coords[0]) : std::nullopt;
-    const auto y = coords.size() >= 2 ? hazard::parse_number(coords[1]) : std::nullopt;
-    const bool z_ok = coords.size() == 2 || (coords.size() == 3 && hazard::parse_number(coords[2]));
+  for (std::string_view vertex : base::split_trimmed(list, ':')) {
+    const auto coords = base::split_trimmed(vertex, ',');
+    const auto x = coords.size() >= 2 ? base::parse_number(coords[0]) : std::nullopt;
+    const auto y = coords.size() >= 2 ? base::parse_number(coords[1]) : std::nullopt;
+    const bool z_ok = coords.size() == 2 || (coords.size() == 3 && base::parse_number(coords[2]));
     if (!x || !y || !z_ok) {
-      return Error{"polygon '" + std::string(hazard::trim(text)) + "': bad vertex '" +
-                   std::string(hazard::trim(vertex)) + "' (expected x,y)"};
+      return Error{"polygon '" + std::string(base::trim(text)) + "': bad vertex '" +
+                   std::string(base::trim(vertex)) + "' (expected x,y)"};
     }
     points.emplace_back(*x, *y);
   }

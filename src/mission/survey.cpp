@@ -13,7 +13,7 @@
 #include <cmath>
 #include <limits>
 
-#include "hazard/text.hpp"
+#include "base/text.hpp"
 
 namespace mission {
 
@@ -29,7 +29,7 @@ struct LaneExtent {
 
 std::string check_options(const LawnmowerOptions& o) {
   auto bad = [](const char* name, double v, const char* rule) {
-    return std::string("lawnmower option ") + name + "=" + hazard::fmt(v, 6) + " " + rule;
+    return std::string("lawnmower option ") + name + "=" + base::fmt(v, 6) + " " + rule;
   };
   if (!std::isfinite(o.swath_half_width_m) || o.swath_half_width_m <= 0.0)
     return bad("swath_half_width_m", o.swath_half_width_m, "must be > 0");
@@ -79,7 +79,7 @@ glm::dvec2 heading_vector(double heading_deg) {
 
 double heading_of(glm::dvec2 direction) {
   if (direction.x == 0.0 && direction.y == 0.0) return 0.0;
-  return hazard::norm360(std::atan2(direction.x, direction.y) * kDegPerRad);
+  return base::norm360(std::atan2(direction.x, direction.y) * kDegPerRad);
 }
 
 std::variant<LawnmowerPlan, std::string> plan_lawnmower(const ConvexPolygon& region,

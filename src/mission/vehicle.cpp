@@ -23,7 +23,7 @@
 
 #include "mission/random.hpp"
 #include "mission/survey.hpp"
-#include "hazard/text.hpp"
+#include "base/text.hpp"
 
 namespace mission {
 
@@ -35,7 +35,7 @@ constexpr double kDegPerRad = 57.295779513082320876798;
 constexpr double kMaxAnticipatedTurn_deg = 120.0;
 
 std::string bad(const char* name, double value, const char* rule) {
-  return std::string("vehicle parameter ") + name + "=" + hazard::fmt(value, 6) + " " + rule;
+  return std::string("vehicle parameter ") + name + "=" + base::fmt(value, 6) + " " + rule;
 }
 }  // namespace
 
@@ -60,7 +60,7 @@ SurveyVehicle::SurveyVehicle(const VehicleParams& params, const Pose& start)
     : params_(params), start_time_s_(start.time_s) {
   assert(validate(params).empty());
   state_.position_m = start.position_m;
-  state_.heading_deg = hazard::norm360(start.heading_deg);
+  state_.heading_deg = base::norm360(start.heading_deg);
   state_.segment_start_m = start.position_m;
   last_pose_ = pose_of(state_, start.time_s);
 }
@@ -114,11 +114,11 @@ SurveyVehicle::State SurveyVehicle::step(const State& from, double dt_s, bool wh
   // 3. Rate-limited turn toward the commanded heading.
   const double max_turn_deg = params_.max_turn_rate_dps * dt_s;
   const double turn_deg =
-      std::clamp(hazard::norm180(desired_deg + s.noise_deg - s.heading_deg), -max_turn_deg,
+      std::clamp(base::norm180(desired_deg + s.noise_deg - s.heading_deg), -max_turn_deg,
                  max_turn_deg);
   if (std::abs(turn_deg) < max_turn_deg) s.turning = false;  // reached the commanded heading
   const double mid_heading_deg = s.heading_deg + 0.5 * turn_deg;
-  s.heading_deg = hazard::norm360(s.heading_deg + turn_deg);
+  s.heading_deg = base::norm360(s.heading_deg + turn_deg);
 
   // 4. Move.
   s.position_m += heading_vector(mid_heading_deg) * (params_.speed_mps * dt_s);
@@ -137,7 +137,7 @@ double SurveyVehicle::turn_anticipation_m(std::size_t target) const {
   const glm::dvec2 in = waypoints_m_[target] - waypoints_m_[target - 1];
   const glm::dvec2 out = waypoints_m_[target + 1] - waypoints_m_[target];
   if (glm::length(in) == 0.0 || glm::length(out) == 0.0) return 0.0;
-  const double turn_deg = std::min(std::abs(hazard::norm180(heading_of(out) - heading_of(in))),
+  const double turn_deg = std::min(std::abs(base::norm180(heading_of(out) - heading_of(in))),
                                    kMaxAnticipatedTurn_deg);
   const double radius_m = params_.speed_mps / (params_.max_turn_rate_dps / kDegPerRad);
   // The arc of radius R tangent to both lines starts R tan(turn / 2) before the corner; never

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <functional>
 
-#include "hazard/text.hpp"
+#include "base/text.hpp"
 
 namespace mission {
 
@@ -26,10 +26,10 @@ bool fraction_below_one(double v) { return v >= 0.0 && v < 1.0; }
 // A numeric row whose value must satisfy `ok`; `rule` is the sentence shown otherwise.
 Row number_row(ParamInfo info, bool (*ok)(double), const char* rule, Field field) {
   auto apply = [info, ok, rule, field](SurveyVehicleConfig& c, std::string_view value) {
-    const auto v = hazard::parse_number(value);
+    const auto v = base::parse_number(value);
     const std::string name(info.name);
     if (!v) return "parameter " + name + "='" + std::string(value) + "' is not a number";
-    if (!ok(*v)) return "parameter " + name + "=" + hazard::fmt(*v, 6) + " " + rule;
+    if (!ok(*v)) return "parameter " + name + "=" + base::fmt(*v, 6) + " " + rule;
     field(c) = *v;
     return std::string();
   };
@@ -65,7 +65,7 @@ const std::vector<Row>& rows() {
                  "must be > 0", [](C& c) -> double& { return c.vehicle.lead_m; }),
       {{"random_seed", "1", "heading-noise seed (whole number)"},
        [](C& c, std::string_view value) -> std::string {
-         const auto v = hazard::parse_unsigned(value);
+         const auto v = base::parse_unsigned(value);
          if (!v) return "parameter random_seed='" + std::string(value) + "' is not a whole number";
          c.vehicle.seed = *v;
          return {};
@@ -116,10 +116,10 @@ const std::vector<ParamInfo>& survey_vehicle_parameters() {
 
 std::string apply_survey_vehicle_param(SurveyVehicleConfig& config, std::string_view key,
                                        std::string_view value) {
-  const std::string name = hazard::to_lower(hazard::trim(key));
+  const std::string name = base::to_lower(base::trim(key));
   for (const Row& r : rows())
-    if (name == r.info.name) return r.apply(config, hazard::trim(value));
-  return "unknown parameter '" + std::string(hazard::trim(key)) + "'";
+    if (name == r.info.name) return r.apply(config, base::trim(value));
+  return "unknown parameter '" + std::string(base::trim(key)) + "'";
 }
 
 std::variant<std::vector<glm::dvec2>, std::string> plan_route(const SurveyVehicleConfig& config) {

@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <system_error>
 
-#include "moos/text.hpp"
+#include "base/text.hpp"
 
 namespace moos {
 
@@ -107,7 +107,7 @@ AlogParse parse_alog_line(std::string_view line) {
   const auto value_start = rest.find_first_not_of(kBlanks);
   const std::string_view value =
       value_start == std::string_view::npos ? std::string_view{} : rest.substr(value_start);
-  const auto t = text::parse_number(time);
+  const auto t = base::parse_number(time);
   if (!t) {
     result.kind = AlogLineKind::kMalformed;
     result.error = "time '" + std::string(time) + "' is not a finite number";
@@ -127,7 +127,7 @@ std::optional<double> alog_logstart(std::string_view header_line) {
   std::string_view rest = trim_right_cr(header_line);
   if (next_token(rest) != "%%") return std::nullopt;
   if (next_token(rest) != "LOGSTART") return std::nullopt;
-  return text::parse_number(next_token(rest));
+  return base::parse_number(next_token(rest));
 }
 
 }  // namespace moos

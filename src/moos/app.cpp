@@ -10,7 +10,7 @@
 
 #include "moos/limits.hpp"
 #include "moos/tcp_client.hpp"
-#include "moos/text.hpp"
+#include "base/text.hpp"
 
 namespace moos {
 
@@ -40,8 +40,8 @@ std::string place(const ConfigLine& line) {
 
 /// libMOOS booleans: TRUE in any case, or a number > 0 (spec 6.2).
 std::optional<bool> moos_bool(std::string_view value) {
-  if (auto b = text::parse_bool(value)) return b;
-  if (auto n = text::parse_number(value)) return *n > 0;
+  if (auto b = base::parse_bool(value)) return b;
+  if (auto n = base::parse_number(value)) return *n > 0;
   return std::nullopt;
 }
 
@@ -49,25 +49,25 @@ std::optional<bool> moos_bool(std::string_view value) {
 /// the value is not a whole number.
 std::optional<std::size_t> clipped_count(const ConfigLine& line, long long lo, long long hi,
                                          AppSettings& s) {
-  const auto n = text::parse_integer(line.value, std::numeric_limits<long long>::min(),
+  const auto n = base::parse_integer(line.value, std::numeric_limits<long long>::min(),
                                      std::numeric_limits<long long>::max());
   if (!n) {
-    s.config_warnings.push_back("Invalid " + text::to_upper(line.key) + ": " + line.value + place(line));
+    s.config_warnings.push_back("Invalid " + base::to_upper(line.key) + ": " + line.value + place(line));
     return std::nullopt;
   }
   const long long clipped = std::clamp(*n, lo, hi);
   if (clipped != *n)
-    s.config_warnings.push_back(text::to_upper(line.key) + " " + line.value + " clipped to " +
+    s.config_warnings.push_back(base::to_upper(line.key) + " " + line.value + " clipped to " +
                                 std::to_string(clipped) + place(line));
   return static_cast<std::size_t>(clipped);
 }
 
 void apply_framework_line(const ConfigLine& line, AppSettings& s, bool& block_app_tick) {
-  const std::string key = text::to_upper(line.key);
+  const std::string key = base::to_upper(line.key);
   const std::string& v = line.value;
   auto warn = [&](const std::string& what) { s.config_warnings.push_back(what + place(line)); };
   if (key == "APPTICK") {
-    const auto f = text::parse_number(v);
+    const auto f = base::parse_number(v);
     if (f && *f > 0) {
       s.app_tick_hz = *f;
       block_app_tick = true;
@@ -75,13 +75,13 @@ void apply_framework_line(const ConfigLine& line, AppSettings& s, bool& block_ap
       warn("Invalid AppTick: " + v + " (must be a number > 0)");
     }
   } else if (key == "COMMSTICK") {
-    if (auto t = text::parse_integer(v, 1, kMaxCommsTickHz)) s.comms_tick_hz = static_cast<int>(*t);
+    if (auto t = base::parse_integer(v, 1, kMaxCommsTickHz)) s.comms_tick_hz = static_cast<int>(*t);
     else warn("Invalid CommsTick: " + v + " (must be a whole number in 1..200)");
   } else if (key == "MAXAPPTICK") {
-    const auto f = text::parse_number(v);
+    const auto f = base::parse_number(v);
     if (!f || *f < 0) warn("Invalid MaxAppTick: " + v + " (must be a number >= 0)");
   } else if (key == "ITERATEMODE") {
-    const auto mode = text::parse_integer(v, 0, 2);
+    const auto mode = base::parse_integer(v, 0, 2);
     if (!mode) warn("Invalid IterateMode: " + v + " (must be 0, 1 or 2)");
     else if (*mode != 0) warn("IterateMode " + v + " is not supported; mode 0 (AppTick) is used");
   } else if (key == "SORTMAILBYTIME") {
@@ -92,13 +92,13 @@ void apply_framework_line(const ConfigLine& line, AppSettings& s, bool& block_ap
     if (!b) warn("Invalid CatchCommandMessages: " + v + " (must be true or false)");
     else if (*b) warn("CatchCommandMessages is not supported; command messages are ordinary mail");
   } else if (key == "TERM_REPORT_INTERVAL") {
-    const auto f = text::parse_number(v);
+    const auto f = base::parse_number(v);
     if (!f) {
       warn("Invalid TERM_REPORT_INTERVAL: " + v);
     } else {
       s.term_report_interval_s = std::clamp(*f, 0.0, kMaxTermReportInterval_s);
       if (s.term_report_interval_s != *f)
-        warn("TERM_REPORT_INTERVAL " + v + " clipped to " + text::format_g(s.term_report_interval_s));
+        warn("TERM_REPORT_INTERVAL " + v + " clipped to " + base::format_g(s.term_report_interval_s));
     }
   } else if (key == "MAX_APPCAST_EVENTS") {
     if (auto n = clipped_count(line, 0, static_cast<long long>(AppCast::kMaxEventsLimit), s))
@@ -120,7 +120,7 @@ void apply_block(const ProcessBlock& block, const AppTraits& traits, AppSettings
       continue;
     }
     auto same = std::find_if(chosen.begin(), chosen.end(), [&](const ConfigLine* c) {
-      return text::iequals(c->key, line.key);
+      return base::iequals(c->key, line.key);
     });
     if (same == chosen.end()) {
       chosen.push_back(&line);
@@ -140,19 +140,19 @@ void apply_globals(const MissionFile& mission, AppSettings& s) {
     s.config_warnings.push_back("Community/Vehicle name not found in mission file");
   if (auto host = mission.global("ServerHost"); host && !host->empty()) s.server_host = *host;
   if (const ConfigLine* port = mission.global_line("ServerPort")) {
-    if (auto p = text::parse_integer(text::remove_blanks(port->value), 1, kMaxPort))
+    if (auto p = base::parse_integer(base::remove_blanks(port->value), 1, kMaxPort))
       s.server_port = static_cast<int>(*p);
     else
       s.config_warnings.push_back("Invalid ServerPort: " + port->value + place(*port));
   }
   if (const ConfigLine* warp = mission.global_line("MOOSTimeWarp")) {
-    if (const auto w = parse_time_warp(text::remove_blanks(warp->value)))
+    if (const auto w = parse_time_warp(base::remove_blanks(warp->value)))
       s.time_warp = *w;
     else
       s.config_warnings.push_back("Invalid MOOSTimeWarp: " + warp->value + place(*warp));
   }
   if (const ConfigLine* term = mission.global_line("TERM_REPORTING")) {
-    if (auto b = text::parse_bool(term->value))
+    if (auto b = base::parse_bool(term->value))
       s.term_reporting = *b;
     else
       s.config_warnings.push_back("Invalid value for TERM_REPORTING: " + term->value + place(*term));
@@ -166,7 +166,7 @@ extern "C" void on_stop_signal(int) { g_signal_stop = true; }
 
 bool is_framework_parameter(std::string_view key) {
   for (std::string_view k : kFrameworkKeys)
-    if (text::iequals(k, text::trim(key))) return true;
+    if (base::iequals(k, base::trim(key))) return true;
   return false;
 }
 
@@ -236,9 +236,9 @@ bool MoosApp::start(Comms& comms, AppSettings settings) {
   comms_ = &comms;
   settings_ = std::move(settings);
   if (settings_.time_warp != comms.time_warp()) {
-    settings_.config_warnings.push_back("MOOSTimeWarp " + text::format_g(settings_.time_warp) +
+    settings_.config_warnings.push_back("MOOSTimeWarp " + base::format_g(settings_.time_warp) +
                                         " differs from the connection's " +
-                                        text::format_g(comms.time_warp()) + ", which is used");
+                                        base::format_g(comms.time_warp()) + ", which is used");
     settings_.time_warp = comms.time_warp();
   }
   if (!(settings_.app_tick_hz > 0)) settings_.app_tick_hz = traits_.default_app_tick_hz;
@@ -323,7 +323,7 @@ void MoosApp::cycle() {
   post_status_if_due();
   ++iteration_;
   if (traits_.post_iteration_timing && last_iterate_start_moos_s_)
-    comms_->notify(text::to_upper(settings_.moos_name) + "_ITER_GAP",
+    comms_->notify(base::to_upper(settings_.moos_name) + "_ITER_GAP",
                    (now - *last_iterate_start_moos_s_) * settings_.app_tick_hz);
   last_iterate_start_moos_s_ = now;
   iterate();
@@ -353,7 +353,7 @@ bool MoosApp::appcast_requested() const {
 }
 
 std::string MoosApp::status_string() const {
-  std::string out = "AppErrorFlag=false,Uptime=" + text::format_g(moos_time() - start_time_) +
+  std::string out = "AppErrorFlag=false,Uptime=" + base::format_g(moos_time() - start_time_) +
                     ",MOOSName=" + settings_.app_name + ",Publishing=\"";
   if (comms_)
     for (const auto& name : comms_->published_names()) out += name + ",";
@@ -366,7 +366,7 @@ std::string MoosApp::status_string() const {
 
 void MoosApp::post_status_if_due() {
   if (last_status_moos_s_ && curr_time_ - *last_status_moos_s_ < kStatusPeriod_s) return;
-  comms_->notify(text::to_upper(settings_.app_name) + "_STATUS", status_string());
+  comms_->notify(base::to_upper(settings_.app_name) + "_STATUS", status_string());
   last_status_moos_s_ = curr_time_;
 }
 
@@ -376,7 +376,7 @@ bool MoosApp::term_reporting_enabled() const {
 
 void MoosApp::post_report(double iterate_start) {
   if (traits_.post_iteration_timing)
-    comms_->notify(text::to_upper(settings_.moos_name) + "_ITER_LEN",
+    comms_->notify(base::to_upper(settings_.moos_name) + "_ITER_LEN",
                    (moos_time() - iterate_start) * settings_.app_tick_hz);
   appcast_.set_iteration(iteration_);
   appcast_.set_node(community());
@@ -462,7 +462,7 @@ std::optional<double> tw_delay_factor_ms(const CommandLine& cl, std::string* err
   static const std::string kSwitch = "moos_tw_delay_factor";
   const auto it = cl.moos_switches.find(kSwitch);
   if (it == cl.moos_switches.end()) return TcpClientOptions{}.tw_delay_factor_ms;
-  const auto factor = text::parse_number(it->second);
+  const auto factor = base::parse_number(it->second);
   if (!factor || *factor < 0.0) {
     *error = "--" + kSwitch + "=" + it->second + ": the factor must be a number >= 0";
     return std::nullopt;

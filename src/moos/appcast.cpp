@@ -5,7 +5,7 @@
 
 #include <algorithm>
 
-#include "moos/text.hpp"
+#include "base/text.hpp"
 
 namespace moos {
 
@@ -37,7 +37,7 @@ void AppCast::set_max_events(std::size_t max_events) {
 }
 
 void AppCast::add_event(const std::string& text, double seconds_since_start) {
-  events_.push_back("[" + text::format_fixed(seconds_since_start, kEventTimeDecimals) + "]: " + text);
+  events_.push_back("[" + base::fix(seconds_since_start, kEventTimeDecimals) + "]: " + text);
   while (events_.size() > max_events_) events_.pop_front();
 }
 
@@ -145,10 +145,10 @@ std::optional<AppCastRequest> parse_appcast_request(std::string_view request, st
                                                     std::string_view app) {
   AppCastRequest out;
   std::string duration;
-  for (std::string_view item : text::split(request, ',')) {
+  for (std::string_view item : base::split(request, ',')) {
     const auto eq = item.find('=');
-    const std::string param = text::to_upper(text::trim(item.substr(0, eq)));
-    const std::string value(eq == std::string_view::npos ? std::string_view() : text::trim(item.substr(eq + 1)));
+    const std::string param = base::to_upper(base::trim(item.substr(0, eq)));
+    const std::string value(eq == std::string_view::npos ? std::string_view() : base::trim(item.substr(eq + 1)));
     if (param == "NODE") {
       if (value != node && value != "all") return std::nullopt;
     } else if (param == "APP") {
@@ -163,7 +163,7 @@ std::optional<AppCastRequest> parse_appcast_request(std::string_view request, st
   }
   if (out.key.empty()) return std::nullopt;
   // libMOOS reads the duration with atof: text that is not a number counts as 0.
-  const double d = text::parse_number(duration).value_or(0.0);
+  const double d = base::parse_number(duration).value_or(0.0);
   out.duration_s = std::clamp(d, 0.0, kMaxAppCastRequestDuration_s);
   return out;
 }

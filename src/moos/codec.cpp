@@ -6,7 +6,7 @@
 
 #include <cstring>
 
-#include "moos/text.hpp"
+#include "base/text.hpp"
 
 namespace moos {
 
@@ -183,7 +183,7 @@ std::string protocol_banner() {
 
 bool banner_matches(std::string_view received) {
   const auto nul = received.find('\0');
-  return text::iequals(received.substr(0, nul), kBannerText);
+  return base::iequals(received.substr(0, nul), kBannerText);
 }
 
 void append_message(std::string& out, const Message& msg) {

@@ -6,7 +6,7 @@
 #include <algorithm>
 
 #include "moos/limits.hpp"
-#include "moos/text.hpp"
+#include "base/text.hpp"
 
 namespace moos {
 
@@ -18,7 +18,7 @@ constexpr std::string_view kAliasPrefix = "--alias=";
 constexpr std::string_view kSwitchesWithNextArgument[] = {"moos_app_name", "moos_comms_tick"};
 
 bool is_mission_name(std::string_view arg) {
-  return text::ends_with(arg, ".moos") || text::ends_with(arg, ".moos++");
+  return base::ends_with(arg, ".moos") || base::ends_with(arg, ".moos++");
 }
 
 void set_typed_switch(CommandLine& cl, const std::string& name, const std::string& value) {
@@ -36,20 +36,20 @@ void set_typed_switch(CommandLine& cl, const std::string& name, const std::strin
   } else if (name == "moos_file") {
     if (value.empty()) bad("empty file name"); else cl.mission_file = value;
   } else if (name == "moos_port") {
-    if (auto p = text::parse_integer(value, 1, kMaxPort)) cl.moos_port = static_cast<int>(*p);
+    if (auto p = base::parse_integer(value, 1, kMaxPort)) cl.moos_port = static_cast<int>(*p);
     else bad("not a port number in 1..65535");
   } else if (name == "moos_time_warp") {
     if (const auto w = parse_time_warp(value)) cl.moos_time_warp = *w;
     else bad("time warp must be a number in (0, 400]");
   } else if (name == "moos_app_tick") {
-    const auto f = text::parse_number(value);
+    const auto f = base::parse_number(value);
     if (f && *f > 0) cl.moos_app_tick_hz = *f;
     else bad("AppTick must be a number > 0");
   } else if (name == "moos_comms_tick") {
-    if (auto t = text::parse_integer(value, 1, kMaxCommsTickHz)) cl.moos_comms_tick_hz = static_cast<int>(*t);
+    if (auto t = base::parse_integer(value, 1, kMaxCommsTickHz)) cl.moos_comms_tick_hz = static_cast<int>(*t);
     else bad("CommsTick must be a whole number in 1..200");
   } else if (name == "moos_timeout") {
-    const auto t = text::parse_number(value);
+    const auto t = base::parse_number(value);
     if (t && *t > 0) cl.moos_timeout_s = *t;
     else bad("timeout must be a number > 0");
   }
@@ -69,7 +69,7 @@ std::optional<std::string> CommandLine::flag_value(const std::string& name) cons
   std::optional<std::string> found;
   const std::string prefix = name + "=";
   for (const auto& arg : unhandled)
-    if (text::starts_with(arg, prefix)) found = arg.substr(prefix.size());
+    if (base::starts_with(arg, prefix)) found = arg.substr(prefix.size());
   return found;
 }
 
@@ -88,7 +88,7 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
 
   for (std::size_t i = 1; i < args.size(); ++i) {
     const std::string& arg = args[i];
-    if (text::starts_with(arg, kAliasPrefix)) {
+    if (base::starts_with(arg, kAliasPrefix)) {
       alias_flag = arg.substr(kAliasPrefix.size());
       if (alias_flag->empty()) {
         cl.errors.push_back("--alias= needs a name");
@@ -96,7 +96,7 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
       }
       continue;
     }
-    if (text::starts_with(arg, kMoosPrefix)) {
+    if (base::starts_with(arg, kMoosPrefix)) {
       const auto eq = arg.find('=');
       const std::string name = arg.substr(2, eq == std::string::npos ? std::string::npos : eq - 2);
       std::string value = eq == std::string::npos ? std::string() : arg.substr(eq + 1);
@@ -117,7 +117,7 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
     }
     if (!arg.empty() && arg[0] == '-') {
       const auto eq = arg.find('=');
-      if (text::starts_with(arg, "--") && eq != std::string::npos && eq > 2)
+      if (base::starts_with(arg, "--") && eq != std::string::npos && eq > 2)
         cl.substitutions[arg.substr(2, eq - 2)] = arg.substr(eq + 1);
       cl.unhandled.push_back(arg);
       continue;

@@ -22,7 +22,7 @@
 #include <sstream>
 #include <utility>
 
-#include "moos/text.hpp"
+#include "base/text.hpp"
 
 namespace moos {
 
@@ -59,8 +59,8 @@ std::optional<std::string> read_whole_file(const std::string& path) {
 /// Removes the comment and the first pair of double quotes (libMOOS verbatim quoting, spec 6.1).
 /// A `//` inside that pair does not start a comment.
 std::string strip_comment_and_quotes(std::string_view raw) {
-  const std::string_view lead_trimmed = text::trim(raw);
-  if (text::starts_with(lead_trimmed, "//")) return {};
+  const std::string_view lead_trimmed = base::trim(raw);
+  if (base::starts_with(lead_trimmed, "//")) return {};
   const auto open_quote = raw.find('"');
   const auto close_quote =
       open_quote == std::string_view::npos ? std::string_view::npos : raw.find('"', open_quote + 1);
@@ -98,7 +98,7 @@ class Reader {
   }
 
   void expand(std::string_view content, const std::string& file_name, int depth) {
-    if (text::starts_with(content, kUtf8Bom)) content.remove_prefix(kUtf8Bom.size());
+    if (base::starts_with(content, kUtf8Bom)) content.remove_prefix(kUtf8Bom.size());
     int line_no = 0;
     std::size_t start = 0;
     while (start <= content.size()) {
@@ -115,18 +115,18 @@ class Reader {
   // ---- pass 2 and 3 -------------------------------------------------------------------------
   void apply_defines() {
     for (auto& sl : lines_) {
-      const std::string_view t = text::trim(sl.code);
-      if (!text::starts_with(t, kDefineMarker)) continue;
+      const std::string_view t = base::trim(sl.code);
+      if (!base::starts_with(t, kDefineMarker)) continue;
       const std::string_view body = t.substr(kDefineMarker.size());
       const auto eq = body.find('=');
       if (eq == std::string_view::npos) {
         error(sl.file, sl.line, "define: line has no '=': " + std::string(t));
       } else {
-        const std::string name = text::remove_blanks(body.substr(0, eq));
+        const std::string name = base::remove_blanks(body.substr(0, eq));
         if (name.empty())
           error(sl.file, sl.line, "define: line has no name: " + std::string(t));
         else
-          defines_[name] = text::remove_blanks(body.substr(eq + 1));  // later duplicate overrides
+          defines_[name] = base::remove_blanks(body.substr(eq + 1));  // later duplicate overrides
       }
       sl.code.clear();  // a define line is not itself a parameter (spec 6.1)
     }
@@ -140,7 +140,7 @@ class Reader {
     ProcessBlock current;
     auto finish_block = [&]() {
       const auto dup = std::find_if(blocks.begin(), blocks.end(), [&](const ProcessBlock& b) {
-        return text::iequals(b.app_name, current.app_name);
+        return base::iequals(b.app_name, current.app_name);
       });
       if (dup != blocks.end())
         error(current.file, current.line,
@@ -152,12 +152,12 @@ class Reader {
     };
 
     for (const auto& sl : lines_) {
-      const std::string_view t = text::trim(sl.code);
+      const std::string_view t = base::trim(sl.code);
       if (t.empty()) continue;
 
       if (state == State::kExpectBrace) {
         if (t.front() == '{') {
-          if (!text::trim(t.substr(1)).empty())
+          if (!base::trim(t.substr(1)).empty())
             error(sl.file, sl.line, "text after '{' is ignored: " + std::string(t),
                   current.app_name);
           state = State::kInBlock;
@@ -191,7 +191,7 @@ class Reader {
 
       const std::string block_name = state == State::kInBlock ? current.app_name : std::string();
       if (state == State::kInBlock && t.front() == '}') {
-        if (!text::trim(t.substr(1)).empty())
+        if (!base::trim(t.substr(1)).empty())
           error(sl.file, sl.line, "text after '}' is ignored: " + std::string(t), block_name);
         finish_block();
         state = State::kTop;
@@ -208,8 +208,8 @@ class Reader {
         continue;
       }
       ConfigLine cl;
-      cl.key = std::string(text::trim(t.substr(0, eq)));
-      cl.value = std::string(text::trim(t.substr(eq + 1)));
+      cl.key = std::string(base::trim(t.substr(0, eq)));
+      cl.value = std::string(base::trim(t.substr(eq + 1)));
       cl.file = sl.file;
       cl.line = sl.line;
       if (cl.key.empty()) {
@@ -241,9 +241,9 @@ class Reader {
   /// The one-line form `ProcessConfig = X {` is reported (libMOOS does not read it) and is not
   /// a header; it stays an ordinary line, as for libMOOS.
   bool parse_header(std::string_view t, std::string& name, const SourceLine& sl) {
-    const std::string compact = text::remove_blanks(t);
+    const std::string compact = base::remove_blanks(t);
     if (compact.size() <= kHeaderPrefix.size() ||
-        !text::iequals(std::string_view(compact).substr(0, kHeaderPrefix.size()), kHeaderPrefix))
+        !base::iequals(std::string_view(compact).substr(0, kHeaderPrefix.size()), kHeaderPrefix))
       return false;
     name = compact.substr(kHeaderPrefix.size());
     if (name.back() == '{') {
@@ -260,7 +260,7 @@ class Reader {
   void expand_line(std::string_view raw, const std::string& file_name, int line_no, int depth) {
     std::string code = strip_comment_and_quotes(raw);
     code = substitute_parens(code, file_name, line_no);
-    const std::string_view t = text::trim(code);
+    const std::string_view t = base::trim(code);
     if (is_directive(t, kIncludeDirective)) {
       include(t.substr(kIncludeDirective.size()), file_name, line_no, depth);
       return;
@@ -277,12 +277,12 @@ class Reader {
   }
 
   static bool is_directive(std::string_view t, std::string_view directive) {
-    if (!text::starts_with(t, directive)) return false;
+    if (!base::starts_with(t, directive)) return false;
     return t.size() == directive.size() || t[directive.size()] == ' ' || t[directive.size()] == '\t';
   }
 
   void include(std::string_view rest, const std::string& file_name, int line_no, int depth) {
-    rest = text::trim(rest);
+    rest = base::trim(rest);
     std::string target;
     std::string_view after;
     if (!rest.empty() && rest.front() == '<') {
@@ -294,7 +294,7 @@ class Reader {
       target = std::string(rest.substr(1, close - 1));
       after = rest.substr(close + 1);
     } else {
-      const auto blank = rest.find_first_of(text::kBlanks);
+      const auto blank = rest.find_first_of(base::kBlanks);
       target = std::string(rest.substr(0, blank));
       after = blank == std::string_view::npos ? std::string_view() : rest.substr(blank);
     }
@@ -302,9 +302,9 @@ class Reader {
       error(file_name, line_no, "#include names no file");
       return;
     }
-    if (!text::trim(after).empty()) {
+    if (!base::trim(after).empty()) {
       error(file_name, line_no,
-            "unexpected text after the #include path: " + std::string(text::trim(after)));
+            "unexpected text after the #include path: " + std::string(base::trim(after)));
       return;
     }
     fs::path path(target);
@@ -406,7 +406,7 @@ std::string MissionError::to_string() const {
 }
 
 bool MissionError::concerns(std::string_view app_name) const {
-  return block.empty() || text::iequals(block, app_name);
+  return block.empty() || base::iequals(block, app_name);
 }
 
 std::optional<MissionFile> MissionFile::load(const std::string& path, const MissionOptions& options,
@@ -431,27 +431,27 @@ MissionFile MissionFile::parse(std::string_view text, const std::string& file_na
 }
 
 const ConfigLine* MissionFile::global_line(std::string_view key) const {
-  const std::string wanted = text::remove_blanks(key);
+  const std::string wanted = base::remove_blanks(key);
   for (const auto& line : globals_)
-    if (text::iequals(text::remove_blanks(line.key), wanted)) return &line;
+    if (base::iequals(base::remove_blanks(line.key), wanted)) return &line;
   return nullptr;
 }
 
 std::optional<std::string> MissionFile::global(std::string_view key) const {
   const ConfigLine* line = global_line(key);
   if (!line) return std::nullopt;
-  return text::remove_blanks(line->value);
+  return base::remove_blanks(line->value);
 }
 
 std::optional<double> MissionFile::global_double(std::string_view key) const {
   const auto value = global(key);
   if (!value) return std::nullopt;
-  return text::parse_number(*value);
+  return base::parse_number(*value);
 }
 
 const ProcessBlock* MissionFile::block(std::string_view app_name) const {
   for (const auto& b : blocks_)
-    if (text::iequals(b.app_name, app_name)) return &b;
+    if (base::iequals(b.app_name, app_name)) return &b;
   return nullptr;
 }
 

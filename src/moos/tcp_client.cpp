@@ -25,7 +25,7 @@
 #include <cstring>
 
 #include "moos/limits.hpp"
-#include "moos/text.hpp"
+#include "base/text.hpp"
 
 namespace moos {
 
@@ -75,18 +75,18 @@ std::string own_hostname(const std::string& configured) {
 
 /// The value of `token` in a comma-separated key=value list, key compared case-insensitively.
 std::string token_value(std::string_view list, std::string_view token) {
-  for (std::string_view item : text::split(list, ',')) {
+  for (std::string_view item : base::split(list, ',')) {
     const auto eq = item.find('=');
     if (eq == std::string_view::npos) continue;
-    if (text::iequals(text::trim(item.substr(0, eq)), token))
-      return std::string(text::trim(item.substr(eq + 1)));
+    if (base::iequals(base::trim(item.substr(0, eq)), token))
+      return std::string(base::trim(item.substr(eq + 1)));
   }
   return {};
 }
 
 std::optional<in_addr> resolve_ipv4(const std::string& host, std::string* error) {
   in_addr addr{};
-  if (text::iequals(host, "localhost")) {
+  if (base::iequals(host, "localhost")) {
     addr.s_addr = htonl(INADDR_LOOPBACK);
     return addr;
   }
@@ -120,7 +120,7 @@ bool TcpClient::start() {
   if (options_.name.empty()) problem = "the client name is empty";
   else if (options_.port < 1 || options_.port > kMaxPort) problem = "port " + std::to_string(options_.port) + " is outside 1..65535";
   else if (!is_valid_time_warp(options_.time_warp))
-    problem = "time warp " + text::format_g(options_.time_warp) + " is outside (0, 400]";
+    problem = "time warp " + base::format_g(options_.time_warp) + " is outside (0, 400]";
   {
     std::lock_guard<std::mutex> lock(mutex_);
     if (problem.empty() && state_ != ConnectionState::kNotStarted) problem = "already started";
@@ -352,7 +352,7 @@ bool TcpClient::handshake() {
     const double left = deadline - steady_now_s();
     if (left <= 0) {
       set_error("handshake: no reply from the server within " +
-                text::format_g(options_.handshake_timeout_real_s) + " s");
+                base::format_g(options_.handshake_timeout_real_s) + " s");
       return false;
     }
     pollfd p[2] = {{socket_, static_cast<short>(POLLIN | (write_buffer_.empty() ? 0 : POLLOUT)), 0},
@@ -404,7 +404,7 @@ bool TcpClient::handshake() {
   {
     std::lock_guard<std::mutex> lock(mutex_);
     community_ = first.community;
-    server_async_ = text::iequals(first.sval, kAsynchronousKey);
+    server_async_ = base::iequals(first.sval, kAsynchronousKey);
     server_hostname_ = db_host;
     state_ = ConnectionState::kConnected;
     ++connections_;

@@ -4,7 +4,7 @@
 
 #include "moos/wildcard.hpp"
 
-#include "moos/text.hpp"
+#include "base/text.hpp"
 
 namespace moos {
 
@@ -37,7 +37,7 @@ bool has_wildcards(std::string_view pattern) {
 
 std::string format_wildcard_spec(const WildcardSpec& spec) {
   return "AppPattern=" + spec.app_pattern + ",VarPattern=" + spec.var_pattern +
-         ",Interval=" + text::format_g(spec.interval_s);
+         ",Interval=" + base::format_g(spec.interval_s);
 }
 
 WildcardSpec parse_wildcard_spec(std::string_view input, std::string* problem) {
@@ -65,7 +65,7 @@ WildcardSpec parse_wildcard_spec(std::string_view input, std::string* problem) {
     } else if (key == "VarPattern") {
       spec.var_pattern = std::string(value);
     } else if (key == "Interval") {
-      const auto interval = text::parse_number(value);
+      const auto interval = base::parse_number(value);
       if (!interval || *interval < 0.0)
         note("Interval '" + std::string(value) + "' is not a number >= 0");
       spec.interval_s = interval && *interval > 0 ? *interval : 0.0;

@@ -97,7 +97,7 @@ std::vector<std::string> grid(Scene& s, const std::string& extra_every_third = {
   for (double x = 0; x <= 200; x += 10) {
     for (double y : {-15.0, -5.0, 5.0, 15.0}) {
       const std::string label = "g" + std::to_string(n);
-      s.block += "hazard = x=" + fmt(x) + ",y=" + fmt(y) + ",label=" + label + ",type=" +
+      s.block += "hazard = x=" + base::fmt(x) + ",y=" + base::fmt(y) + ",label=" + label + ",type=" +
                  (n % 3 ? "benign" : "hazard") + (n % 3 == 2 ? extra_every_third : "") + "\n";
       labels.push_back(label);
       ++n;
@@ -297,8 +297,8 @@ TEST(EffectSwitches, SweepingAddsExactlyTheObjectsPassedOverBetweenReports) {
   for (int i = 0; i < 20; ++i) {
     between.push_back("b" + std::to_string(i));
     at_pose.push_back("a" + std::to_string(i));
-    s.block += "hazard = x=" + fmt(5 + 10 * i) + ",y=3,label=" + between.back() + ",type=hazard\n";
-    s.block += "hazard = x=" + fmt(10 * i + 1) + ",y=-3,label=" + at_pose.back() + ",type=benign\n";
+    s.block += "hazard = x=" + base::fmt(5 + 10 * i) + ",y=3,label=" + between.back() + ",type=hazard\n";
+    s.block += "hazard = x=" + base::fmt(10 * i + 1) + ",y=-3,label=" + at_pose.back() + ",type=benign\n";
   }
   drive(s, 0, -10, 210, 2.0, 5.0);
   finish(s, {});
@@ -329,7 +329,7 @@ TEST(EffectSwitches, GeodesyPlacesLatLonReportsWhereTheEquivalentXYReportsAre) {
     const NodeReport r = *parse_node_report(m.value).value;
     double lat, lon, h;
     lc.Reverse(r.x_m, r.y_m, 0.0, lat, lon, h);
-    m.value = "NAME=v,LAT=" + fmt(lat, 10) + ",LON=" + fmt(lon, 10) + ",SPD=1.5,HDG=90";
+    m.value = "NAME=v,LAT=" + base::fmt(lat, 10) + ",LON=" + base::fmt(lon, 10) + ",SPD=1.5,HDG=90";
   }
   const SceneRun a = run(xy, ""), b = run(ll, "");
   EXPECT_EQ(a.decisions, b.decisions);

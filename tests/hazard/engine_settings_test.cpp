@@ -99,7 +99,7 @@ TEST(EngineSettings, PdOnlyUpdatesAreNeverRateLimited_D11) {
   Driver d(kJakeOriginal);
   d.mail("UHZ_CONFIG_REQUEST", "vname=archie,width=50,pd=0.9");
   for (double pd : {0.1, 0.2, 0.3}) {
-    const Outputs out = d.mail("UHZ_CONFIG_REQUEST", "vname=archie,pd=" + fmt(pd));
+    const Outputs out = d.mail("UHZ_CONFIG_REQUEST", "vname=archie,pd=" + base::fmt(pd));
     ASSERT_EQ(values_of(out, "UHZ_CONFIG_ACK").size(), 1u);
     EXPECT_EQ(d.vehicle("archie").setting->pd, pd);
   }

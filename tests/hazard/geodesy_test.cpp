@@ -126,7 +126,7 @@ EngineSetup with_origin(const std::string& block, MissionOrigin origin) {
 }
 
 MissionOrigin origin_of(double lat, double lon) {
-  return MissionOrigin{lat, lon, fmt(lat, 8), fmt(lon, 8)};
+  return MissionOrigin{lat, lon, base::fmt(lat, 8), base::fmt(lon, 8)};
 }
 
 TEST(Geodesy, LatLonOnlyNodeReportIsPlacedAroundTheMissionOrigin) {
@@ -138,10 +138,10 @@ TEST(Geodesy, LatLonOnlyNodeReportIsPlacedAroundTheMissionOrigin) {
   double lat, lon;
   geodesic_point(120.0, 30.0, lat, lon);
   const Outputs out = engine.on_mail(
-      "NODE_REPORT", "NAME=v,LAT=" + fmt(lat, 10) + ",LON=" + fmt(lon, 10) + ",SPD=1,HDG=10", 0);
+      "NODE_REPORT", "NAME=v,LAT=" + base::fmt(lat, 10) + ",LON=" + base::fmt(lon, 10) + ",SPD=1,HDG=10", 0);
   EXPECT_TRUE(out.run_warnings.empty());
   const glm::dvec2 expected = LocalProjection(kOrigin, GeodesyMode::kEnu).to_local(
-      *parse_number(fmt(lat, 10)), *parse_number(fmt(lon, 10)));
+      *base::parse_number(base::fmt(lat, 10)), *base::parse_number(base::fmt(lon, 10)));
   const Pose& pose = *engine.vehicle(*engine.find_vehicle("v")).pose;
   EXPECT_EQ(pose.position_m, expected);
   EXPECT_NEAR(pose.position_m.x, 60.0, 0.01);  // 120 m at azimuth 30
@@ -202,7 +202,7 @@ TEST(Geodesy, WithoutAUsableOriginLatLonOnlyInputIsRejectedWithTheReason_T9) {
 TEST(Geodesy, LatLonHazardLinesArePlacedAtLoadTimeWithTheBlocksProjection) {
   double lat, lon;
   geodesic_point(500.0, 90.0, lat, lon);
-  const std::string line = "hazard = lat=" + fmt(lat, 10) + ",lon=" + fmt(lon, 10) +
+  const std::string line = "hazard = lat=" + base::fmt(lat, 10) + ",lon=" + base::fmt(lon, 10) +
                            ",label=g,type=hazard\n";
   for (const char* mode : {"tangent", "enu", "azimuthal", "utm"}) {
     // The geodesy line comes after the hazard line: the whole block's value applies.
@@ -211,7 +211,7 @@ TEST(Geodesy, LatLonHazardLinesArePlacedAtLoadTimeWithTheBlocksProjection) {
     ASSERT_EQ(s.field.size(), 1u) << mode;
     const glm::dvec2 expected =
         LocalProjection(kOrigin, *parse_geodesy_mode(mode))
-            .to_local(*parse_number(fmt(lat, 10)), *parse_number(fmt(lon, 10)));
+            .to_local(*base::parse_number(base::fmt(lat, 10)), *base::parse_number(base::fmt(lon, 10)));
     EXPECT_EQ(s.field.position(0), expected) << mode;
     EXPECT_NEAR(s.field.position(0).x, 500.0, mode == std::string("utm") ? 0.5 : 0.01) << mode;
   }

@@ -64,17 +64,17 @@ TEST(NumericsAngles, AspectDifferenceAcrossTheSeamIsTheShortAngle_Manual7) {
 
 TEST(NumericsAngles, HugeAndNegativeHeadingsNormaliseExactlyInOneStep_N3) {
   // fmod is exact: 1e6 = 2777 * 360 + 280, and 1e15 = 10^15 mod 360 = 280 as well.
-  EXPECT_EQ(norm360(-720.0), 0.0);
-  EXPECT_FALSE(std::signbit(norm360(-720.0)));  // +0, not -0
-  EXPECT_EQ(norm360(1e6), 280.0);
-  EXPECT_EQ(norm360(1e15), 280.0);
-  EXPECT_EQ(norm360(-1e15), 80.0);
-  EXPECT_EQ(norm360(-1e-17), 0.0);  // -1e-17 + 360 rounds to 360: mapped to 0
-  const double far = norm360(1e300);  // above 2^53 subtracting 360 no longer changes the value:
+  EXPECT_EQ(base::norm360(-720.0), 0.0);
+  EXPECT_FALSE(std::signbit(base::norm360(-720.0)));  // +0, not -0
+  EXPECT_EQ(base::norm360(1e6), 280.0);
+  EXPECT_EQ(base::norm360(1e15), 280.0);
+  EXPECT_EQ(base::norm360(-1e15), 80.0);
+  EXPECT_EQ(base::norm360(-1e-17), 0.0);  // -1e-17 + 360 rounds to 360: mapped to 0
+  const double far = base::norm360(1e300);  // above 2^53 subtracting 360 no longer changes the value:
   EXPECT_GE(far, 0.0);                // the original's loop never ended there
   EXPECT_LT(far, 360.0);
-  EXPECT_EQ(norm180(-180.0), 180.0);
-  EXPECT_EQ(norm180(540.0), 180.0);
+  EXPECT_EQ(base::norm180(-180.0), 180.0);
+  EXPECT_EQ(base::norm180(540.0), 180.0);
 }
 
 TEST(NumericsAngles, HugeHeadingsInNodeReportsAreNormalisedAtParseTime_N3) {

@@ -151,8 +151,8 @@ SceneRun run_scene(glm::dvec2 shift, const std::string& extra) {
     for (double x : {-30.0, -10.0, 10.0, 30.0}) offsets.emplace_back(x, y);
   }
   for (std::size_t i = 0; i < offsets.size(); ++i) {
-    block += "hazard = x=" + fmt(shift.x + offsets[i].x, 2) + ",y=" +
-             fmt(shift.y + offsets[i].y, 2) + ",label=o" + std::to_string(i) + ",type=" +
+    block += "hazard = x=" + base::fmt(shift.x + offsets[i].x, 2) + ",y=" +
+             base::fmt(shift.y + offsets[i].y, 2) + ",label=o" + std::to_string(i) + ",type=" +
              (i % 2 ? "hazard" : "benign") + "\n";
   }
   Driver d(block);
@@ -176,7 +176,7 @@ SceneRun run_scene(glm::dvec2 shift, const std::string& extra) {
 
 // The exact decimal text of shift + offset, from the report text at the origin (2 decimals).
 std::string shifted_text(const std::string& origin_text, double shift) {
-  const long long cents = std::llround(*parse_number(origin_text) * 100) +
+  const long long cents = std::llround(*base::parse_number(origin_text) * 100) +
                           std::llround(shift * 100);
   std::string out = cents < 0 ? "-" : "";
   const long long a = std::llabs(cents);

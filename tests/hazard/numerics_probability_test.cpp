@@ -121,7 +121,7 @@ TEST(NumericsProbability, DetectionAtExactlyTheThresholdFailsAndOneStepBelowSucc
   // boundary is exact: u < p.
   for (const auto& [text, k] : std::vector<std::pair<const char*, std::uint64_t>>{
            {"0.6561", 6561}, {"0.9", 9000}, {"0.25", 2500}, {"0.0001", 1}, {"0.9999", 9999}}) {
-    const double p = *parse_number(text);
+    const double p = *base::parse_number(text);
     EXPECT_FALSE(detection_succeeds(detection_u(k), p)) << text;
     EXPECT_TRUE(detection_succeeds(detection_u(k - 1), p)) << text;
     EXPECT_EQ(detecting_steps(p), static_cast<int>(k)) << text;
@@ -135,7 +135,7 @@ TEST(NumericsProbability, DetectionAtExactlyTheThresholdFailsAndOneStepBelowSucc
 TEST(NumericsProbability, ClassificationAtExactlyTheThresholdSucceedsAndOneStepAboveFails_N7) {
   for (const auto& [text, k] : std::vector<std::pair<const char*, std::uint64_t>>{
            {"0.5", 5000}, {"0.8", 8000}, {"1", 10000}, {"0.0001", 1}}) {
-    const double p = *parse_number(text);
+    const double p = *base::parse_number(text);
     EXPECT_TRUE(classification_correct(static_cast<double>(k) / kDieResolution, p)) << text;
     if (k < 10000) {
       EXPECT_FALSE(classification_correct(static_cast<double>(k + 1) / kDieResolution, p)) << text;

@@ -13,7 +13,7 @@
 #include "hazard/config.hpp"
 #include "hazard/engine.hpp"
 #include "hazard/messages/node_report.hpp"
-#include "hazard/text.hpp"
+#include "base/text.hpp"
 
 namespace hazard::testing {
 
@@ -22,13 +22,13 @@ namespace hazard::testing {
 inline std::vector<ConfigEntry> entries(std::string_view block) {
   std::vector<ConfigEntry> out;
   int line = 0;
-  for (std::string_view raw : split_trimmed(block, '\n')) {
+  for (std::string_view raw : base::split_trimmed(block, '\n')) {
     ++line;
     std::string_view text = raw.substr(0, raw.find("//"));
-    text = trim(text);
+    text = base::trim(text);
     const auto eq = text.find('=');
     if (text.empty() || eq == std::string_view::npos) continue;
-    out.push_back({std::string(trim(text.substr(0, eq))), std::string(trim(text.substr(eq + 1))),
+    out.push_back({std::string(base::trim(text.substr(0, eq))), std::string(base::trim(text.substr(eq + 1))),
                    "test.moos", line});
   }
   return out;

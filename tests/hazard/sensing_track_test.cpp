@@ -126,7 +126,7 @@ TEST(SensingTrack, ConsecutivePiecesShareTheirJunctionSoTurnsMakeNoPhantomPasses
   for (int k = 0; k <= 900; ++k) {  // 90 deg
     const double th = k * 0.1 * 2.0 / radius;
     track.push_back({{radius * std::sin(th), radius - radius * std::cos(th)},
-                     norm360(90.0 - th * 180 / 3.14159265358979323846), true});
+                     base::norm360(90.0 - th * 180 / 3.14159265358979323846), true});
   }
   const auto pieces = track_pieces(track, false, TrackMode::kSweep, 0, w, l);
   ASSERT_EQ(pieces.size(), 900u);
@@ -149,7 +149,7 @@ TEST(SensingTrack, ConsecutivePiecesShareTheirJunctionSoTurnsMakeNoPhantomPasses
 bool dense_covers(const TrackPose& a, const TrackPose& b, double w, double l, glm::dvec2 p,
                   double margin) {
   constexpr int kSamples = 4000;  // consecutive poses 5 mm apart at most (below)
-  const double turn = norm180(b.heading_deg - a.heading_deg);
+  const double turn = base::norm180(b.heading_deg - a.heading_deg);
   for (int j = 0; j <= kSamples; ++j) {
     const double t = static_cast<double>(j) / kSamples;
     const Swath s(a.position_m + (b.position_m - a.position_m) * t,
@@ -244,7 +244,7 @@ Mower mower() {
       const double cx = east ? kLeg : 0.0, cy = 2 * kRadius * lane + kRadius;
       x = cx + (east ? kRadius * std::sin(a) : -kRadius * std::sin(a));
       y = cy - kRadius * std::cos(a);
-      heading = norm360(east ? 90 - a * 180 / kPi : 270 + a * 180 / kPi);
+      heading = base::norm360(east ? 90 - a * 180 / kPi : 270 + a * 180 / kPi);
     }
     m.mail.push_back({t, "NODE_REPORT", testing::node_report("v", x, y, heading, kSpeed)});
     if (k % 1000 == 0) m.mail.push_back({t, "UHZ_SENSOR_REQUEST", "vname=v"});
@@ -258,7 +258,7 @@ std::vector<std::string> replay_mower(const Mower& m, const std::string& mode, d
   std::string block = quiet_block("sensor_config = width=10, exp=2, pclass=0.9\n"
                                   "swath_length = 1\n" + mode);
   for (int i = 0; i < 300; ++i) {
-    block += "hazard = x=" + fmt(x(rng), 2) + ",y=" + fmt(y(rng), 2) + ",label=o" +
+    block += "hazard = x=" + base::fmt(x(rng), 2) + ",y=" + base::fmt(y(rng), 2) + ",label=o" +
              std::to_string(i) + ",type=hazard\n";
   }
   Engine engine(testing::setup_from(block), SeedChoice{3, SeedSource::kCommandLine});

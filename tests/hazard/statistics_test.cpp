@@ -22,7 +22,7 @@ std::string category_field(int per_category, const std::map<char, std::string>& 
   int n = 0;
   for (const auto& [letter, spec] : kinds) {
     for (int i = 0; i < per_category; ++i, ++n) {
-      out += "hazard = x=" + fmt(-40 + (n % 81)) + ",y=" + fmt(-40 + (n / 81) % 81) +
+      out += "hazard = x=" + base::fmt(-40 + (n % 81)) + ",y=" + base::fmt(-40 + (n / 81) % 81) +
              ",label=" + letter + std::to_string(i) + "," + spec + "\n";
     }
   }

@@ -5,7 +5,7 @@
 
 #include "hazard/messages/view_polygon.hpp"
 #include "hazard/swath.hpp"
-#include "hazard/text.hpp"
+#include "base/text.hpp"
 
 namespace hazard {
 namespace {

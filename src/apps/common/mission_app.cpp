@@ -6,10 +6,10 @@
 #include <iostream>
 
 #include "app_support.hpp"
-#include "hazard/text.hpp"
-#include "hazard/version.hpp"
+#include "base/text.hpp"
+#include "base/version.hpp"
 #include "moos/mission.hpp"
-#include "moos/text.hpp"
+#include "base/text.hpp"
 
 namespace mission_app {
 
@@ -83,7 +83,7 @@ std::string help_text(const std::string& app_name, const std::string& descriptio
 
 std::string example_body(double app_tick_hz, const std::vector<ParameterSection>& sections,
                          const std::map<std::string, std::string>& examples) {
-  const std::string tick = moos::text::format_g(app_tick_hz);
+  const std::string tick = base::format_g(app_tick_hz);
   std::string out = "  AppTick   = " + tick + "\n  CommsTick = " + tick + "\n";
   for (const ParameterSection& s : sections)
     out += "\n  // " + s.title + "\n" + parameter_lines(*s.params, examples);
@@ -135,7 +135,7 @@ std::string interface_text(const std::string& app_name,
 }
 
 std::vector<InterfaceVariable> framework_publications(const std::string& app_name) {
-  const std::string upper = moos::text::to_upper(app_name);
+  const std::string upper = base::to_upper(app_name);
   return {
       {"APPCAST", "proc=" + app_name + "!@#iter=12!@#node=jake!@#...",
        "the AppCast report (the terminal report's content), while requested (APPCAST_REQ)"},
@@ -146,7 +146,7 @@ std::vector<InterfaceVariable> framework_publications(const std::string& app_nam
 }
 
 std::string version_text(const std::string& app_name) {
-  return app_name + " " + std::string(hazard::release_version()) + " (HazardSensor)\n";
+  return app_name + " " + std::string(base::release_version()) + " (HazardSensor)\n";
 }
 
 // ---- the application base ----------------------------------------------------------------
@@ -166,7 +166,7 @@ moos::AppTraits mission_traits(const std::string& app_name, double app_tick_hz) 
 }
 
 std::string bool_param(const std::string& key, const std::string& value, bool& field) {
-  const auto b = hazard::parse_bool(value);
+  const auto b = base::parse_bool(value);
   if (!b) return "parameter " + key + "='" + value + "' is not true or false";
   field = *b;
   return {};
@@ -188,7 +188,7 @@ bool is_name(std::string_view text) {
 }
 
 std::string mail_text(const moos::Message& m) {
-  return m.is_double() ? hazard::fmt(m.dval, kMailDoubleDecimals) : m.sval;
+  return m.is_double() ? base::fmt(m.dval, kMailDoubleDecimals) : m.sval;
 }
 
 bool MissionApp::send(const mission::Posting& p) {

@@ -13,7 +13,7 @@
 #include <string>
 #include <string_view>
 
-#include "hazard/text.hpp"
+#include "base/text.hpp"
 
 namespace usim_survey_vehicle {
 
@@ -21,7 +21,7 @@ inline constexpr const char* kSurveyRouteVar = "SURVEY_ROUTE";
 
 /// "SURVEY_ROUTE_" + upper-cased vehicle name.
 inline std::string survey_route_variable_for(std::string_view vname) {
-  return std::string(kSurveyRouteVar) + "_" + hazard::to_upper(vname);
+  return std::string(kSurveyRouteVar) + "_" + base::to_upper(vname);
 }
 
 }  // namespace usim_survey_vehicle

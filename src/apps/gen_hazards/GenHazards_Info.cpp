@@ -2,7 +2,7 @@
 
 #include <sstream>
 
-#include "hazard/version.hpp"
+#include "base/version.hpp"
 #include "options.hpp"
 
 namespace gen_hazards {
@@ -74,7 +74,7 @@ std::string help_text() {
 }
 
 std::string version_text() {
-  return "gen_hazards " + std::string(hazard::release_version()) + " (HazardSensor)\n";
+  return "gen_hazards " + std::string(base::release_version()) + " (HazardSensor)\n";
 }
 
 }  // namespace gen_hazards

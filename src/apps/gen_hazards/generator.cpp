@@ -5,7 +5,7 @@
 #include <limits>
 
 #include "hazard/messages/hazard_line.hpp"
-#include "hazard/text.hpp"
+#include "base/text.hpp"
 #include "mission/random.hpp"
 
 namespace gen_hazards {
@@ -139,8 +139,8 @@ std::optional<GenerationError> check_fill(const Region& region, double min_fill_
   const double fill = region.polygon.area_m2() / (size.x * size.y);
   if (fill >= min_fill_fraction) return std::nullopt;  // false for NaN (overflowing sizes) too
   return GenerationError{"'" + region.argument + "': the polygon covers only " +
-                         hazard::fmt(fill, 6) + " of its bounding box (at least " +
-                         hazard::fmt(min_fill_fraction, 6) +
+                         base::fmt(fill, 6) + " of its bounding box (at least " +
+                         base::fmt(min_fill_fraction, 6) +
                          " is needed to place points in it); it is too thin"};
 }
 
@@ -154,7 +154,7 @@ void draw_aspect(const AspectOptions& a, std::uint64_t seed, std::uint64_t objec
   const double u1 = draw(seed, object_index, kAspect, 0);
   const double u2 = draw(seed, object_index, kAspect, 1);
   const double u3 = draw(seed, object_index, kAspect, 2);
-  const long aspect = tenths(hazard::norm360(a.base_deg + u1 * a.range_deg)) % kFullTurnTenths;
+  const long aspect = tenths(base::norm360(a.base_deg + u1 * a.range_deg)) % kFullTurnTenths;
   const double min_deg = std::clamp(a.min_base_deg + u2 * a.min_range_deg, 0.0, kMaxAspectWindowDeg);
   const long min_t = tenths(min_deg);
   const double max_floor_deg =

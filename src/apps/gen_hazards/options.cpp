@@ -6,14 +6,14 @@
 #include <string_view>
 #include <variant>
 
-#include "hazard/text.hpp"
+#include "base/text.hpp"
 #include "moos/command_line.hpp"
 
 namespace gen_hazards {
 
 namespace {
 
-using hazard::fmt;
+using base::fmt;
 
 /// Characters a POSIX shell takes literally in a word; anything else gets quoted in the header.
 constexpr std::string_view kShellSafe =
@@ -33,7 +33,7 @@ struct ArgContext {
 };
 
 std::optional<double> number_in(const ArgContext& c, double lo, double hi) {
-  const auto v = hazard::parse_number(c.value);
+  const auto v = base::parse_number(c.value);
   if (!v) {
     c.fail(quoted(c.value) + " is not a number");
     return std::nullopt;
@@ -53,7 +53,7 @@ AspectOptions& aspect_of(CommandLine& cli) {
 /// ConvexPolygon::parse names the text already ("polygon '<text>': ..."); the argument is
 /// quoted in front of the message, so that prefix would only repeat it.
 std::string without_polygon_prefix(const std::string& message, std::string_view text) {
-  const std::string prefix = "polygon " + quoted(hazard::trim(text)) + ": ";
+  const std::string prefix = "polygon " + quoted(base::trim(text)) + ": ";
   if (message.rfind(prefix, 0) == 0) return message.substr(prefix.size());
   return message;
 }
@@ -74,17 +74,17 @@ void apply_objects(const ArgContext& c) {
     c.fail("expected N,TYPE (for example --objects=5,hazard)");
     return;
   }
-  const std::string_view count_text = hazard::trim(c.value.substr(0, comma));
-  const std::string_view type_text = hazard::trim(c.value.substr(comma + 1));
-  const auto count = hazard::parse_unsigned(count_text);
+  const std::string_view count_text = base::trim(c.value.substr(0, comma));
+  const std::string_view type_text = base::trim(c.value.substr(comma + 1));
+  const auto count = base::parse_unsigned(count_text);
   if (!count) {
     c.fail("the count " + quoted(count_text) + " is not a whole number >= 0");
     return;
   }
   hazard::ObjectType type;
-  if (hazard::iequals(type_text, "hazard")) {
+  if (base::iequals(type_text, "hazard")) {
     type = hazard::ObjectType::kHazard;
-  } else if (hazard::iequals(type_text, "benign")) {
+  } else if (base::iequals(type_text, "benign")) {
     type = hazard::ObjectType::kBenign;
   } else {
     c.fail("the type " + quoted(type_text) +
@@ -119,7 +119,7 @@ std::function<void(const ArgContext&)> window_option(void (*set)(AspectOptions&,
 }
 
 void apply_seed(const ArgContext& c) {
-  const auto v = hazard::parse_unsigned(c.value);
+  const auto v = base::parse_unsigned(c.value);
   if (!v) {
     c.fail("the seed must be a whole number in [0, " +
            std::to_string(std::numeric_limits<std::uint64_t>::max()) + "]");
@@ -129,7 +129,7 @@ void apply_seed(const ArgContext& c) {
 }
 
 void apply_output(const ArgContext& c) {
-  if (hazard::trim(c.value).empty()) {
+  if (base::trim(c.value).empty()) {
     c.fail("the file name is empty");
     return;
   }

@@ -8,7 +8,7 @@
 #include "app_support.hpp"
 #include "hazard/config.hpp"
 #include "hazard/engine.hpp"
-#include "hazard/text.hpp"
+#include "base/text.hpp"
 #include "moos/alog.hpp"
 #include "moos/mission.hpp"
 
@@ -17,7 +17,7 @@ namespace hazard_replay {
 namespace {
 
 namespace fs = std::filesystem;
-using hazard::fix;
+using base::fix;
 
 struct Input {
   std::vector<moos::AlogEntry> entries;  // time order
@@ -91,10 +91,10 @@ ParsedArgs parse_args(const std::vector<std::string>& args) {
       if (value.empty()) return fail("--alias needs a name: '" + a + "'");
       o.app_name = value;
     } else if (name == "--seed" && eq != std::string::npos) {
-      o.seed = hazard::parse_unsigned(value);
+      o.seed = base::parse_unsigned(value);
       if (!o.seed) return fail("--seed needs a whole number in [0, 2^64): '" + a + "'");
     } else if (name == "--until" && eq != std::string::npos) {
-      o.until_s = hazard::parse_number(value);
+      o.until_s = base::parse_number(value);
       if (!o.until_s) return fail("--until needs a finite number of seconds: '" + a + "'");
     } else if (name == "--output" && eq != std::string::npos) {
       if (value.empty()) return fail("--output needs a file name: '" + a + "'");
@@ -145,7 +145,7 @@ int run(const Options& options, std::ostream& out, std::ostream& err) {
   const double tick_hz = engine.config().app_tick_hz;
   const hazard::SeedChoice& seed = engine.seed();
   err << "hazard_replay: seed " << seed.seed << " (" << hazard::seed_source_name(seed.source)
-      << "), AppTick " << hazard::fmt(tick_hz) << " Hz\n";
+      << "), AppTick " << base::fmt(tick_hz) << " Hz\n";
 
   const auto& mail = input->entries;
   const double start_s = mail.empty() ? 0.0 : mail.front().time_s;

@@ -15,7 +15,7 @@
 #include "moos/alog.hpp"
 #include "moos/limits.hpp"
 #include "moos/tcp_client.hpp"
-#include "moos/text.hpp"
+#include "base/text.hpp"
 #include "moos/wildcard.hpp"
 
 namespace moos_cli {
@@ -25,9 +25,9 @@ namespace {
 /// How long poke waits for its posts to reach the socket, real seconds.
 constexpr double kFlushTimeout_s = 10.0;
 
-using moos::text::parse_integer;
-using moos::text::parse_number;
-using moos::text::starts_with;
+using base::parse_integer;
+using base::parse_number;
+using base::starts_with;
 
 std::string default_name() { return "moos-cli-" + std::to_string(::getpid()); }
 

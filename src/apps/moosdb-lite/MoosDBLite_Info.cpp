@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "hazard/version.hpp"
+#include "base/version.hpp"
 #include "options.hpp"
 
 namespace moosdb_lite {
@@ -49,7 +49,7 @@ std::string help_text() {
 }
 
 std::string version_text() {
-  return "moosdb-lite " + std::string(hazard::release_version()) + " (MOOS v10 protocol)\n";
+  return "moosdb-lite " + std::string(base::release_version()) + " (MOOS v10 protocol)\n";
 }
 
 }  // namespace moosdb_lite

@@ -26,7 +26,7 @@
 #include <cmath>
 #include <utility>
 
-#include "moos/text.hpp"
+#include "base/text.hpp"
 
 namespace moosdb_lite {
 
@@ -100,7 +100,7 @@ bool Database::connect(ClientId id, const std::vector<Message>& identification,
 
   Client client;
   client.name = ident->sval;
-  client.async = moos::text::iequals(ident->key, moos::kAsynchronousKey);
+  client.async = base::iequals(ident->key, moos::kAsynchronousKey);
   client_by_name_[client.name] = id;
   const std::string name = client.name;
   clients_.emplace(id, std::move(client));

@@ -13,7 +13,7 @@
 #include <cstdio>
 #include <utility>
 
-#include "moos/text.hpp"
+#include "base/text.hpp"
 
 namespace moosdb_lite {
 
@@ -167,14 +167,14 @@ void Hub::tick(double now_real_s) {
     const double in_state_s = now_real_s - conn.state_since_real_s;
     if (conn.state == State::kBanner && in_state_s > config_.banner_timeout_s) {
       expired.emplace_back(id, "no protocol banner within " +
-                                   moos::text::format_g(config_.banner_timeout_s) + " s");
+                                   base::format_g(config_.banner_timeout_s) + " s");
     } else if (conn.state == State::kIdent && in_state_s > config_.handshake_timeout_s) {
       expired.emplace_back(id, "no identification packet within " +
-                                   moos::text::format_g(config_.handshake_timeout_s) + " s");
+                                   base::format_g(config_.handshake_timeout_s) + " s");
     } else if (conn.state == State::kActive && config_.client_timeout_s &&
                now_real_s - conn.last_packet_real_s > *config_.client_timeout_s) {
       expired.emplace_back(id, "no packet for more than " +
-                                   moos::text::format_g(*config_.client_timeout_s) +
+                                   base::format_g(*config_.client_timeout_s) +
                                    " s (ClientTimeout)");
     }
   }

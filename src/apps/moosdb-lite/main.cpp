@@ -18,7 +18,7 @@
 #include "hub.hpp"
 #include "moos/clock.hpp"
 #include "moos/mission.hpp"
-#include "moos/text.hpp"
+#include "base/text.hpp"
 #include "options.hpp"
 
 namespace {
@@ -155,7 +155,7 @@ int main(int argc, char** argv) {
     return kExitCannotStart;
   }
   log_line("community \"" + options.community + "\" listening on " + options.bind_address + ":" +
-           std::to_string(loop.bound_port()) + ", time warp " + moos::text::format_g(options.time_warp) +
+           std::to_string(loop.bound_port()) + ", time warp " + base::format_g(options.time_warp) +
            (options.mission_file ? ", mission " + *options.mission_file : std::string()));
 
   loop.run(g_wake_pipe[0], g_stop_requested, [&alog] { alog.flush(); });

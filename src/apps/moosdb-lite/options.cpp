@@ -12,7 +12,7 @@
 #include "moos/codec.hpp"
 #include "moos/limits.hpp"
 #include "moos/message.hpp"
-#include "moos/text.hpp"
+#include "base/text.hpp"
 
 namespace moosdb_lite {
 
@@ -53,20 +53,20 @@ const std::vector<IgnoredSwitch>& ignored_globals() {
 }
 
 std::optional<int> parse_port(std::string_view text) {
-  const auto value = moos::text::parse_number(text);
+  const auto value = base::parse_number(text);
   if (!value || *value != std::floor(*value) || *value < 0 || *value > moos::kMaxPort)
     return std::nullopt;
   return static_cast<int>(*value);
 }
 
 std::optional<double> parse_non_negative(std::string_view text) {
-  const auto value = moos::text::parse_number(text);
+  const auto value = base::parse_number(text);
   if (!value || *value < 0.0) return std::nullopt;
   return value;
 }
 
 std::optional<double> parse_positive(std::string_view text) {
-  const auto value = moos::text::parse_number(text);
+  const auto value = base::parse_number(text);
   if (!value || *value <= 0.0) return std::nullopt;
   return value;
 }
@@ -107,10 +107,10 @@ const std::vector<OptionDoc>& option_docs() {
                                "); 0 lets the OS pick a free port"},
       {"--moos_community=NAME",
        std::string("community name (default: Community, else ") + kDefaultCommunity + ")"},
-      {"--moos_time_warp=W", "time warp, 0 < W <= " + moos::text::format_g(moos::kMaxTimeWarp) +
+      {"--moos_time_warp=W", "time warp, 0 < W <= " + base::format_g(moos::kMaxTimeWarp) +
                                  " (default: MOOSTimeWarp, else 1)"},
       {"--moos_timeout=S", "drop a client silent for S seconds (default: ClientTimeout, else " +
-                               moos::text::format_g(kDefaultClientTimeout_s) + "; 0 = never)"},
+                               base::format_g(kDefaultClientTimeout_s) + "; 0 = never)"},
       {"--bind=ADDR", std::string("IPv4 address to listen on (default ") + kDefaultBindAddress +
                           "; 0.0.0.0 = every interface)"},
       {"--port-file=FILE", "write the bound port number to FILE once listening"},
@@ -120,9 +120,9 @@ const std::vector<OptionDoc>& option_docs() {
       {"--max-output-bytes=N", "unsent bytes allowed per client before it is dropped (default " +
                                    std::to_string(kDefaultMaxPendingBytes) + ")"},
       {"--banner-timeout=S", "seconds a new connection has to send the protocol banner (default " +
-                                 moos::text::format_g(kDefaultBannerTimeout_s) + ")"},
+                                 base::format_g(kDefaultBannerTimeout_s) + ")"},
       {"--handshake-timeout=S", "seconds to send the identification after the banner (default " +
-                                    moos::text::format_g(kDefaultHandshakeTimeout_s) + ")"},
+                                    base::format_g(kDefaultHandshakeTimeout_s) + ")"},
       {"--help, -h", "print this help and exit"},
       {"--version", "print the version and exit"},
       {"--response= -s --single_threaded -d --dns --tcpnodelay --audit_port= --event_log= "
@@ -138,7 +138,7 @@ const std::vector<OptionDoc>& mission_global_docs() {
       {"ServerPort", "TCP port (default " + std::to_string(kDefaultPort) + ")"},
       {"MOOSTimeWarp", "time warp (default 1)"},
       {"ClientTimeout", "seconds of silence before a client is dropped (default " +
-                            moos::text::format_g(kDefaultClientTimeout_s) + "; 0 = never)"},
+                            base::format_g(kDefaultClientTimeout_s) + "; 0 = never)"},
   };
   return table;
 }

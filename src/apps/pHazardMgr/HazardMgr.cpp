@@ -6,7 +6,7 @@
 #include "hazard/messages/detection_report.hpp"
 #include "hazard/messages/hazard_report.hpp"
 #include "hazard/messages/node_report.hpp"
-#include "hazard/text.hpp"
+#include "base/text.hpp"
 #include "mission/messages/hazard_handover.hpp"
 #include "mission/messages/hazardset_report.hpp"
 #include "mission/messages/mission_params.hpp"
@@ -37,7 +37,7 @@ moos::AppTraits manager_traits() { return mission_app::mission_traits(kAppName, 
 HazardMgr::HazardMgr() : mission_app::MissionApp(manager_traits()) {}
 
 std::string HazardMgr::mail_variable(const std::string& base) const {
-  return app_.suffixed_mail ? base + "_" + hazard::to_upper(config_.vname) : base;
+  return app_.suffixed_mail ? base + "_" + base::to_upper(config_.vname) : base;
 }
 
 long HazardMgr::outstanding_answers() const {
@@ -47,17 +47,17 @@ long HazardMgr::outstanding_answers() const {
 }
 
 std::optional<std::string> HazardMgr::apply_app_param(const moos::ConfigLine& line) {
-  const std::string key = hazard::to_lower(line.key);
+  const std::string key = base::to_lower(line.key);
   const std::string& value = line.value;
   auto name_value = [&](std::string& field) {
     return mission_app::name_param(key, value, field, "a name");
   };
   auto bool_value = [&](bool& field) { return mission_app::bool_param(key, value, field); };
   auto number_value = [&](double& field, double low, bool low_inclusive) -> std::string {
-    const auto v = hazard::parse_number(value);
+    const auto v = base::parse_number(value);
     if (!v || *v < low || (!low_inclusive && *v == low))
       return "parameter " + key + "='" + value + "' must be a number " +
-             (low_inclusive ? ">= " : "> ") + hazard::fmt(low);
+             (low_inclusive ? ">= " : "> ") + base::fmt(low);
     field = *v;
     return {};
   };
@@ -70,7 +70,7 @@ std::optional<std::string> HazardMgr::apply_app_param(const moos::ConfigLine& li
   if (key == "report_wait_max") return number_value(app_.report_wait_max_s, 0.0, true);
   if (key == "await_handovers_from") {
     std::vector<std::string> names;
-    for (std::string_view n : hazard::split_trimmed(value, ',')) {
+    for (std::string_view n : base::split_trimmed(value, ',')) {
       if (!mission_app::is_name(n)) return "parameter " + key + "='" + value + "' is not a list of names";
       names.emplace_back(n);
     }
@@ -229,8 +229,8 @@ std::string HazardMgr::object_table() const {
   for (const mission::ObjectBelief& b : beliefs) {
     if (shown++ == kMaxReportRows) break;
     using mission_app::column;
-    out += column(b.label, 11) + column(hazard::fmt(b.position_m.x, 1), 9) +
-           column(hazard::fmt(b.position_m.y, 1), 9) + column(hazard::fix(b.p_hazard, 3), 8) +
+    out += column(b.label, 11) + column(base::fmt(b.position_m.x, 1), 9) +
+           column(base::fmt(b.position_m.y, 1), 9) + column(base::fix(b.p_hazard, 3), 8) +
            column(std::to_string(b.own.detections), 4) +
            column(std::to_string(b.own.missed_passes), 5) +
            column(std::to_string(b.own.said_hazard) + "/" + std::to_string(b.own.said_benign), 6) +
@@ -247,10 +247,10 @@ std::string HazardMgr::build_report() {
   std::string out;
   out += "Vehicle:        " + config_.vname + "\n";
   out += "Sensor:         " + std::string(manager_->acked() ? "acknowledged" : "not acknowledged") +
-         " (requested width " + hazard::fmt(config_.swath_width_m, 1) + ", pd " +
-         hazard::fmt(config_.pd, 3) + ")\n";
-  out += "Penalties:      missed hazard " + hazard::fmt(manager_->penalties().missed_hazard) +
-         ", false alarm " + hazard::fmt(manager_->penalties().false_alarm) + "\n";
+         " (requested width " + base::fmt(config_.swath_width_m, 1) + ", pd " +
+         base::fmt(config_.pd, 3) + ")\n";
+  out += "Penalties:      missed hazard " + base::fmt(manager_->penalties().missed_hazard) +
+         ", false alarm " + base::fmt(manager_->penalties().false_alarm) + "\n";
   out += "Detections:     " + std::to_string(c.detections) + "\n";
   out += "Classify:       " + std::to_string(c.classify_requests) + " requested, " +
          std::to_string(c.classify_answers) + " answered\n";

@@ -3,7 +3,7 @@
 #include <ctime>
 #include <filesystem>
 
-#include "hazard/text.hpp"
+#include "base/text.hpp"
 #include "moos/alog.hpp"
 #include "moos/wildcard.hpp"
 
@@ -14,10 +14,10 @@ moos::AppTraits logger_traits() { return mission_app::mission_traits(kAppName, k
 std::optional<LogRequest> parse_log_request(std::string_view text) {
   LogRequest r;
   const auto at = text.find('@');
-  r.variable = std::string(hazard::trim(text.substr(0, at)));
+  r.variable = std::string(base::trim(text.substr(0, at)));
   if (r.variable.empty() || r.variable.find_first_of(" \t,") != std::string::npos) return std::nullopt;
   if (at != std::string_view::npos) {
-    const auto interval = hazard::parse_number(hazard::trim(text.substr(at + 1)));
+    const auto interval = base::parse_number(base::trim(text.substr(at + 1)));
     if (!interval || *interval < 0.0) return std::nullopt;
     r.interval_s = *interval;
   }
@@ -43,7 +43,7 @@ void LogLite::close() {
 }
 
 std::string LogLite::apply(const moos::ConfigLine& line) {
-  const std::string key = hazard::to_lower(line.key);
+  const std::string key = base::to_lower(line.key);
   const std::string& value = line.value;
   auto boolean = [&](bool& field) { return mission_app::bool_param(key, value, field); };
   if (key == "path") {
@@ -67,7 +67,7 @@ std::string LogLite::apply(const moos::ConfigLine& line) {
     if (!request) return "parameter log='" + value + "' is not VAR @ interval";
     requests_.push_back(*request);
   } else if (key == "wildcard_omit_pattern" || key == "wildcardomitpattern") {
-    for (std::string_view p : hazard::split_trimmed(value, ','))
+    for (std::string_view p : base::split_trimmed(value, ','))
       if (!p.empty()) omit_patterns_.emplace_back(p);
   } else {
     return "unknown parameter '" + line.key + "'";

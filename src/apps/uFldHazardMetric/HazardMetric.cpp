@@ -1,7 +1,7 @@
 #include "HazardMetric.hpp"
 
 #include "app_support.hpp"
-#include "hazard/text.hpp"
+#include "base/text.hpp"
 #include "mission/messages/hazard_search.hpp"
 #include "mission/messages/hazardset_report.hpp"
 
@@ -57,14 +57,14 @@ std::string HazardMetricApp::build_report() {
          "\n";
   out += "    Hazard:   " + std::to_string(metric_.truth().hazard_count()) + "\n";
   out += "    Benign:   " + std::to_string(metric_.truth().benign_count()) + "\n";
-  out += "Penalties:    missed hazard " + hazard::fmt(c.penalty_missed_hazard) + ", false alarm " +
-         hazard::fmt(c.penalty_false_alarm) + ", max_time " + hazard::fmt(c.max_time_s, 2) +
-         " (over " + hazard::fmt(c.penalty_max_time_over) + ", rate " +
-         hazard::fmt(c.penalty_max_time_rate) + ")\n";
-  out += "Worst score:  " + hazard::fmt(metric_.worst_score(), 2) + "\n";
+  out += "Penalties:    missed hazard " + base::fmt(c.penalty_missed_hazard) + ", false alarm " +
+         base::fmt(c.penalty_false_alarm) + ", max_time " + base::fmt(c.max_time_s, 2) +
+         " (over " + base::fmt(c.penalty_max_time_over) + ", rate " +
+         base::fmt(c.penalty_max_time_rate) + ")\n";
+  out += "Worst score:  " + base::fmt(metric_.worst_score(), 2) + "\n";
   out += "Search start: " +
          (metric_.search_start_s()
-              ? hazard::fmt(*metric_.search_start_s() - start_time(), 2) + " s after start-up"
+              ? base::fmt(*metric_.search_start_s() - start_time(), 2) + " s after start-up"
               : std::string("not started")) +
          "\n\n";
   out += "Source      Reports  Score   Correct  Missed  False alarms\n";
@@ -73,7 +73,7 @@ std::string HazardMetricApp::build_report() {
   for (const auto& [source, record] : metric_.sources()) {
     const mission::HazardsetEval& e = record.eval;
     out += column(source, 12) + column(std::to_string(record.reports_received), 9) +
-           column(hazard::fmt(e.norm_score, 2), 8) + column(std::to_string(e.correct_hazards), 9) +
+           column(base::fmt(e.norm_score, 2), 8) + column(std::to_string(e.correct_hazards), 9) +
            column(std::to_string(e.missed_hazards), 8) + std::to_string(e.false_alarms) + "\n";
   }
   if (metric_.sources().empty()) out += "(no reports yet)\n";

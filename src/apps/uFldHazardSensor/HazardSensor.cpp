@@ -7,7 +7,7 @@
 #include "app_support.hpp"
 #include "hazard/report.hpp"
 #include "moos/alog.hpp"
-#include "moos/text.hpp"
+#include "base/text.hpp"
 
 namespace ufld_hazard_sensor {
 
@@ -16,7 +16,7 @@ namespace {
 /// The engine reads text: strings and binary values as they are, doubles in their shortest
 /// exact form (a NODE_REPORT posted as a double then fails to parse, with a warning).
 std::string mail_text(const moos::Message& m) {
-  return m.is_double() ? moos::text::format_shortest(m.dval) : m.sval;
+  return m.is_double() ? base::format_shortest(m.dval) : m.sval;
 }
 
 }  // namespace

@@ -6,8 +6,8 @@
 #include "app_support.hpp"
 #include "hazard/config.hpp"
 #include "hazard/engine.hpp"
-#include "hazard/version.hpp"
-#include "moos/text.hpp"
+#include "base/version.hpp"
+#include "base/text.hpp"
 
 namespace ufld_hazard_sensor {
 
@@ -42,7 +42,7 @@ constexpr const char* kExampleSensorConfigs[] = {
     "width=10, exp=6, pclass=0.93, max=1"};
 constexpr const char* kExampleRandomSeed = "7";
 
-std::string number_text(double v) { return moos::text::format_g(v); }
+std::string number_text(double v) { return base::format_g(v); }
 
 /// `text` followed by blanks up to `width` columns.
 std::string padded(std::string_view text, std::size_t width) {
@@ -221,7 +221,7 @@ std::string interface_text() {
 }
 
 std::string version_text() {
-  return std::string(kAppName) + " " + std::string(hazard::release_version()) + " (HazardSensor)\n";
+  return std::string(kAppName) + " " + std::string(base::release_version()) + " (HazardSensor)\n";
 }
 
 }  // namespace ufld_hazard_sensor

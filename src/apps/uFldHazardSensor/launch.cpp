@@ -3,7 +3,7 @@
 #include <optional>
 #include <string_view>
 
-#include "moos/text.hpp"
+#include "base/text.hpp"
 
 namespace ufld_hazard_sensor {
 
@@ -18,9 +18,9 @@ Launch decide_launch_with_verbosity(const moos::CommandLine& cl) {
   for (const std::string& arg : cl.unhandled) {
     if (arg == kVerbose) {
       launch.verbose = true;
-    } else if (moos::text::starts_with(arg, std::string(kVerbose) + "=")) {
+    } else if (base::starts_with(arg, std::string(kVerbose) + "=")) {
       const std::string value = arg.substr(kVerbose.size() + 1);
-      const std::optional<bool> b = moos::text::parse_bool(value);
+      const std::optional<bool> b = base::parse_bool(value);
       if (!b) {
         launch.action = LaunchAction::kUsageError;
         launch.error = "'" + arg + "': the verbosity must be true or false";

@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "hazard/messages/node_report.hpp"
-#include "hazard/text.hpp"
+#include "base/text.hpp"
 #include "mission/polygon.hpp"
 #include "survey_route.hpp"
 
@@ -24,7 +24,7 @@ const std::vector<mission::ParamInfo> kAppParameters = {
 
 /// DEPLOY_<V>: the deploy flag of this vehicle alone (upper-cased like SURVEY_ROUTE_<V>).
 std::string deploy_variable_for(std::string_view vname) {
-  return "DEPLOY_" + hazard::to_upper(vname);
+  return "DEPLOY_" + base::to_upper(vname);
 }
 
 }  // namespace
@@ -36,17 +36,17 @@ moos::AppTraits sim_traits() { return mission_app::mission_traits(kAppName, kDef
 std::optional<Flag> parse_flag(std::string_view text) {
   const auto eq = text.find('=');
   if (eq == std::string_view::npos) return std::nullopt;
-  Flag f{std::string(hazard::trim(text.substr(0, eq))),
-         std::string(hazard::trim(text.substr(eq + 1))), std::nullopt};
+  Flag f{std::string(base::trim(text.substr(0, eq))),
+         std::string(base::trim(text.substr(eq + 1))), std::nullopt};
   if (!mission_app::is_name(f.variable)) return std::nullopt;
-  f.number = hazard::parse_number(f.value);
+  f.number = base::parse_number(f.value);
   return f;
 }
 
 SimSurveyVehicle::SimSurveyVehicle() : mission_app::MissionApp(sim_traits()) {}
 
 std::optional<std::string> SimSurveyVehicle::apply_app_param(const moos::ConfigLine& line) {
-  const std::string key = hazard::to_lower(line.key);
+  const std::string key = base::to_lower(line.key);
   const std::string& value = line.value;
   if (key == "vname") return mission_app::name_param(key, value, vname_, "a vehicle name");
   if (key == "node_report_var")
@@ -73,9 +73,9 @@ bool SimSurveyVehicle::on_start_up() {
     config_.vehicle = mission::VehicleParams{};
   }
   if (config_.report_interval_s * settings().app_tick_hz < 1.0 - kReportIntervalTolerance) {
-    report_config_warning("report_interval " + hazard::fmt(config_.report_interval_s, 3) +
+    report_config_warning("report_interval " + base::fmt(config_.report_interval_s, 3) +
                           " s is shorter than an iteration (AppTick " +
-                          hazard::fmt(settings().app_tick_hz, 3) +
+                          base::fmt(settings().app_tick_hz, 3) +
                           "): one node report per iteration");
   }
   const std::optional<double> lat_origin_deg = settings().global_double("LatOrigin");
@@ -90,7 +90,7 @@ bool SimSurveyVehicle::on_start_up() {
     route_m_ = std::get<std::vector<glm::dvec2>>(std::move(route));
   }
   const double now_s = cycle_time();
-  last_pose_ = mission::Pose{config_.start_m, hazard::norm360(config_.start_heading_deg), 0.0, now_s};
+  last_pose_ = mission::Pose{config_.start_m, base::norm360(config_.start_heading_deg), 0.0, now_s};
   vehicle_.emplace(config_.vehicle, last_pose_);
 
   register_variable("DEPLOY");
@@ -114,9 +114,9 @@ void SimSurveyVehicle::on_new_mail(const std::vector<moos::Message>& mail) {
 }
 
 void SimSurveyVehicle::on_deploy(const moos::Message& m) {
-  const auto b = hazard::parse_bool(mission_app::mail_text(m));
+  const auto b = base::parse_bool(mission_app::mail_text(m));
   if (!b) {
-    report_run_warning(m.key + "='" + hazard::excerpt(mission_app::mail_text(m)) + "' is not true or false");
+    report_run_warning(m.key + "='" + base::excerpt(mission_app::mail_text(m)) + "' is not true or false");
     return;
   }
   if (!*b) return;  // DEPLOY=false before deployment: nothing to stop
@@ -186,7 +186,7 @@ void SimSurveyVehicle::post_done_flags() {
       out.post(f.variable, f.value);
     }
   }
-  out.events.push_back("Route done at " + hazard::fmt(seconds_since_start(), 1) + " s");
+  out.events.push_back("Route done at " + base::fmt(seconds_since_start(), 1) + " s");
   publish(out);
 }
 
@@ -206,10 +206,10 @@ std::string SimSurveyVehicle::build_report() {
   std::string out;
   out += "Vehicle:  " + vname_ + " (" + vehicle_type_ + ")\n";
   out += "State:    " + state + "\n";
-  out += "Pose:     x=" + hazard::fmt(last_pose_.position_m.x, 1) +
-         " y=" + hazard::fmt(last_pose_.position_m.y, 1) +
-         " hdg=" + hazard::fmt(last_pose_.heading_deg, 1) +
-         " spd=" + hazard::fmt(last_pose_.speed_mps, 2) + "\n";
+  out += "Pose:     x=" + base::fmt(last_pose_.position_m.x, 1) +
+         " y=" + base::fmt(last_pose_.position_m.y, 1) +
+         " hdg=" + base::fmt(last_pose_.heading_deg, 1) +
+         " spd=" + base::fmt(last_pose_.speed_mps, 2) + "\n";
   out += "Reports:  " + std::to_string(node_reports_posted_) + " " + node_report_var_ + "\n";
   out += "Routes:   " + std::to_string(routes_received_) + " received\n";
   out += std::string("Geodesy:  ") + (geodesy_ ? "LAT/LON from LatOrigin/LongOrigin" : "no origin, no LAT/LON") + "\n";

@@ -13,9 +13,9 @@ Result parse_classify_request(std::string_view text) {
   if (!vname || vname->empty()) return Result::fail(detail::missing_field("vname"));
   r.vname = std::string(*vname);
   if (const auto action = f.get("action"); action && !action->empty()) {
-    if (iequals(*action, "top")) {
+    if (base::iequals(*action, "top")) {
       r.action = ClassifyAction::kTop;
-    } else if (iequals(*action, "clear")) {
+    } else if (base::iequals(*action, "clear")) {
       r.action = ClassifyAction::kClear;
     } else {
       return Result::fail(detail::field_value("action", *action) + " is neither 'top' nor 'clear'");
@@ -35,7 +35,7 @@ std::string format_classify_request(const ClassifyRequest& r) {
   std::string out;
   detail::append_field(out, "vname", r.vname);
   if (!r.label.empty()) detail::append_field(out, "label", r.label);
-  if (r.priority) detail::append_field(out, "priority", fmt(*r.priority));
+  if (r.priority) detail::append_field(out, "priority", base::fmt(*r.priority));
   if (r.action == ClassifyAction::kTop) detail::append_field(out, "action", "top");
   if (r.action == ClassifyAction::kClear) detail::append_field(out, "action", "clear");
   return out;

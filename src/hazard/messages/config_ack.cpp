@@ -27,8 +27,8 @@ Result parse_config_ack(std::string_view text) {
 }
 
 std::string format_config_ack(const ConfigAck& a) {
-  return "vname=" + a.vname + ",width=" + fmt(a.width_m, 1) + ",pd=" + fmt(a.pd, 3) +
-         ",pfa=" + fmt(a.pfa, 3) + ",pclass=" + fmt(a.pclass, 3);
+  return "vname=" + a.vname + ",width=" + base::fmt(a.width_m, 1) + ",pd=" + base::fmt(a.pd, 3) +
+         ",pfa=" + base::fmt(a.pfa, 3) + ",pclass=" + base::fmt(a.pclass, 3);
 }
 
 }  // namespace hazard

@@ -31,8 +31,8 @@ Result parse_config_request(std::string_view text) {
 std::string format_config_request(const ConfigRequest& r) {
   std::string out;
   detail::append_field(out, "vname", r.vname);
-  if (r.width_m) detail::append_field(out, "width", fmt(*r.width_m));
-  if (r.pd) detail::append_field(out, "pd", fmt(*r.pd));
+  if (r.width_m) detail::append_field(out, "width", base::fmt(*r.width_m));
+  if (r.pd) detail::append_field(out, "pd", base::fmt(*r.pd));
   return out;
 }
 

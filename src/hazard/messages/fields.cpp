@@ -6,7 +6,7 @@ namespace hazard::detail {
 
 std::optional<std::string_view> Fields::get(std::string_view key) const {
   for (auto it = pieces_.rbegin(); it != pieces_.rend(); ++it) {
-    if (it->has_equals && iequals(it->key, key)) return it->value;
+    if (it->has_equals && base::iequals(it->key, key)) return it->value;
   }
   return std::nullopt;
 }
@@ -14,7 +14,7 @@ std::optional<std::string_view> Fields::get(std::string_view key) const {
 std::optional<double> Fields::number(std::string_view key, std::string& error) const {
   const auto text = get(key);
   if (!text) return std::nullopt;
-  const auto v = parse_number(*text);
+  const auto v = base::parse_number(*text);
   if (!v && error.empty()) error = field_value(key, *text) + " is not a finite number";
   return v;
 }
@@ -22,16 +22,16 @@ std::optional<double> Fields::number(std::string_view key, std::string& error) c
 std::vector<std::string_view> Fields::unknown_keys(
     const std::vector<std::string_view>& known) const {
   std::vector<std::string_view> out;
-  for (const KeyValue& kv : pieces_) {
+  for (const base::KeyValue& kv : pieces_) {
     const bool is_known = std::any_of(known.begin(), known.end(),
-                                      [&](std::string_view k) { return iequals(k, kv.key); });
+                                      [&](std::string_view k) { return base::iequals(k, kv.key); });
     if (!is_known) out.push_back(kv.key);
   }
   return out;
 }
 
 std::string field_value(std::string_view key, std::string_view value) {
-  return "field '" + std::string(key) + "' value '" + excerpt(value) + "'";
+  return "field '" + std::string(key) + "' value '" + base::excerpt(value) + "'";
 }
 
 std::string missing_field(std::string_view key) {
@@ -49,23 +49,23 @@ std::string format_points(const std::vector<glm::dvec2>& points, int decimals) {
   std::string out = "{";
   for (std::size_t i = 0; i < points.size(); ++i) {
     if (i > 0) out.push_back(':');
-    out += fmt(points[i].x, decimals) + "," + fmt(points[i].y, decimals);
+    out += base::fmt(points[i].x, decimals) + "," + base::fmt(points[i].y, decimals);
   }
   out.push_back('}');
   return out;
 }
 
 std::optional<std::vector<glm::dvec2>> parse_points(std::string_view text) {
-  text = trim(text);
+  text = base::trim(text);
   if (!text.empty() && text.front() == '{') text.remove_prefix(1);
   if (!text.empty() && text.back() == '}') text.remove_suffix(1);
   std::vector<glm::dvec2> points;
-  if (trim(text).empty()) return points;
-  for (std::string_view pair : split_trimmed(text, ':')) {
-    const auto xy = split_trimmed(pair, ',');
+  if (base::trim(text).empty()) return points;
+  for (std::string_view pair : base::split_trimmed(text, ':')) {
+    const auto xy = base::split_trimmed(pair, ',');
     if (xy.size() != 2) return std::nullopt;
-    const auto x = parse_number(xy[0]);
-    const auto y = parse_number(xy[1]);
+    const auto x = base::parse_number(xy[0]);
+    const auto y = base::parse_number(xy[1]);
     if (!x || !y) return std::nullopt;
     points.emplace_back(*x, *y);
   }

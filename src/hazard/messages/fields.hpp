@@ -9,7 +9,7 @@
 
 #include <glm/vec2.hpp>
 
-#include "hazard/text.hpp"
+#include "base/text.hpp"
 
 namespace hazard::detail {
 
@@ -17,17 +17,17 @@ namespace hazard::detail {
 class Fields {
  public:
   explicit Fields(std::string_view text, bool respect_braces = false)
-      : pieces_(split_key_values(text, ',', respect_braces)) {}
+      : pieces_(base::split_key_values(text, ',', respect_braces)) {}
 
   std::optional<std::string_view> get(std::string_view key) const;
   /// A finite number, nullopt if absent; sets `error` (if empty) when present but not a number.
   std::optional<double> number(std::string_view key, std::string& error) const;
   /// Keys present that are not in `known` (for strict messages).
   std::vector<std::string_view> unknown_keys(const std::vector<std::string_view>& known) const;
-  const std::vector<KeyValue>& pieces() const { return pieces_; }
+  const std::vector<base::KeyValue>& pieces() const { return pieces_; }
 
  private:
-  std::vector<KeyValue> pieces_;
+  std::vector<base::KeyValue> pieces_;
 };
 
 /// "field 'pd' value 'abc'".

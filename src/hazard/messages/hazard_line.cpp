@@ -4,7 +4,7 @@
 
 #include "fields.hpp"
 #include "hazard/style.hpp"
-#include "hazard/text.hpp"
+#include "base/text.hpp"
 
 namespace hazard {
 
@@ -35,7 +35,7 @@ struct LineReader {
   }
 
   std::optional<double> number(std::string_view key, std::string_view value) {
-    const auto v = parse_number(value);
+    const auto v = base::parse_number(value);
     if (!v) reject(field_value(key, value) + " is not a number");
     return v;
   }
@@ -45,7 +45,7 @@ struct LineReader {
     const auto v = number(key, value);
     if (!v) return std::nullopt;
     if (*v < lo || *v > hi || (!hi_inclusive && *v == hi)) {
-      reject(field_value(key, value) + " is outside [" + fmt(lo) + ", " + fmt(hi) +
+      reject(field_value(key, value) + " is outside [" + base::fmt(lo) + ", " + base::fmt(hi) +
              (hi_inclusive ? "]" : ")"));
       return std::nullopt;
     }
@@ -53,7 +53,7 @@ struct LineReader {
   }
 
   void read(std::string_view raw_key, std::string_view value) {
-    const std::string key = to_lower(raw_key);
+    const std::string key = base::to_lower(raw_key);
     if (key == "x") {
       x = number(key, value);
     } else if (key == "y") {
@@ -61,15 +61,15 @@ struct LineReader {
     } else if (key == "label") {
       label = std::string(value);
     } else if (key == "type") {
-      if (iequals(value, "hazard")) {
+      if (base::iequals(value, "hazard")) {
         type = ObjectType::kHazard;
-      } else if (iequals(value, "benign")) {
+      } else if (base::iequals(value, "benign")) {
         type = ObjectType::kBenign;
       } else {
         reject(field_value(key, value) + " is neither 'hazard' nor 'benign'");
       }
     } else if (key == "hazard") {
-      const auto b = parse_bool(value);
+      const auto b = base::parse_bool(value);
       if (!b) reject(field_value(key, value) + " is not a boolean word");
       if (b) type_from_hazard_key = *b ? ObjectType::kHazard : ObjectType::kBenign;
     } else if (key == "hr") {
@@ -87,14 +87,14 @@ struct LineReader {
         result.warnings.push_back(field_value(key, value) + " is not a known colour; hint ignored");
       }
     } else if (key == "shape") {
-      const std::string shape = to_lower(value);
+      const std::string shape = base::to_lower(value);
       if (is_known_shape(shape)) {
         object.shape = shape;
       } else {
         result.warnings.push_back(field_value(key, value) + " is not a known shape; hint ignored");
       }
     } else if (key == "width") {
-      const auto w = parse_number(value);
+      const auto w = base::parse_number(value);
       if (w && *w >= 0.0) {
         object.marker_width_m = *w;
       } else {
@@ -109,7 +109,7 @@ struct LineReader {
       lon_text = std::string(value);
     } else {
       result.warnings.push_back("unknown key " + quoted(raw_key) + " (value " +
-                                quoted(excerpt(value)) + ") ignored");
+                                quoted(base::excerpt(value)) + ") ignored");
     }
   }
 
@@ -117,9 +117,9 @@ struct LineReader {
     const auto& lo = object.aspect_min_deg;
     const auto& hi = object.aspect_max_deg;
     if (lo && hi && *lo > *hi) {
-      reject("aspect_min " + fmt(*lo) + " is greater than aspect_max " + fmt(*hi));
+      reject("aspect_min " + base::fmt(*lo) + " is greater than aspect_max " + base::fmt(*hi));
     } else if (lo && hi && *lo + *hi > kMaxAspectWindowDeg) {
-      reject("aspect_min + aspect_max = " + fmt(*lo + *hi) + " exceeds 90");
+      reject("aspect_min + aspect_max = " + base::fmt(*lo + *hi) + " exceeds 90");
     }
     const int present = static_cast<int>(object.aspect_deg.has_value()) +
                         static_cast<int>(lo.has_value()) + static_cast<int>(hi.has_value());
@@ -179,13 +179,13 @@ HazardLineParse parse_hazard_line(std::string_view spec, const GeoPlacement* pla
   LineReader reader;
   reader.placement = placement;
   std::set<std::string> seen;
-  for (const KeyValue& kv : split_key_values(spec)) {
+  for (const base::KeyValue& kv : base::split_key_values(spec)) {
     if (!kv.has_equals) {
-      reader.result.warnings.push_back("piece " + quoted(excerpt(kv.key)) +
+      reader.result.warnings.push_back("piece " + quoted(base::excerpt(kv.key)) +
                                        " has no '='; ignored");
       continue;
     }
-    if (!seen.insert(to_lower(kv.key)).second) {
+    if (!seen.insert(base::to_lower(kv.key)).second) {
       reader.result.warnings.push_back("key " + quoted(kv.key) +
                                        " repeated; the later value is used");
     }
@@ -197,15 +197,15 @@ HazardLineParse parse_hazard_line(std::string_view spec, const GeoPlacement* pla
 }
 
 std::string format_hazard_line(const HazardObject& o) {
-  std::string out = "x=" + fmt(o.x_m, 2) + ",y=" + fmt(o.y_m, 2) + ",label=" + o.label +
+  std::string out = "x=" + base::fmt(o.x_m, 2) + ",y=" + base::fmt(o.y_m, 2) + ",label=" + o.label +
                     ",type=" + type_name(o.type);
   if (o.color) out += ",color=" + *o.color;
   if (o.shape) out += ",shape=" + *o.shape;
-  if (o.marker_width_m) out += ",width=" + fmt(*o.marker_width_m);
-  if (o.resemblance && !o.is_hazard()) out += ",hr=" + fmt(*o.resemblance);
-  if (o.aspect_deg) out += ",aspect=" + fmt(*o.aspect_deg);
-  if (o.aspect_min_deg) out += ",aspect_min=" + fmt(*o.aspect_min_deg);
-  if (o.aspect_max_deg) out += ",aspect_max=" + fmt(*o.aspect_max_deg);
+  if (o.marker_width_m) out += ",width=" + base::fmt(*o.marker_width_m);
+  if (o.resemblance && !o.is_hazard()) out += ",hr=" + base::fmt(*o.resemblance);
+  if (o.aspect_deg) out += ",aspect=" + base::fmt(*o.aspect_deg);
+  if (o.aspect_min_deg) out += ",aspect_min=" + base::fmt(*o.aspect_min_deg);
+  if (o.aspect_max_deg) out += ",aspect_max=" + base::fmt(*o.aspect_max_deg);
   return out;
 }
 

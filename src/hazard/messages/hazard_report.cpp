@@ -14,9 +14,9 @@ Result parse_hazard_report(std::string_view text) {
   const auto type = f.get("type");
   if (!type || type->empty()) return Result::fail(detail::missing_field("type"));
   ObjectType t;
-  if (iequals(*type, "hazard")) {
+  if (base::iequals(*type, "hazard")) {
     t = ObjectType::kHazard;
-  } else if (iequals(*type, "benign")) {
+  } else if (base::iequals(*type, "benign")) {
     t = ObjectType::kBenign;
   } else {
     return Result::fail(detail::field_value("type", *type) + " is neither 'hazard' nor 'benign'");

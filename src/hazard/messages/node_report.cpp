@@ -19,7 +19,7 @@ std::optional<std::string_view> either(const Fields& f, std::string_view a, std:
 
 std::optional<double> optional_number(const Fields& f, std::string_view key) {
   const auto text = f.get(key);
-  return text ? parse_number(*text) : std::nullopt;
+  return text ? base::parse_number(*text) : std::nullopt;
 }
 
 // A LAT/LON-only position through the placement, or the reason it cannot be placed.
@@ -63,8 +63,8 @@ Parsed<NodeReport> parse_node_report(std::string_view text, const GeoPlacement* 
   const auto y = f.number("Y", error);
   const auto spd_text = either(f, "SPD", "SPEED");
   const auto hdg_text = either(f, "HDG", "HEADING");
-  const auto spd = spd_text ? parse_number(*spd_text) : std::nullopt;
-  const auto hdg = hdg_text ? parse_number(*hdg_text) : std::nullopt;
+  const auto spd = spd_text ? base::parse_number(*spd_text) : std::nullopt;
+  const auto hdg = hdg_text ? base::parse_number(*hdg_text) : std::nullopt;
   if (!error.empty()) return Parsed<NodeReport>::fail(error);
   if (spd_text && !spd) {
     return Parsed<NodeReport>::fail(detail::field_value("SPD", *spd_text) +
@@ -89,7 +89,7 @@ Parsed<NodeReport> parse_node_report(std::string_view text, const GeoPlacement* 
   r.x_m = position->x;
   r.y_m = position->y;
   r.speed_mps = *spd;
-  r.heading_deg = norm360(*hdg);
+  r.heading_deg = base::norm360(*hdg);
   r.lat_deg = optional_number(f, "LAT");
   r.lon_deg = optional_number(f, "LON");
   r.time_s = optional_number(f, "TIME");
@@ -100,13 +100,13 @@ Parsed<NodeReport> parse_node_report(std::string_view text, const GeoPlacement* 
 std::string format_node_report(const NodeReport& r) {
   std::string out;
   detail::append_field(out, "NAME", r.name);
-  detail::append_field(out, "X", fmt(r.x_m, 2));
-  detail::append_field(out, "Y", fmt(r.y_m, 2));
-  detail::append_field(out, "SPD", fmt(r.speed_mps, 2));
-  detail::append_field(out, "HDG", fmt(r.heading_deg, 2));
-  if (r.lat_deg) detail::append_field(out, "LAT", fmt(*r.lat_deg, kLatLonDecimals));
-  if (r.lon_deg) detail::append_field(out, "LON", fmt(*r.lon_deg, kLatLonDecimals));
-  if (r.time_s) detail::append_field(out, "TIME", fmt(*r.time_s, 3));
+  detail::append_field(out, "X", base::fmt(r.x_m, 2));
+  detail::append_field(out, "Y", base::fmt(r.y_m, 2));
+  detail::append_field(out, "SPD", base::fmt(r.speed_mps, 2));
+  detail::append_field(out, "HDG", base::fmt(r.heading_deg, 2));
+  if (r.lat_deg) detail::append_field(out, "LAT", base::fmt(*r.lat_deg, kLatLonDecimals));
+  if (r.lon_deg) detail::append_field(out, "LON", base::fmt(*r.lon_deg, kLatLonDecimals));
+  if (r.time_s) detail::append_field(out, "TIME", base::fmt(*r.time_s, 3));
   if (r.type) detail::append_field(out, "TYPE", *r.type);
   return out;
 }

@@ -27,13 +27,13 @@ std::string read_object_report(const Fields& f, ObjectReportFields& out) {
 std::string write_object_report(const ObjectReportFields& r, std::string_view type) {
   std::string out;
   if (r.vname) append_field(out, "vname", *r.vname);
-  append_field(out, "x", fmt(r.x_m, 2));
-  append_field(out, "y", fmt(r.y_m, 2));
+  append_field(out, "x", base::fmt(r.x_m, 2));
+  append_field(out, "y", base::fmt(r.y_m, 2));
   append_field(out, "label", r.label);
   if (!type.empty()) append_field(out, "type", type);
-  if (r.aspect_deg) append_field(out, "aspect", fmt(*r.aspect_deg));
-  if (r.aspect_min_deg) append_field(out, "aspect_min", fmt(*r.aspect_min_deg));
-  if (r.aspect_max_deg) append_field(out, "aspect_max", fmt(*r.aspect_max_deg));
+  if (r.aspect_deg) append_field(out, "aspect", base::fmt(*r.aspect_deg));
+  if (r.aspect_min_deg) append_field(out, "aspect_min", base::fmt(*r.aspect_min_deg));
+  if (r.aspect_max_deg) append_field(out, "aspect_max", base::fmt(*r.aspect_max_deg));
   return out;
 }
 

@@ -10,8 +10,8 @@ using Result = Parsed<OptionsSummary>;
 
 Result parse_options_summary(std::string_view text) {
   OptionsSummary summary;
-  if (trim(text).empty()) return Result::ok(summary);
-  for (std::string_view option : split_trimmed(text, ':')) {
+  if (base::trim(text).empty()) return Result::ok(summary);
+  for (std::string_view option : base::split_trimmed(text, ':')) {
     const detail::Fields f(option);
     OptionsSummaryEntry e;
     const auto width = f.get("width");
@@ -23,12 +23,12 @@ Result parse_options_summary(std::string_view text) {
     if (!pclass) return Result::fail(detail::missing_field("pclass"));
     for (auto [key, value] : {std::pair{"width", *width}, std::pair{"exp", *exp},
                               std::pair{"pclass", *pclass}}) {
-      if (!parse_number(value)) {
+      if (!base::parse_number(value)) {
         return Result::fail(detail::field_value(key, value) + " is not a finite number");
       }
     }
     if (const auto max = f.get("max")) {
-      const auto n = parse_unsigned(*max);
+      const auto n = base::parse_unsigned(*max);
       if (!n || *n > static_cast<std::uint64_t>(std::numeric_limits<int>::max())) {
         return Result::fail(detail::field_value("max", *max) + " is not a whole number >= 0");
       }

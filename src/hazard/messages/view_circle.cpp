@@ -37,17 +37,17 @@ Result parse_view_circle(std::string_view text) {
 
 std::string format_view_circle(const ViewCircle& c) {
   std::string out;
-  detail::append_field(out, "x", fmt(c.x_m, 2));
-  detail::append_field(out, "y", fmt(c.y_m, 2));
-  detail::append_field(out, "radius", fmt(c.radius_m));
+  detail::append_field(out, "x", base::fmt(c.x_m, 2));
+  detail::append_field(out, "y", base::fmt(c.y_m, 2));
+  detail::append_field(out, "radius", base::fmt(c.radius_m));
   detail::append_field(out, "vertices", std::to_string(c.vertices));
-  if (c.duration_s) detail::append_field(out, "duration", fmt(*c.duration_s, 1));
+  if (c.duration_s) detail::append_field(out, "duration", base::fmt(*c.duration_s, 1));
   if (!c.edge_color.empty()) detail::append_field(out, "edge_color", c.edge_color);
   if (!c.fill_color.empty()) detail::append_field(out, "fill_color", c.fill_color);
-  detail::append_field(out, "time", fmt(c.time_s, 2));
-  detail::append_field(out, "vertex_size", fmt(c.vertex_size, 1));
-  detail::append_field(out, "edge_size", fmt(c.edge_size, 1));
-  detail::append_field(out, "fill_transparency", fmt(std::clamp(c.fill_transparency, 0.0, 1.0), 2));
+  detail::append_field(out, "time", base::fmt(c.time_s, 2));
+  detail::append_field(out, "vertex_size", base::fmt(c.vertex_size, 1));
+  detail::append_field(out, "edge_size", base::fmt(c.edge_size, 1));
+  detail::append_field(out, "fill_transparency", base::fmt(std::clamp(c.fill_transparency, 0.0, 1.0), 2));
   return out;
 }
 

@@ -29,15 +29,15 @@ Result parse_view_marker(std::string_view text) {
 
 std::string format_view_marker(const ViewMarker& m) {
   std::string out;
-  detail::append_field(out, "x", fmt(m.x_m, 2));
-  detail::append_field(out, "y", fmt(m.y_m, 2));
-  detail::append_field(out, "width", fmt(m.width_m, 2));
+  detail::append_field(out, "x", base::fmt(m.x_m, 2));
+  detail::append_field(out, "y", base::fmt(m.y_m, 2));
+  detail::append_field(out, "width", base::fmt(m.width_m, 2));
   if (!m.primary_color.empty()) detail::append_field(out, "primary_color", m.primary_color);
   if (!m.shape.empty()) detail::append_field(out, "type", m.shape);
   if (!m.label.empty()) detail::append_field(out, "label", m.label);
   if (m.fill_transparency) {
     detail::append_field(out, "fill_transparency",
-                         fmt(std::clamp(*m.fill_transparency, 0.0, 1.0), 2));
+                         base::fmt(std::clamp(*m.fill_transparency, 0.0, 1.0), 2));
   }
   return out;
 }

@@ -34,9 +34,9 @@ std::string format_view_polygon(const ViewPolygon& p) {
   if (!p.msg.empty()) detail::append_field(out, "msg", p.msg);
   if (!p.edge_color.empty()) detail::append_field(out, "edge_color", p.edge_color);
   if (!p.fill_color.empty()) detail::append_field(out, "fill_color", p.fill_color);
-  detail::append_field(out, "vertex_size", fmt(p.vertex_size, 1));
-  detail::append_field(out, "edge_size", fmt(p.edge_size, 1));
-  detail::append_field(out, "fill_transparency", fmt(std::clamp(p.fill_transparency, 0.0, 1.0), 2));
+  detail::append_field(out, "vertex_size", base::fmt(p.vertex_size, 1));
+  detail::append_field(out, "edge_size", base::fmt(p.edge_size, 1));
+  detail::append_field(out, "fill_transparency", base::fmt(std::clamp(p.fill_transparency, 0.0, 1.0), 2));
   return out;
 }
 

@@ -25,8 +25,8 @@ Result parse_view_seglist(std::string_view text) {
 std::string format_view_seglist(const ViewSeglist& s) {
   std::string out = "pts=" + detail::format_points(s.points, 1);
   if (!s.edge_color.empty()) detail::append_field(out, "edge_color", s.edge_color);
-  detail::append_field(out, "vertex_size", fmt(s.vertex_size, 1));
-  detail::append_field(out, "edge_size", fmt(s.edge_size, 1));
+  detail::append_field(out, "vertex_size", base::fmt(s.vertex_size, 1));
+  detail::append_field(out, "edge_size", base::fmt(s.edge_size, 1));
   return out;
 }
 

@@ -1,6 +1,6 @@
 #include "mission/messages/hazard_handover.hpp"
 
-#include "hazard/text.hpp"
+#include "base/text.hpp"
 
 namespace mission {
 
@@ -12,22 +12,22 @@ namespace {
 constexpr std::uint64_t kMaxCount = 1000000000;
 
 std::string header_value(std::string_view part, std::string_view key) {
-  const hazard::KeyValue kv = hazard::split_key_values(part).at(0);
-  return hazard::to_lower(kv.key) == key ? std::string(kv.value) : std::string();
+  const base::KeyValue kv = base::split_key_values(part).at(0);
+  return base::to_lower(kv.key) == key ? std::string(kv.value) : std::string();
 }
 
 // Parses one object part; returns the problem ("" when fine).
 std::string parse_object(std::string_view part, HandoverObject& o) {
   bool has_label = false, has_x = false, has_y = false, has_evidence = false;
-  for (const hazard::KeyValue& kv : hazard::split_key_values(part)) {
-    const std::string key = hazard::to_lower(kv.key);
+  for (const base::KeyValue& kv : base::split_key_values(part)) {
+    const std::string key = base::to_lower(kv.key);
     auto number = [&](double& out) -> bool {
-      const auto v = hazard::parse_number(kv.value);
+      const auto v = base::parse_number(kv.value);
       if (v) out = *v;
       return v.has_value();
     };
     auto count = [&](int& out) -> bool {
-      const auto v = hazard::parse_unsigned(kv.value);
+      const auto v = base::parse_unsigned(kv.value);
       if (v && *v <= kMaxCount) out = static_cast<int>(*v);
       return v && *v <= kMaxCount;
     };
@@ -62,7 +62,7 @@ std::string parse_object(std::string_view part, HandoverObject& o) {
 }  // namespace
 
 Result parse_handover(std::string_view text) {
-  const auto parts = hazard::split_trimmed(hazard::trim(text), '#');
+  const auto parts = base::split_trimmed(base::trim(text), '#');
   if (parts.size() < 3) return Result::fail("HAZARD_HANDOVER needs source, dest and prior parts");
   Handover h;
   h.source = header_value(parts[0], "source");
@@ -76,7 +76,7 @@ Result parse_handover(std::string_view text) {
     return Result::fail("HAZARD_HANDOVER second part '" + std::string(parts[1]) +
                         "' is not dest=<vehicle>");
   }
-  const auto prior = hazard::parse_number(prior_text);
+  const auto prior = base::parse_number(prior_text);
   if (!prior || !(*prior > 0.0) || !(*prior < 1.0))
     return Result::fail("HAZARD_HANDOVER part '" + std::string(parts[2]) +
                         "' is not prior=<p> with p in (0, 1)");
@@ -85,7 +85,7 @@ Result parse_handover(std::string_view text) {
     if (parts[i].empty()) continue;
     HandoverObject o;
     if (std::string problem = parse_object(parts[i], o); !problem.empty()) {
-      h.warnings.push_back("HAZARD_HANDOVER object '" + hazard::excerpt(parts[i]) +
+      h.warnings.push_back("HAZARD_HANDOVER object '" + base::excerpt(parts[i]) +
                            "': " + problem);
       continue;
     }
@@ -96,11 +96,11 @@ Result parse_handover(std::string_view text) {
 
 std::string format_handover(const Handover& h) {
   std::string out =
-      "source=" + h.source + "#dest=" + h.dest + "#prior=" + hazard::fmt(h.prior_hazard, 6);
+      "source=" + h.source + "#dest=" + h.dest + "#prior=" + base::fmt(h.prior_hazard, 6);
   for (const HandoverObject& o : h.objects) {
     out += "#label=" + o.label;
-    out += ",x=" + hazard::fmt(o.x_m, 2) + ",y=" + hazard::fmt(o.y_m, 2);
-    out += ",evidence=" + hazard::fmt(o.evidence.log_lr, 6);
+    out += ",x=" + base::fmt(o.x_m, 2) + ",y=" + base::fmt(o.y_m, 2);
+    out += ",evidence=" + base::fmt(o.evidence.log_lr, 6);
     out += ",det=" + std::to_string(o.evidence.detections);
     out += ",miss=" + std::to_string(o.evidence.missed_passes);
     out += ",said_hazard=" + std::to_string(o.evidence.said_hazard);
@@ -110,7 +110,7 @@ std::string format_handover(const Handover& h) {
 }
 
 std::string handover_variable_for(std::string_view dest) {
-  return std::string(kHazardHandoverVar) + "_" + hazard::to_upper(dest);
+  return std::string(kHazardHandoverVar) + "_" + base::to_upper(dest);
 }
 
 }  // namespace mission

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "hazard/text.hpp"
+#include "base/text.hpp"
 
 namespace mission {
 
@@ -13,7 +13,7 @@ namespace {
 std::string object_part(const ObjectEval& o) {
   std::string out = "label=" + o.label + ",truth=" + o.truth;
   out += o.reported ? ",report=hazard" : ",report=nothing";
-  if (o.penalty) out += ",penalty=" + hazard::fmt(*o.penalty, 2);
+  if (o.penalty) out += ",penalty=" + base::fmt(*o.penalty, 2);
   return out;
 }
 
@@ -24,19 +24,19 @@ std::string bad(std::string_view key, std::string_view value, const char* what) 
 
 // Parses `{label=..,truth=..,report=..[,penalty=..]#...}`.
 std::string parse_object_report(std::string_view text, std::vector<ObjectEval>& out) {
-  text = hazard::trim(text);
+  text = base::trim(text);
   if (text.size() < 2 || text.front() != '{' || text.back() != '}')
     return bad("object_report", text, "is not enclosed in {}");
-  for (std::string_view part : hazard::split_trimmed(text.substr(1, text.size() - 2), '#')) {
+  for (std::string_view part : base::split_trimmed(text.substr(1, text.size() - 2), '#')) {
     if (part.empty()) continue;
     ObjectEval o;
-    for (const hazard::KeyValue& kv : hazard::split_key_values(part)) {
-      const std::string key = hazard::to_lower(kv.key);
+    for (const base::KeyValue& kv : base::split_key_values(part)) {
+      const std::string key = base::to_lower(kv.key);
       if (key == "label") o.label = std::string(kv.value);
       if (key == "truth") o.truth = std::string(kv.value);
       if (key == "report") o.reported = kv.value == "hazard";
       if (key == "penalty") {
-        o.penalty = hazard::parse_number(kv.value);
+        o.penalty = base::parse_number(kv.value);
         if (!o.penalty) return bad("penalty", kv.value, "is not a number");
       }
     }
@@ -75,8 +75,8 @@ Result parse_hazardset_eval(std::string_view text) {
                               {"correct_hazards", &e.correct_hazards},
                               {"false_alarms", &e.false_alarms}};
   bool has_vname = false;
-  for (const hazard::KeyValue& kv : hazard::split_key_values(text, ',', /*respect_braces=*/true)) {
-    const std::string key = hazard::to_lower(kv.key);
+  for (const base::KeyValue& kv : base::split_key_values(text, ',', /*respect_braces=*/true)) {
+    const std::string key = base::to_lower(kv.key);
     if (key == "vname") {
       e.vname = std::string(kv.value);
       has_vname = true;
@@ -88,13 +88,13 @@ Result parse_hazardset_eval(std::string_view text) {
     }
     for (const NumberSlot& slot : numbers) {
       if (key != slot.key) continue;
-      const auto v = hazard::parse_number(kv.value);
+      const auto v = base::parse_number(kv.value);
       if (!v) return Result::fail(bad(key, kv.value, "is not a number"));
       *slot.value = *v;
     }
     for (const CountSlot& slot : counts) {
       if (key != slot.key) continue;
-      const auto v = hazard::parse_unsigned(kv.value);
+      const auto v = base::parse_unsigned(kv.value);
       if (!v || *v > 1000000000000ULL) return Result::fail(bad(key, kv.value, "is not a count"));
       *slot.value = static_cast<long>(*v);
     }
@@ -106,23 +106,23 @@ Result parse_hazardset_eval(std::string_view text) {
 std::string format_hazardset_eval(const HazardsetEval& e) {
   std::string out = "vname=" + e.vname;
   if (!e.report_name.empty()) out += ",report_name=" + e.report_name;
-  out += ",total_score=" + hazard::fmt(e.total_score, 2);
-  out += ",norm_score=" + hazard::fmt(e.norm_score, 2);
-  out += ",score_missed_hazards=" + hazard::fmt(e.score_missed_hazards);
-  out += ",score_false_alarms=" + hazard::fmt(e.score_false_alarms);
-  out += ",score_time_overage=" + hazard::fmt(e.score_time_overage, 2);
+  out += ",total_score=" + base::fmt(e.total_score, 2);
+  out += ",norm_score=" + base::fmt(e.norm_score, 2);
+  out += ",score_missed_hazards=" + base::fmt(e.score_missed_hazards);
+  out += ",score_false_alarms=" + base::fmt(e.score_false_alarms);
+  out += ",score_time_overage=" + base::fmt(e.score_time_overage, 2);
   out += ",total_objects=" + std::to_string(e.total_objects);
-  out += ",total_time=" + hazard::fmt(e.total_time_s);
-  out += ",received_time=" + hazard::fmt(e.received_time_s);
-  out += ",start_time=" + hazard::fmt(e.start_time_s);
+  out += ",total_time=" + base::fmt(e.total_time_s);
+  out += ",received_time=" + base::fmt(e.received_time_s);
+  out += ",start_time=" + base::fmt(e.start_time_s);
   out += ",missed_hazards=" + std::to_string(e.missed_hazards);
   out += ",correct_hazards=" + std::to_string(e.correct_hazards);
   out += ",false_alarms=" + std::to_string(e.false_alarms);
-  out += ",penalty_false_alarm=" + hazard::fmt(e.penalty_false_alarm);
-  out += ",penalty_missed_hazard=" + hazard::fmt(e.penalty_missed_hazard);
-  out += ",penalty_max_time_over=" + hazard::fmt(e.penalty_max_time_over);
-  out += ",penalty_max_time_rate=" + hazard::fmt(e.penalty_max_time_rate);
-  out += ",max_time=" + hazard::fmt(e.max_time_s);
+  out += ",penalty_false_alarm=" + base::fmt(e.penalty_false_alarm);
+  out += ",penalty_missed_hazard=" + base::fmt(e.penalty_missed_hazard);
+  out += ",penalty_max_time_over=" + base::fmt(e.penalty_max_time_over);
+  out += ",penalty_max_time_rate=" + base::fmt(e.penalty_max_time_rate);
+  out += ",max_time=" + base::fmt(e.max_time_s);
   return out;
 }
 

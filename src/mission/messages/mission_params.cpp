@@ -1,6 +1,6 @@
 #include "mission/messages/mission_params.hpp"
 
-#include "hazard/text.hpp"
+#include "base/text.hpp"
 
 namespace mission {
 
@@ -19,15 +19,15 @@ Result parse_mission_params(std::string_view text) {
                         {"max_time", &p.max_time_s},
                         {"penalty_max_time_rate", &p.penalty_max_time_rate},
                         {"transit_path_width", &p.transit_path_width_m}};
-  for (const hazard::KeyValue& kv : hazard::split_key_values(text, ',', /*respect_braces=*/true)) {
-    const std::string key = hazard::to_lower(kv.key);
+  for (const base::KeyValue& kv : base::split_key_values(text, ',', /*respect_braces=*/true)) {
+    const std::string key = base::to_lower(kv.key);
     if (key == "search_region") {
       p.search_region = std::string(kv.value);
       continue;
     }
     for (const Slot& slot : slots) {
       if (key != slot.key) continue;
-      const auto number = hazard::parse_number(kv.value);
+      const auto number = base::parse_number(kv.value);
       if (!number) {
         return Result::fail("UHZ_MISSION_PARAMS field '" + key + "' value '" +
                             std::string(kv.value) + "' is not a number");
@@ -40,14 +40,14 @@ Result parse_mission_params(std::string_view text) {
 
 std::string format_mission_params(const MissionParams& p) {
   std::string out;
-  out += "penalty_missed_hazard=" + hazard::fmt(p.penalty_missed_hazard, 5);
-  out += ",penalty_nonopt_hazard=" + hazard::fmt(p.penalty_nonopt_hazard, 5);
-  out += ",penalty_false_alarm=" + hazard::fmt(p.penalty_false_alarm, 5);
-  out += ",penalty_max_time_over=" + hazard::fmt(p.penalty_max_time_over, 5);
-  out += ",max_time=" + hazard::fmt(p.max_time_s, 2);
-  out += ",penalty_max_time_rate=" + hazard::fmt(p.penalty_max_time_rate, 5);
+  out += "penalty_missed_hazard=" + base::fmt(p.penalty_missed_hazard, 5);
+  out += ",penalty_nonopt_hazard=" + base::fmt(p.penalty_nonopt_hazard, 5);
+  out += ",penalty_false_alarm=" + base::fmt(p.penalty_false_alarm, 5);
+  out += ",penalty_max_time_over=" + base::fmt(p.penalty_max_time_over, 5);
+  out += ",max_time=" + base::fmt(p.max_time_s, 2);
+  out += ",penalty_max_time_rate=" + base::fmt(p.penalty_max_time_rate, 5);
   if (p.transit_path_width_m > 0.0)
-    out += ",transit_path_width=" + hazard::fmt(p.transit_path_width_m, 5);
+    out += ",transit_path_width=" + base::fmt(p.transit_path_width_m, 5);
   if (p.search_region) out += ",search_region=" + *p.search_region;
   return out;
 }

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "GenHazards_Info.hpp"
-#include "hazard/version.hpp"
+#include "base/version.hpp"
 #include "options.hpp"
 
 namespace gen_hazards {
@@ -59,7 +59,7 @@ TEST(GenHazardsInfo, HelpLinesFitEightyColumns) {
 }
 
 TEST(GenHazardsInfo, VersionNamesTheProgramAndTheRelease) {
-  EXPECT_EQ(version_text(), "gen_hazards " + std::string(hazard::release_version()) + " (HazardSensor)\n");
+  EXPECT_EQ(version_text(), "gen_hazards " + std::string(base::release_version()) + " (HazardSensor)\n");
 }
 
 TEST(GenHazardsInfo, UserPageDocumentsEveryOptionAndTheDifferences) {

@@ -14,7 +14,7 @@
 #include "child_process.hpp"
 #include "hazard/hazard_field.hpp"
 #include "hazard/messages/hazard_line.hpp"
-#include "hazard/text.hpp"
+#include "base/text.hpp"
 #include "mission/polygon.hpp"
 #include "options.hpp"
 #include "scratch_files.hpp"
@@ -106,7 +106,7 @@ TEST(GenHazardsProcess, HeaderWithoutSeedRegeneratesTheSameFile_D30) {
   EXPECT_EQ(words[1], "gen_hazards");
   const std::string seed = words.back();
   ASSERT_EQ(seed.rfind("--seed=", 0), 0u) << header;
-  EXPECT_TRUE(hazard::parse_unsigned(seed.substr(7)).has_value()) << header;
+  EXPECT_TRUE(base::parse_unsigned(seed.substr(7)).has_value()) << header;
 
   const std::vector<std::string> again(words.begin() + 2, words.end());
   const RunResult second = run(again);

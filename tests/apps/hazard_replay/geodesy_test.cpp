@@ -5,7 +5,7 @@
 
 #include <GeographicLib/LocalCartesian.hpp>
 
-#include "hazard/text.hpp"
+#include "base/text.hpp"
 #include "replay_support.hpp"
 
 namespace hazard_replay {
@@ -25,8 +25,8 @@ const GeographicLib::LocalCartesian kFrame(kLat0, kLon0, 0.0);
 std::string lat_lon(double x, double y, const char* lat_key, const char* lon_key) {
   double lat, lon, h;
   kFrame.Reverse(x, y, 0.0, lat, lon, h);
-  return std::string(lat_key) + "=" + hazard::fmt(lat, 10) + "," + lon_key + "=" +
-         hazard::fmt(lon, 10);
+  return std::string(lat_key) + "=" + base::fmt(lat, 10) + "," + lon_key + "=" +
+         base::fmt(lon, 10);
 }
 
 std::string report(double x, double y) {
@@ -47,7 +47,7 @@ void make(const ScratchDir& dir, const std::string& globals) {
 
 TEST(ReplayGeodesy, TheMissionOriginPlacesLatLonReportsAndHazardLines) {
   ScratchDir dir;
-  make(dir, "LatOrigin = " + hazard::fmt(kLat0, 6) + "\nLongOrigin = " + hazard::fmt(kLon0, 6) +
+  make(dir, "LatOrigin = " + base::fmt(kLat0, 6) + "\nLongOrigin = " + base::fmt(kLon0, 6) +
                 "\n");
   const auto r = run(dir, {"m.moos", "in.alog", "--seed=1"});
   ASSERT_EQ(r.exit_code, 0) << r.err;

@@ -5,7 +5,7 @@
 
 #include "hazard/messages/node_report.hpp"
 #include "hazard/reference_scenario.hpp"
-#include "hazard/text.hpp"
+#include "base/text.hpp"
 #include "replay_support.hpp"
 
 namespace hazard_replay {
@@ -243,7 +243,7 @@ TEST(ReplayProcess, PoseRateDoesNotChangeTheDetections) {
     std::vector<Line> lines;
     for (const auto& m : s.mail) lines.push_back({m.time_s, m.variable, m.value});
     write_file(dir / "in.alog", alog(lines));
-    const auto r = run(dir, {"m.moos", "in.alog", "--until=" + hazard::fmt(s.end_time_s)});
+    const auto r = run(dir, {"m.moos", "in.alog", "--until=" + base::fmt(s.end_time_s)});
     ASSERT_EQ(r.exit_code, 0) << r.err;
     int detections = 0;
     for (const auto& e : alog_entries(r.out)) {

@@ -9,7 +9,7 @@
 #include "hazard/dice.hpp"
 #include "hazard/messages/node_report.hpp"
 #include "hazard/sensor_model.hpp"
-#include "hazard/text.hpp"
+#include "base/text.hpp"
 #include "replay_support.hpp"
 
 namespace hazard_replay {
@@ -28,7 +28,7 @@ double five_sigma(double p, double n) { return 5.0 * std::sqrt(p * (1.0 - p) / n
 std::string objects(char letter, int count, const std::string& spec, int& n) {
   std::string out;
   for (int i = 0; i < count; ++i, ++n) {
-    out += "hazard = x=" + hazard::fmt(-40 + n % 81) + ",y=" + hazard::fmt(-40 + (n / 81) % 81) +
+    out += "hazard = x=" + base::fmt(-40 + n % 81) + ",y=" + base::fmt(-40 + (n / 81) % 81) +
            ",label=" + letter + std::to_string(i) + "," + spec + "\n";
   }
   return out;

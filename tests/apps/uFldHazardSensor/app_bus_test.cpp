@@ -12,9 +12,9 @@
 #include "app_support.hpp"
 #include "hazard/config.hpp"
 #include "hazard/engine.hpp"
-#include "hazard/text.hpp"
+#include "base/text.hpp"
 #include "moos/alog.hpp"
-#include "moos/text.hpp"
+#include "base/text.hpp"
 #include "sensor_on_bus.hpp"
 
 namespace ufld_hazard_sensor {
@@ -134,7 +134,7 @@ TEST_F(SensorOnBus, AppCastOnTheFirstIterationThenOnlyOnRequest_11) {
   EXPECT_LE(casts.size(), 1u + 5u);
   EXPECT_LE(casts.back().time, asked + 2.0);
   const std::string& cast = casts.back().sval;
-  EXPECT_TRUE(moos::text::starts_with(cast, "proc=uFldHazardSensor!@#iter="));
+  EXPECT_TRUE(base::starts_with(cast, "proc=uFldHazardSensor!@#iter="));
   EXPECT_TRUE(contains(cast, "!@#node=shoreside!@#"));
   EXPECT_TRUE(contains(cast, "!@#messages=Hazard File: (None provided.) !@     Hazard: 1!@     Benign: 2!@"));
   EXPECT_TRUE(contains(cast, "!@       Seed: 7 (random_seed)!@"));
@@ -145,7 +145,7 @@ TEST_F(SensorOnBus, TerminalReportHasTheSeedAndEffectsInItsHeaderBlock_11) {
   start(std::string(kField) + kOptions + "  random_seed = 7\n");
   run_for(1.0);
   const std::string report = app->terminal_report();
-  EXPECT_TRUE(moos::text::starts_with(report, std::string(62, '=') + "\nuFldHazardSensor shoreside"));
+  EXPECT_TRUE(base::starts_with(report, std::string(62, '=') + "\nuFldHazardSensor shoreside"));
   EXPECT_TRUE(contains(report, "0/0(5)\n"));  // no warnings, five iterations
   EXPECT_TRUE(contains(report, "\n       Seed: 7 (random_seed)\n"));
   EXPECT_TRUE(contains(report, "\n    Effects: speed_gate, turn_blackout, resemblance, aspect,"));
@@ -262,7 +262,7 @@ TEST_F(SensorOnBus, MailTimesAreClampedBetweenTheLastEngineTimeAndTheCycle) {
   std::istringstream in(verbose.str());
   for (std::string line; std::getline(in, line);) {
     const auto p = moos::parse_alog_line(line);
-    if (p.kind == moos::AlogLineKind::kEntry && moos::text::starts_with(p.entry.variable, "UHZ_CONFIG_ACK_"))
+    if (p.kind == moos::AlogLineKind::kEntry && base::starts_with(p.entry.variable, "UHZ_CONFIG_ACK_"))
       acks.emplace_back(p.entry.variable, p.entry.time_s);
   }
   EXPECT_EQ(acks, (std::vector<std::pair<std::string, double>>{
@@ -286,8 +286,8 @@ TEST_F(SensorOnBus, VerboseWritesEveryPostingAndEventAsAlogLines_D29) {
   std::istringstream in(verbose.str());
   std::string line;
   ASSERT_TRUE(std::getline(in, line));
-  EXPECT_TRUE(moos::text::starts_with(line, "%% LOG FILE:")) << line;
-  EXPECT_TRUE(moos::text::ends_with(line, " uFldHazardSensor")) << line;
+  EXPECT_TRUE(base::starts_with(line, "%% LOG FILE:")) << line;
+  EXPECT_TRUE(base::ends_with(line, " uFldHazardSensor")) << line;
   ASSERT_TRUE(std::getline(in, line));
   EXPECT_EQ(moos::alog_logstart(line), kT0);
   std::vector<moos::AlogEntry> postings;
@@ -320,7 +320,7 @@ TEST_F(SensorOnBus, VerboseWritesEveryPostingAndEventAsAlogLines_D29) {
   EXPECT_NE(std::find(events.begin(), events.end(),
                       "Detection report sent to vehicle: alpha (label h1)"), events.end());
   ASSERT_EQ(run_warnings.size(), 1u);
-  EXPECT_TRUE(moos::text::starts_with(run_warnings[0], "NODE_REPORT: ")) << run_warnings[0];
+  EXPECT_TRUE(base::starts_with(run_warnings[0], "NODE_REPORT: ")) << run_warnings[0];
 }
 
 // ---- seeds (rulings "Seeds") ---------------------------------------------------------------------

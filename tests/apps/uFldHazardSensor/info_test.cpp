@@ -24,10 +24,10 @@
 #include "hazard/messages/view_marker.hpp"
 #include "hazard/messages/view_polygon.hpp"
 #include "hazard/messages/view_seglist.hpp"
-#include "hazard/text.hpp"
-#include "hazard/version.hpp"
+#include "base/text.hpp"
+#include "base/version.hpp"
 #include "moos/appcast.hpp"
-#include "moos/text.hpp"
+#include "base/text.hpp"
 #include "sensor_on_bus.hpp"
 
 namespace ufld_hazard_sensor {
@@ -51,14 +51,14 @@ std::vector<std::string> lines_of(const std::string& text) {
 std::optional<std::string> example_value(const std::string& example, const std::string& key,
                                          bool commented_out = false) {
   for (const std::string& line : lines_of(example)) {
-    std::string_view l = moos::text::trim(line);
-    if (commented_out != moos::text::starts_with(l, "// ")) continue;
+    std::string_view l = base::trim(line);
+    if (commented_out != base::starts_with(l, "// ")) continue;
     if (commented_out) l.remove_prefix(3);
     const auto eq = l.find('=');
-    if (eq == std::string_view::npos || moos::text::trim(l.substr(0, eq)) != key) continue;
+    if (eq == std::string_view::npos || base::trim(l.substr(0, eq)) != key) continue;
     std::string_view value = l.substr(eq + 1);
     value = value.substr(0, value.find("//"));
-    return std::string(moos::text::trim(value));
+    return std::string(base::trim(value));
   }
   return std::nullopt;
 }
@@ -155,8 +155,8 @@ const std::map<std::string, std::function<bool(const std::string&)>>& parsers() 
       {"APPCAST_REQ", [](const std::string& v) {
          return moos::parse_appcast_request(v, "shoreside", kAppName).has_value();
        }},
-      {"UFLDHAZARDSENSOR_ITER_GAP", [](const std::string& v) { return hazard::parse_number(v).has_value(); }},
-      {"UFLDHAZARDSENSOR_ITER_LEN", [](const std::string& v) { return hazard::parse_number(v).has_value(); }},
+      {"UFLDHAZARDSENSOR_ITER_GAP", [](const std::string& v) { return base::parse_number(v).has_value(); }},
+      {"UFLDHAZARDSENSOR_ITER_LEN", [](const std::string& v) { return base::parse_number(v).has_value(); }},
   };
   return p;
 }
@@ -202,7 +202,7 @@ TEST(Interface, EverySubscriptionExampleIsHandledByTheEngineWithoutAWarning) {
 
 TEST(Interface, TextListsEveryVariableWithItsExampleAndMeaning) {
   const std::string text = interface_text();
-  EXPECT_TRUE(moos::text::starts_with(text, std::string(63, '=') + "\nuFldHazardSensor INTERFACE\n"));
+  EXPECT_TRUE(base::starts_with(text, std::string(63, '=') + "\nuFldHazardSensor INTERFACE\n"));
   const auto subs = text.find("SUBSCRIPTIONS:");
   const auto pubs = text.find("PUBLICATIONS:");
   ASSERT_NE(subs, std::string::npos);
@@ -238,7 +238,7 @@ TEST(Help, NamesEverySwitchOfTheManualAndVerbose_11_4_D29) {
 
 TEST(Version, NamesTheProgramAndTheRelease) {
   EXPECT_EQ(version_text(),
-            "uFldHazardSensor " + std::string(hazard::release_version()) + " (HazardSensor)\n");
+            "uFldHazardSensor " + std::string(base::release_version()) + " (HazardSensor)\n");
 }
 
 // ---- the user page ----------------------------------------------------------------------------------

@@ -9,8 +9,8 @@
 #include <map>
 
 #include "hazard/engine.hpp"
-#include "hazard/text.hpp"
-#include "moos/text.hpp"
+#include "base/text.hpp"
+#include "base/text.hpp"
 #include "sensor_process.hpp"
 
 namespace ufld_hazard_sensor {
@@ -42,7 +42,7 @@ std::string swath_a(int y) {
 }
 
 std::string node_report(const std::string& name, double x, double y, double heading = 0) {
-  return "NAME=" + name + ",X=" + hazard::fmt(x) + ",Y=" + hazard::fmt(y) + ",SPD=1,HDG=" + hazard::fmt(heading);
+  return "NAME=" + name + ",X=" + base::fmt(x) + ",Y=" + base::fmt(y) + ",SPD=1,HDG=" + base::fmt(heading);
 }
 
 /// ",time=<v>" removed: the engine's time in a circle is the only thing that legitimately
@@ -102,7 +102,7 @@ std::map<std::string, std::vector<std::string>> replay(const test_support::Scrat
   write_file(dir / "input.alog", input);
   auto r = Child::spawn(HAZARD_REPLAY_PATH,
                         {(dir / "m.moos").string(), (dir / "input.alog").string(),
-                         "--until=" + hazard::fix(until_s, 3), "--output=" + (dir / "replay.alog").string()});
+                         "--until=" + base::fix(until_s, 3), "--output=" + (dir / "replay.alog").string()});
   EXPECT_TRUE(r.has_value());
   if (!r) return {};
   EXPECT_EQ(r->wait(60.0), 0) << r->stderr_text();
@@ -212,7 +212,7 @@ TEST_F(SensorProcess, ScriptedVehicleGetsTheHandComputedPayloads_Issue4) {
     if (e.source != kApp || e.variable != "VIEW_CIRCLE") continue;
     circles.push_back(without_time(e.value));
     // time = the engine's MOOS time (FMT(., 2)) of the iteration that posted it.
-    const auto t = hazard::parse_number(e.value.substr(e.value.find(",time=") + 6,
+    const auto t = base::parse_number(e.value.substr(e.value.find(",time=") + 6,
                                                        e.value.find(",vertex_size") - e.value.find(",time=") - 6));
     ASSERT_TRUE(t.has_value()) << e.value;
     EXPECT_NEAR(*t, log.logstart_s + e.time_s, 1.0) << e.value;
@@ -254,7 +254,7 @@ std::string block_b() {
   // 40 objects 5 m apart along y, at half-metre offsets so no pose (even y) is within 0.5 m of
   // an edge; every third a hazard; some resemblance and aspect data.
   for (int i = 0; i < 40; ++i) {
-    b += "  hazard = x=" + hazard::fmt((i % 2 ? 9.0 : -7.0) + 0.5 * (i % 3)) + ",y=" + hazard::fmt(5.0 * i + 3.5) +
+    b += "  hazard = x=" + base::fmt((i % 2 ? 9.0 : -7.0) + 0.5 * (i % 3)) + ",y=" + base::fmt(5.0 * i + 3.5) +
          ",label=o" + n(i) + ",type=" + (i % 3 == 0 ? "hazard" : "benign") + (i % 4 == 1 ? ",hr=0.4" : "") +
          (i % 5 == 2 ? ",aspect=45,aspect_min=10,aspect_max=40" : "") + "\n";
   }
@@ -280,7 +280,7 @@ TEST_F(SensorProcess, SameInputsThroughHazardReplayGiveTheSamePostings_Issue4) {
         vehicle->notify("UHZ_CLASSIFY_REQUEST", "vname=alpha,label=" + label + ",priority=70");
         ++requested;
       }
-      return m.key == "VIEW_POLYGON" && moos::text::starts_with(m.sval, "pts={20," + n(y + 2) + ":");
+      return m.key == "VIEW_POLYGON" && base::starts_with(m.sval, "pts={20," + n(y + 2) + ":");
     })) << "y " << y;
     sleep_ticks(1.5);
   }

@@ -17,7 +17,7 @@
 #include "moos/clock.hpp"
 #include "moos/command_line.hpp"
 #include "moos/mission.hpp"
-#include "moos/text.hpp"
+#include "base/text.hpp"
 #include "scratch_files.hpp"
 
 namespace ufld_hazard_sensor::testing {
@@ -41,8 +41,8 @@ inline bool contains(const std::string& text, const std::string& part) {
 /// The MOOS application framework's own postings (APPCAST, <APPNAME>_STATUS, _ITER_GAP,
 /// _ITER_LEN): what the app posts besides what the engine decides.
 inline bool is_framework_posting(const std::string& var) {
-  return var == "APPCAST" || moos::text::ends_with(var, "_STATUS") ||
-         moos::text::ends_with(var, "_ITER_GAP") || moos::text::ends_with(var, "_ITER_LEN");
+  return var == "APPCAST" || base::ends_with(var, "_STATUS") ||
+         base::ends_with(var, "_ITER_GAP") || base::ends_with(var, "_ITER_LEN");
 }
 
 /// The app started on a bus (community "shoreside", warp 1) at ManualClock's default epoch.

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "hazard/text.hpp"
+#include "base/text.hpp"
 #include "mission/hazard_manager.hpp"
 
 namespace mission {
@@ -118,7 +118,7 @@ TEST(Manager, DetectionUpdatesTheBeliefAndRequestsAClassification) {
   EXPECT_EQ(out.postings[0].variable, "UHZ_CLASSIFY_REQUEST");
   const double priority =
       std::round(classification_priority(b->p_hazard, kPclass, {}, 2) * 100) / 100;
-  EXPECT_EQ(out.postings[0].text, "vname=archie,label=75,priority=" + hazard::fmt(priority));
+  EXPECT_EQ(out.postings[0].text, "vname=archie,label=75,priority=" + base::fmt(priority));
   EXPECT_GT(priority, 0.0);
   EXPECT_EQ(m.counters().classify_requests, 1);
 }

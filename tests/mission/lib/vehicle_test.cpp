@@ -5,7 +5,7 @@
 #include "mission/geodesy.hpp"
 #include "mission/survey.hpp"
 #include "hazard/heading_history.hpp"
-#include "hazard/text.hpp"
+#include "base/text.hpp"
 #include "mission/vehicle.hpp"
 
 namespace mission {
@@ -51,7 +51,7 @@ TEST(Vehicle, TurnRateNeverExceedsTheLimitBetweenAnyTwoPoses) {
   for (int i = 0; i < 20000 && !v.done(); ++i) {
     t += ticks[i % 7];
     const Pose now = v.advance_to(t);
-    const double turn_deg = std::abs(hazard::norm180(now.heading_deg - last.heading_deg));
+    const double turn_deg = std::abs(base::norm180(now.heading_deg - last.heading_deg));
     const double rate = turn_deg / (t - last.time_s);
     ASSERT_LE(rate, p.max_turn_rate_dps * (1 + 1e-9)) << "at t=" << t;
     last = now;

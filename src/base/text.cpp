@@ -1,12 +1,13 @@
-#include "hazard/text.hpp"
+#include "base/text.hpp"
 
 #include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 
-namespace hazard {
+namespace base {
 
 namespace {
 
@@ -64,6 +65,19 @@ std::string fmt(double value, int decimals) {
   return s;
 }
 
+std::string format_g(double value, int significant) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*g", significant, value);
+  return buf;
+}
+
+std::string format_shortest(double value) {
+  char buf[64];
+  const auto [ptr, ec] = std::to_chars(buf, buf + sizeof buf, value);
+  if (ec != std::errc()) return format_g(value, 17);
+  return std::string(buf, ptr);
+}
+
 std::string_view trim(std::string_view text) {
   const auto first = text.find_first_not_of(kTrimmed);
   if (first == std::string_view::npos) return {};
@@ -91,6 +105,37 @@ std::string to_upper(std::string_view text) {
   return out;
 }
 
+std::string remove_blanks(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  for (char c : text)
+    if (kBlanks.find(c) == std::string_view::npos) out.push_back(c);
+  return out;
+}
+
+bool starts_with(std::string_view text, std::string_view prefix) {
+  return text.size() >= prefix.size() && text.compare(0, prefix.size(), prefix) == 0;
+}
+
+bool ends_with(std::string_view text, std::string_view suffix) {
+  return text.size() >= suffix.size() &&
+         text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+std::vector<std::string_view> split(std::string_view text, char separator) {
+  std::vector<std::string_view> out;
+  std::size_t start = 0;
+  while (true) {
+    const auto at = text.find(separator, start);
+    if (at == std::string_view::npos) {
+      out.push_back(text.substr(start));
+      return out;
+    }
+    out.push_back(text.substr(start, at - start));
+    start = at + 1;
+  }
+}
+
 std::optional<double> parse_number(std::string_view text) {
   text = trim(text);
   if (!is_decimal_number(text)) return std::nullopt;
@@ -110,6 +155,16 @@ std::optional<std::uint64_t> parse_unsigned(std::string_view text) {
   std::uint64_t v = 0;
   const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
   if (ec != std::errc() || ptr != text.data() + text.size()) return std::nullopt;
+  return v;
+}
+
+std::optional<long long> parse_integer(std::string_view text, long long min, long long max) {
+  text = trim(text);
+  if (!text.empty() && text.front() == '+') text.remove_prefix(1);
+  long long v = 0;
+  const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (text.empty() || ec != std::errc() || ptr != text.data() + text.size()) return std::nullopt;
+  if (v < min || v > max) return std::nullopt;
   return v;
 }
 
@@ -180,4 +235,4 @@ std::string excerpt(std::string_view text, std::size_t max_chars) {
   return out;
 }
 
-}  // namespace hazard
+}  // namespace base

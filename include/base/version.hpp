@@ -2,7 +2,7 @@
 // Release identity shared by every binary's --version banner.
 #include <string_view>
 
-namespace hazard {
+namespace base {
 /// Project release, e.g. "1.0.0".
 std::string_view release_version();
-}  // namespace hazard
+}  // namespace base

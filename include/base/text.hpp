@@ -1,0 +1,92 @@
+#pragma once
+// The text grammar every library and program shares: trimming, case, splitting, numbers,
+// booleans, angles and number formatting. One definition of "what is a number" for the engine,
+// the MOOS layer, the mission logic and the apps (design.md, part 0).
+//
+// Contract:
+// - Numbers follow the rulings ("Numbers"): [+-]digits[.digits][(e|E)[+-]digits] with at least
+//   one digit in the mantissa, blanks trimmed; anything else, and anything non-finite after
+//   conversion (nan, inf, 1e999), is nullopt. Underflow (1e-400) is finite and reads as 0.
+// - Booleans: true/yes/on and false/no/off in any case (spec section 0, libMOOS).
+// - Trimming removes blanks, tabs, CR and LF from both ends.
+// - Number formatting follows spec section 0 (FIX, FMT); the C locale is assumed throughout.
+// - Angles are normalised with fmod, never with loops (N3); inputs must be finite.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace base {
+
+/// Blanks as the MOOS mission reader sees them inside a line: space, tab and CR (spec 6.2).
+inline constexpr std::string_view kBlanks = " \t\r";
+
+// ---- case, trimming, splitting ---------------------------------------------------------------
+
+/// Blanks, tabs, CR and LF removed from both ends.
+std::string_view trim(std::string_view text);
+/// Every space, tab and CR removed (libMOOS global values, spec 6.2).
+std::string remove_blanks(std::string_view text);
+/// ASCII case-insensitive equality.
+bool iequals(std::string_view a, std::string_view b);
+std::string to_lower(std::string_view text);
+std::string to_upper(std::string_view text);
+bool starts_with(std::string_view text, std::string_view prefix);
+bool ends_with(std::string_view text, std::string_view suffix);
+
+/// Splits on every `separator`; pieces are not trimmed and empty pieces are kept.
+std::vector<std::string_view> split(std::string_view text, char separator);
+/// Splits on every `separator`, trimming each piece; keeps empty pieces.
+std::vector<std::string_view> split_trimmed(std::string_view text, char separator);
+
+/// One `key=value` piece of a comma list. `has_equals` is false for a piece without '='
+/// (then `key` holds the whole trimmed piece and `value` is empty).
+struct KeyValue {
+  std::string_view key;
+  std::string_view value;
+  bool has_equals = true;
+};
+
+/// Splits "a=1, b=2" on `separator` (no quoting), each piece at its first '=', both sides trimmed.
+/// With `respect_braces`, separators inside {...} do not split (NODE_REPORT, pts={...}).
+/// Empty pieces (",,") are skipped.
+std::vector<KeyValue> split_key_values(std::string_view text, char separator = ',',
+                                       bool respect_braces = false);
+
+// ---- numbers and booleans ---------------------------------------------------------------------
+
+/// A finite decimal number (grammar above) that uses all of `text` after trimming.
+std::optional<double> parse_number(std::string_view text);
+/// A whole number in [0, 2^64 - 1], decimal digits only (an optional leading '+').
+std::optional<std::uint64_t> parse_unsigned(std::string_view text);
+/// A whole decimal number in [min, max] that uses all of `text` after trimming.
+std::optional<long long> parse_integer(std::string_view text, long long min, long long max);
+/// true/yes/on and false/no/off, any case; nullopt otherwise. "toggle" is not a value.
+std::optional<bool> parse_bool(std::string_view text);
+
+// ---- formatting -------------------------------------------------------------------------------
+
+/// FIX(v, d): C printf("%.*f", d, v). `decimals` is clamped to [0, 30].
+std::string fix(double value, int decimals);
+/// FMT(v, d): FIX(v, d), then (only if the text has a '.') trailing '0's and then a trailing '.'
+/// removed, and finally "-0" mapped to "0" (spec section 0). FMT(0.6561, 3) == "0.656".
+std::string fmt(double value, int decimals = 5);
+/// printf-style "%g" with `significant` digits (C++ stream default is 6).
+std::string format_g(double value, int significant = 6);
+/// The shortest decimal text that reads back as exactly `value`.
+std::string format_shortest(double value);
+
+/// For warnings: the text, cut to `max_chars` with " ... (N bytes)" appended when longer, so a
+/// 1 MB value never floods a report.
+std::string excerpt(std::string_view text, std::size_t max_chars = 160);
+
+// ---- angles -----------------------------------------------------------------------------------
+
+/// Angle in [0, 360) (never -0.0), exact for every finite input, in one fmod (no loop, N3).
+double norm360(double angle_deg);
+/// Angle in (-180, 180].
+double norm180(double angle_deg);
+
+}  // namespace base

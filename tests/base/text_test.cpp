@@ -1,0 +1,149 @@
+// The text layer: FMT/FIX (spec 0), strict numbers (rulings "Numbers"), words, lists, angles (N3).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "base/text.hpp"
+
+namespace base {
+namespace {
+
+TEST(Text, FixIsPrintfFixed) {
+  EXPECT_EQ(base::fix(0.9, 2), "0.90");
+  EXPECT_EQ(base::fix(0.6561, 2), "0.66");
+  EXPECT_EQ(base::fix(25, 1), "25.0");
+  EXPECT_EQ(base::fix(-0.001, 2), "-0.00");
+  EXPECT_EQ(base::fix(1e300, 0).size(), 301u);  // long values do not truncate
+}
+
+TEST(Text, FmtMatchesSpecExamples_Spec0) {
+  EXPECT_EQ(base::fmt(25, 1), "25");
+  EXPECT_EQ(base::fmt(0.6561, 3), "0.656");
+  EXPECT_EQ(base::fmt(0.7396, 3), "0.74");
+  EXPECT_EQ(base::fmt(-293.60001, 2), "-293.6");
+  EXPECT_EQ(base::fmt(-0.001, 2), "0");
+  EXPECT_EQ(base::fmt(0.73), "0.73");  // default 5 decimals
+  EXPECT_EQ(base::fmt(100), "100");    // zeros before the point stay
+  EXPECT_EQ(base::fmt(-0.4, 0), "0");  // "-0" without a point also maps to "0"
+}
+
+TEST(Text, NumbersAcceptSignFractionExponent_Rulings) {
+  EXPECT_EQ(base::parse_number("42"), 42.0);
+  EXPECT_EQ(base::parse_number(" -3.5 "), -3.5);
+  EXPECT_EQ(base::parse_number("+.5"), 0.5);
+  EXPECT_EQ(base::parse_number("5."), 5.0);
+  EXPECT_EQ(base::parse_number("1e3"), 1000.0);
+  EXPECT_EQ(base::parse_number("2.5E-1"), 0.25);
+  EXPECT_EQ(base::parse_number("1e-400"), 0.0);  // underflow is finite
+}
+
+TEST(Text, NumbersRejectNonFiniteAndJunk_Rulings) {
+  for (const char* bad : {"", " ", "nan", "NaN", "inf", "-inf", "1e999", "-1e999", "0x10", "1e",
+                          "e5", ".", "-", "--5", "1.2.3", "5 m", "1,5", "infinity", "1e+"}) {
+    EXPECT_FALSE(base::parse_number(bad)) << bad;
+  }
+}
+
+TEST(Text, UnsignedWholeNumbers) {
+  EXPECT_EQ(base::parse_unsigned("18446744073709551615"), 18446744073709551615ull);
+  EXPECT_EQ(base::parse_unsigned("+7"), 7u);
+  EXPECT_FALSE(base::parse_unsigned("18446744073709551616"));
+  EXPECT_FALSE(base::parse_unsigned("-1"));
+  EXPECT_FALSE(base::parse_unsigned("1.5"));
+  EXPECT_FALSE(base::parse_unsigned("1e3"));
+}
+
+TEST(Text, BooleanWordsAnyCase_Spec0) {
+  for (const char* t : {"true", "TRUE", "yes", "On"}) EXPECT_EQ(base::parse_bool(t), true) << t;
+  for (const char* f : {"false", "No", "OFF"}) EXPECT_EQ(base::parse_bool(f), false) << f;
+  for (const char* x : {"1", "0", "toggle", "", "truee"}) EXPECT_FALSE(base::parse_bool(x)) << x;
+}
+
+TEST(Text, KeyValueListsTrimAndSplitAtFirstEquals) {
+  const auto kv = base::split_key_values(" a = 1 , b=x=y,, c ,d=");
+  ASSERT_EQ(kv.size(), 4u);
+  EXPECT_EQ(kv[0].key, "a");
+  EXPECT_EQ(kv[0].value, "1");
+  EXPECT_EQ(kv[1].key, "b");
+  EXPECT_EQ(kv[1].value, "x=y");
+  EXPECT_EQ(kv[2].key, "c");
+  EXPECT_FALSE(kv[2].has_equals);
+  EXPECT_EQ(kv[3].key, "d");
+  EXPECT_EQ(kv[3].value, "");
+}
+
+TEST(Text, BracesProtectCommasWhenAsked) {
+  const auto kv = base::split_key_values("pts={1,2:3,4},label=x", ',', true);
+  ASSERT_EQ(kv.size(), 2u);
+  EXPECT_EQ(kv[0].value, "{1,2:3,4}");
+  EXPECT_EQ(base::split_key_values("pts={1,2:3,4},label=x").size(), 4u);
+}
+
+TEST(Text, CaseHelpers) {
+  EXPECT_TRUE(base::iequals("Sensor_Config", "sensor_config"));
+  EXPECT_FALSE(base::iequals("a", "ab"));
+  EXPECT_EQ(base::to_upper("archie-2"), "ARCHIE-2");
+  EXPECT_EQ(base::to_lower("AbC"), "abc");
+  EXPECT_EQ(base::trim(" \t x y \r\n"), "x y");
+}
+
+TEST(Text, AnglesNormaliseWithoutLoops_N3) {
+  EXPECT_EQ(base::norm360(-90), 270);
+  EXPECT_EQ(base::norm360(720), 0);
+  EXPECT_EQ(base::norm360(359.5), 359.5);
+  EXPECT_EQ(base::norm360(-1e-17), 0);  // would round to 360
+  EXPECT_EQ(base::norm180(180), 180);
+  EXPECT_EQ(base::norm180(-180), 180);  // (-180, 180]
+  EXPECT_EQ(base::norm180(190), -170);
+  // A 20-digit heading passes the number grammar; the original looped ~1e17 times on it.
+  const double huge = *base::parse_number("12345678901234567890");
+  const double r = base::norm360(huge);
+  EXPECT_GE(r, 0.0);
+  EXPECT_LT(r, 360.0);
+  EXPECT_TRUE(std::isfinite(base::norm360(1e308)));
+}
+
+TEST(Text, ExcerptCutsHugeValues) {
+  const std::string big(1 << 20, 'x');
+  const std::string e = base::excerpt(big, 10);
+  EXPECT_EQ(e, "xxxxxxxxxx ... (1048576 bytes)");
+  EXPECT_EQ(base::excerpt("short", 10), "short");
+}
+
+TEST(Text, UnderflowIsFiniteAndReadsAsZero_Rulings) {
+  ASSERT_TRUE(base::parse_number("1e-400").has_value());
+  EXPECT_EQ(*base::parse_number("1e-400"), 0.0);
+  EXPECT_FALSE(base::parse_number("1e400").has_value());
+  EXPECT_FALSE(base::parse_number("0x10").has_value());
+}
+
+TEST(Text, IntegersWithinBoundsOnly) {
+  EXPECT_EQ(base::parse_integer(" +42 ", 1, 65535), 42);
+  EXPECT_FALSE(base::parse_integer("0", 1, 65535).has_value());
+  EXPECT_FALSE(base::parse_integer("65536", 1, 65535).has_value());
+  EXPECT_FALSE(base::parse_integer("4.2", 0, 100).has_value());
+  EXPECT_FALSE(base::parse_integer("", 0, 100).has_value());
+}
+
+TEST(Text, MissionBlanksAndPrefixes_Spec6_2) {
+  EXPECT_EQ(base::remove_blanks(" a b\t\rc "), "abc");
+  EXPECT_TRUE(base::starts_with("ProcessConfig", "Process"));
+  EXPECT_FALSE(base::starts_with("Pro", "Process"));
+  EXPECT_TRUE(base::ends_with("file.alog", ".alog"));
+  EXPECT_FALSE(base::ends_with("alog", "file.alog"));
+  const auto pieces = base::split("a,,b ", ',');
+  ASSERT_EQ(pieces.size(), 3u);
+  EXPECT_EQ(pieces[1], "");
+  EXPECT_EQ(pieces[2], "b ");
+}
+
+TEST(Text, GeneralAndShortestFormats) {
+  EXPECT_EQ(base::format_g(0.1 + 0.2), "0.3");
+  EXPECT_EQ(base::format_g(123456789.0), "1.23457e+08");
+  EXPECT_EQ(base::format_shortest(0.1 + 0.2), "0.30000000000000004");
+  EXPECT_EQ(base::format_shortest(2.5), "2.5");
+}
+
+}  // namespace
+}  // namespace base
