@@ -39,7 +39,7 @@
 
 #include "hazard/engine.hpp"
 #include "hazard/geodesy.hpp"
-#include "hazard/text.hpp"
+#include "base/text.hpp"
 #include "moos/alog.hpp"
 #include "replay.hpp"
 
@@ -47,8 +47,8 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 namespace fs = std::filesystem;
-using hazard::fix;
-using hazard::fmt;
+using base::fix;
+using base::fmt;
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kDeg = kPi / 180.0;
@@ -214,8 +214,8 @@ std::vector<hazard::ConfigEntry> entries(const std::string& text) {
     ++line;
     const auto eq = l.find('=');
     if (eq == std::string::npos) continue;
-    out.push_back({std::string(hazard::trim(l.substr(0, eq))),
-                   std::string(hazard::trim(l.substr(eq + 1))), "bench.moos", line});
+    out.push_back({std::string(base::trim(l.substr(0, eq))),
+                   std::string(base::trim(l.substr(eq + 1))), "bench.moos", line});
   }
   return out;
 }
@@ -234,7 +234,7 @@ SensingResult sense(const Track& track, const std::vector<Object>& objects,
     const double t = std::min(k * interval_s, track.t3);
     const PathPose p = track.at(t);
     mail.emplace_back(t, "NAME=v,X=" + fix(p.x, 9) + ",Y=" + fix(p.y, 9) + ",SPD=2,HDG=" +
-                             fix(hazard::norm360(p.heading_deg), 9));
+                             fix(base::norm360(p.heading_deg), 9));
     if (t >= track.t3) break;
   }
   SensingResult r;

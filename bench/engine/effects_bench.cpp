@@ -27,7 +27,7 @@
 #include "hazard/dice.hpp"
 #include "hazard/engine.hpp"
 #include "hazard/reference_scenario.hpp"
-#include "hazard/text.hpp"
+#include "base/text.hpp"
 
 // ---- counting allocator (this program only) -----------------------------------------------------
 
@@ -110,8 +110,8 @@ std::vector<hazard::ConfigEntry> block(const Scene& s) {
       start = end + 1;
       const auto eq = l.find('=');
       if (eq == std::string::npos) continue;
-      out.push_back({std::string(hazard::trim(l.substr(0, eq))),
-                     std::string(hazard::trim(l.substr(eq + 1))), "bench.moos", ++line});
+      out.push_back({std::string(base::trim(l.substr(0, eq))),
+                     std::string(base::trim(l.substr(eq + 1))), "bench.moos", ++line});
     }
   }
   return out;
@@ -130,9 +130,9 @@ std::vector<std::vector<std::string>> reports(bool lat_lon) {
       if (lat_lon) {
         double lat, lon, h;
         frame.Reverse(x, y, 0.0, lat, lon, h);
-        pos = "LAT=" + hazard::fmt(lat, 10) + ",LON=" + hazard::fmt(lon, 10);
+        pos = "LAT=" + base::fmt(lat, 10) + ",LON=" + base::fmt(lon, 10);
       } else {
-        pos = "X=" + hazard::fmt(x, 2) + ",Y=" + hazard::fmt(y, 2);
+        pos = "X=" + base::fmt(x, 2) + ",Y=" + base::fmt(y, 2);
       }
       out[k].push_back("NAME=v" + std::to_string(v) + "," + pos + ",SPD=1.5,HDG=90");
     }
