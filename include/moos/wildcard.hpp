@@ -4,8 +4,10 @@
 //
 // Contract:
 // - wildcard_match: `*` matches any run of characters (including none), `?` exactly one; every
-//   other character matches itself, case-sensitively; the whole text must match. Runs in
-//   O(|pattern| * |text|) time at worst, never exponential.
+//   other character matches itself, case-sensitively; the whole text must match. Runs in time
+//   linear in the text: O(|text| * ceil(|pattern| / 64)) word operations at worst.
+// - A registration whose pattern is longer than kMaxWildcardPatternChars is refused by
+//   parse_wildcard_spec (a problem is reported) so a server never matches one.
 // - format_wildcard_spec writes `AppPattern=<a>,VarPattern=<v>,Interval=<x>` with the interval
 //   in C++ default stream formatting (6 significant digits), as libMOOS does.
 // - parse_wildcard_spec accepts commas or blanks between items (pymoos2 uses spaces, spec 5.5);
@@ -21,6 +23,10 @@
 #include <string_view>
 
 namespace moos {
+
+/// The longest AppPattern or VarPattern a server accepts, in characters: MOOS patterns are
+/// variable names with a few wildcards; this bounds the cost of matching (issue 12).
+inline constexpr std::size_t kMaxWildcardPatternChars = 256;
 
 bool wildcard_match(std::string_view pattern, std::string_view text);
 

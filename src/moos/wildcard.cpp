@@ -1,34 +1,85 @@
 // Wildcard pattern matching and the wildcard registration string (wire spec 4.1, 5.5).
-// The matcher is the classic greedy two-pointer algorithm with one backtrack point for the last
-// `*`, which is linear in practice and never exponential.
+//
+// Matching runs in time linear in the text for a bounded pattern (issue 12: the classic greedy
+// matcher with a backtrack point is O(|pattern| x |text|), and a long pattern against a long
+// name stalled the server). The pattern is split at its '*'s into segments. Without a '*' the
+// text must match the one segment exactly. Otherwise the first segment must match at the start,
+// the last at the end, and every middle segment is found at its leftmost place after the
+// previous one: leftmost is always right for '*'-separated segments, because taking a segment
+// earlier leaves more text for the ones after it. Each segment is found in one pass over the
+// text with the Shift-And method, in ceil(|segment| / 64) word operations per character.
 
 #include "moos/wildcard.hpp"
+
+#include <cstdint>
+#include <vector>
 
 #include "base/text.hpp"
 
 namespace moos {
 
-bool wildcard_match(std::string_view pattern, std::string_view text) {
-  std::size_t p = 0;
-  std::size_t t = 0;
-  std::size_t star = std::string_view::npos;  // position of the last '*' seen in the pattern
-  std::size_t star_text = 0;                  // text position that '*' currently covers up to
-  while (t < text.size()) {
-    if (p < pattern.size() && (pattern[p] == '?' || pattern[p] == text[t])) {
-      ++p;
-      ++t;
-    } else if (p < pattern.size() && pattern[p] == '*') {
-      star = p++;
-      star_text = t;
-    } else if (star != std::string_view::npos) {
-      p = star + 1;
-      t = ++star_text;
+namespace {
+
+constexpr std::size_t kBitsPerWord = 64;
+constexpr std::size_t kNotFound = std::string_view::npos;
+
+bool segment_matches_at(std::string_view segment, std::string_view text, std::size_t at) {
+  if (at + segment.size() > text.size()) return false;
+  for (std::size_t i = 0; i < segment.size(); ++i)
+    if (segment[i] != '?' && segment[i] != text[at + i]) return false;
+  return true;
+}
+
+// Shift-And over W = ceil(|segment| / 64) words: bit i of `state` is set when the first i+1
+// characters of the segment match the text ending at the current character. One pass over the
+// text, W word operations per character ('?' sets its bit in every character's mask).
+std::size_t find_segment(std::string_view segment, std::string_view text) {
+  if (segment.empty()) return 0;
+  if (segment.size() > text.size()) return kNotFound;
+  const std::size_t words = (segment.size() + kBitsPerWord - 1) / kBitsPerWord;
+  std::vector<std::uint64_t> masks(256 * words, 0);
+  for (std::size_t i = 0; i < segment.size(); ++i) {
+    const std::uint64_t bit = std::uint64_t{1} << (i % kBitsPerWord);
+    const std::size_t word = i / kBitsPerWord;
+    if (segment[i] == '?') {
+      for (std::size_t c = 0; c < 256; ++c) masks[c * words + word] |= bit;
     } else {
-      return false;
+      masks[static_cast<unsigned char>(segment[i]) * words + word] |= bit;
     }
   }
-  while (p < pattern.size() && pattern[p] == '*') ++p;
-  return p == pattern.size();
+  const std::size_t last_word = (segment.size() - 1) / kBitsPerWord;
+  const std::uint64_t done = std::uint64_t{1} << ((segment.size() - 1) % kBitsPerWord);
+  std::vector<std::uint64_t> state(words, 0);
+  for (std::size_t j = 0; j < text.size(); ++j) {
+    const std::uint64_t* mask = &masks[static_cast<unsigned char>(text[j]) * words];
+    std::uint64_t carry = 1;  // a match may start at every character
+    for (std::size_t w = 0; w < words; ++w) {
+      const std::uint64_t next_carry = state[w] >> (kBitsPerWord - 1);
+      state[w] = ((state[w] << 1) | carry) & mask[w];
+      carry = next_carry;
+    }
+    if (state[last_word] & done) return j + 1 - segment.size();
+  }
+  return kNotFound;
+}
+
+}  // namespace
+
+bool wildcard_match(std::string_view pattern, std::string_view text) {
+  const std::vector<std::string_view> segments = base::split(pattern, '*');
+  if (segments.size() == 1) return pattern.size() == text.size() && segment_matches_at(pattern, text, 0);
+  const std::string_view first = segments.front();
+  const std::string_view last = segments.back();
+  if (first.size() + last.size() > text.size()) return false;
+  if (!segment_matches_at(first, text, 0)) return false;
+  if (!segment_matches_at(last, text, text.size() - last.size())) return false;
+  std::string_view middle = text.substr(first.size(), text.size() - first.size() - last.size());
+  for (std::size_t i = 1; i + 1 < segments.size(); ++i) {
+    const std::size_t at = find_segment(segments[i], middle);
+    if (at == kNotFound) return false;
+    middle.remove_prefix(at + segments[i].size());
+  }
+  return true;
 }
 
 bool has_wildcards(std::string_view pattern) {
@@ -60,10 +111,15 @@ WildcardSpec parse_wildcard_spec(std::string_view input, std::string* problem) {
     }
     const std::string_view key = item.substr(0, eq);
     const std::string_view value = item.substr(eq + 1);
-    if (key == "AppPattern") {
-      spec.app_pattern = std::string(value);
-    } else if (key == "VarPattern") {
-      spec.var_pattern = std::string(value);
+    if (key == "AppPattern" || key == "VarPattern") {
+      std::string& pattern = key == "AppPattern" ? spec.app_pattern : spec.var_pattern;
+      if (value.size() > kMaxWildcardPatternChars) {
+        note(std::string(key) + " of " + std::to_string(value.size()) +
+             " characters is longer than " + std::to_string(kMaxWildcardPatternChars));
+        pattern.clear();  // matches only the empty string: nothing
+      } else {
+        pattern = std::string(value);
+      }
     } else if (key == "Interval") {
       const auto interval = base::parse_number(value);
       if (!interval || *interval < 0.0)
