@@ -18,10 +18,9 @@
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <utility>
 
+#include "base/file.hpp"
 #include "base/text.hpp"
 
 namespace moos {
@@ -46,15 +45,6 @@ struct SourceLine {
   std::string file;
   int line = 0;
 };
-
-std::optional<std::string> read_whole_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  if (in.bad()) return std::nullopt;
-  return ss.str();
-}
 
 /// Removes the comment and the first pair of double quotes (libMOOS verbatim quoting, spec 6.1).
 /// A `//` inside that pair does not start a comment.
@@ -325,13 +315,13 @@ class Reader {
             "#include nested deeper than " + std::to_string(kMaxIncludeDepth) + " files");
       return;
     }
-    const auto content = read_whole_file(path.string());
-    if (!content) {
-      error(file_name, line_no, "cannot read included file " + shown);
+    const base::FileText content = base::read_regular_file(path.string());
+    if (!content.text) {
+      error(file_name, line_no, "cannot read included file " + shown + ": " + content.problem);
       return;
     }
     include_stack_.push_back(canonical);
-    expand(*content, shown, depth + 1);
+    expand(*content.text, shown, depth + 1);
     include_stack_.pop_back();
   }
 
@@ -411,12 +401,13 @@ bool MissionError::concerns(std::string_view app_name) const {
 
 std::optional<MissionFile> MissionFile::load(const std::string& path, const MissionOptions& options,
                                              std::vector<MissionError>* errors) {
-  const auto content = read_whole_file(path);
-  if (!content) {
-    if (errors) errors->push_back(MissionError{path, 0, "cannot read the mission file", {}});
+  const base::FileText content = base::read_regular_file(path);
+  if (!content.text) {
+    if (errors)
+      errors->push_back(MissionError{path, 0, "cannot read the mission file: " + content.problem, {}});
     return std::nullopt;
   }
-  return parse(*content, path, options, errors);
+  return parse(*content.text, path, options, errors);
 }
 
 MissionFile MissionFile::parse(std::string_view text, const std::string& file_name,

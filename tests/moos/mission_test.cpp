@@ -420,7 +420,15 @@ TEST(MissionFiles, UnreadableFileReturnsNulloptWithAnError) {
   const auto m = MissionFile::load("/nonexistent/dir/x.moos", {}, &errors);
   EXPECT_FALSE(m.has_value());
   ASSERT_EQ(errors.size(), 1u);
-  EXPECT_EQ(errors[0].to_string(), "/nonexistent/dir/x.moos: cannot read the mission file");
+  EXPECT_EQ(errors[0].to_string(), "/nonexistent/dir/x.moos: cannot read the mission file: "
+            "cannot be opened: No such file or directory");
+}
+
+TEST(MissionFiles, ADirectoryAsMissionFileIsRefusedWithTheReason_Issue12) {
+  std::vector<MissionError> errors;
+  EXPECT_FALSE(MissionFile::load(fs::temp_directory_path().string(), {}, &errors).has_value());
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_EQ(errors[0].message, "cannot read the mission file: is a directory");
 }
 
 TEST(MissionFiles, DirectoryIsTheFolderOfThePath) {

@@ -1,11 +1,11 @@
 #include "app_support.hpp"
 
+#include "base/file.hpp"
+
 #include <chrono>
 #include <exception>
 #include <filesystem>
-#include <fstream>
 #include <random>
-#include <sstream>
 #include <utility>
 
 namespace app_support {
@@ -21,12 +21,7 @@ std::uint64_t operating_system_seed() {
 }
 
 std::optional<std::string> read_text_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) return std::nullopt;
-  return text.str();
+  return base::read_regular_file(path).text;
 }
 
 hazard::HazardFileReader mission_relative_reader(std::string mission_directory) {
