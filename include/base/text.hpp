@@ -82,6 +82,11 @@ std::string format_shortest(double value);
 /// 1 MB value never floods a report.
 std::string excerpt(std::string_view text, std::size_t max_chars = 160);
 
+/// Text from outside made safe for a log line (issue 12, "Log and record injection"): every
+/// control byte (below 0x20, and 0x7F) and every backslash is written as `\xHH`, so a client
+/// can neither end a line nor forge one. Printable ASCII and bytes >= 0x80 (UTF-8) are kept.
+std::string escape_for_log(std::string_view text);
+
 // ---- angles -----------------------------------------------------------------------------------
 
 /// Angle in [0, 360) (never -0.0), exact for every finite input, in one fmod (no loop, N3).

@@ -214,6 +214,23 @@ std::vector<std::string_view> split_trimmed(std::string_view text, char separato
   }
 }
 
+std::string escape_for_log(std::string_view text) {
+  static constexpr char kHex[] = "0123456789ABCDEF";
+  std::string out;
+  out.reserve(text.size());
+  for (char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte < 0x20 || byte == 0x7F || c == '\\') {
+      out += "\\x";
+      out.push_back(kHex[byte >> 4]);
+      out.push_back(kHex[byte & 0xF]);
+    } else {
+      out.push_back(c);
+    }
+  }
+  return out;
+}
+
 // fmod is exact (the remainder of two doubles is representable), so any finite heading, however
 // large (1e15, 1e300), normalises in one step without a loop (N3).
 double norm360(double angle_deg) {

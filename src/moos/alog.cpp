@@ -79,14 +79,28 @@ std::string alog_header(std::string_view log_name, double logstart_epoch_s) {
   return out;
 }
 
+namespace {
+
+// A VARIABLE or SOURCE column: one word, whatever a client sent. Blanks would shift the
+// columns and a newline would forge a record, so both are escaped (issue 12).
+std::string column_text(std::string_view text) {
+  if (text.empty()) return "_";
+  std::string out = base::escape_for_log(text);
+  std::string::size_type blank = 0;
+  while ((blank = out.find(' ', blank)) != std::string::npos) out.replace(blank, 1, "\\x20");
+  return out;
+}
+
+}  // namespace
+
 std::string format_alog_line(const AlogEntry& entry) {
   char time[64];
   std::snprintf(time, sizeof time, "%.3f", entry.time_s);
   std::string out;
   out.reserve(48 + entry.variable.size() + entry.value.size());
   append_padded(out, time, 10);
-  append_padded(out, entry.variable.empty() ? "_" : entry.variable, 20);
-  append_padded(out, entry.source.empty() ? "_" : entry.source, 16);
+  append_padded(out, column_text(entry.variable), 20);
+  append_padded(out, column_text(entry.source), 16);
   for (char c : entry.value) out.push_back(c == '\n' || c == '\r' ? ' ' : c);
   out.push_back('\n');
   return out;

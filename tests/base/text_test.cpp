@@ -145,5 +145,14 @@ TEST(Text, GeneralAndShortestFormats) {
   EXPECT_EQ(base::format_shortest(2.5), "2.5");
 }
 
+TEST(Text, EscapeForLogKeepsOneLineAndUtf8_Issue12) {
+  EXPECT_EQ(base::escape_for_log("plain text, 1.5"), "plain text, 1.5");
+  EXPECT_EQ(base::escape_for_log("a\nb\rc\td"), "a\\x0Ab\\x0Dc\\x09d");
+  EXPECT_EQ(base::escape_for_log(std::string("n\0ul", 4)), "n\\x00ul");
+  EXPECT_EQ(base::escape_for_log("back\\slash"), "back\\x5Cslash");
+  EXPECT_EQ(base::escape_for_log("\x1b[31mred"), "\\x1B[31mred");
+  EXPECT_EQ(base::escape_for_log("caf\xc3\xa9"), "caf\xc3\xa9");
+}
+
 }  // namespace
 }  // namespace base

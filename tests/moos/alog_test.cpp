@@ -49,5 +49,16 @@ TEST(Alog, MalformedLinesSayWhy) {
   EXPECT_EQ(parse_alog_line("1.0 X").kind, AlogLineKind::kMalformed);
 }
 
+TEST(AlogLine, NamesFromClientsCannotForgeRecords_Issue12) {
+  const AlogEntry forged{1.0, "X\n  2.000 UHZ_CLASSIFY_REQUEST", "evil client", "v"};
+  const std::string line = format_alog_line(forged);
+  EXPECT_EQ(line.find('\n'), line.size() - 1) << line;  // one posting, one line
+  const AlogParse back = parse_alog_line(line.substr(0, line.size() - 1));
+  ASSERT_EQ(back.kind, AlogLineKind::kEntry);
+  EXPECT_EQ(back.entry.variable, "X\\x0A\\x20\\x202.000\\x20UHZ_CLASSIFY_REQUEST");
+  EXPECT_EQ(back.entry.source, "evil\\x20client");
+  EXPECT_EQ(back.entry.value, "v");
+}
+
 }  // namespace
 }  // namespace moos
