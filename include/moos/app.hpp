@@ -201,6 +201,8 @@ class MoosApp {
   };
 
   void handle_framework_mail(std::vector<Message>& mail);
+  /// A standing run warning with the count of mail the comms dropped unread (issue 12).
+  void report_dropped_mail();
   bool appcast_requested() const;
   void post_status_if_due();
   void post_report(double iterate_start_moos_s);
@@ -219,6 +221,8 @@ class MoosApp {
   double next_due_moos_s_ = 0.0;
   std::uint64_t iteration_ = 0;
   std::uint64_t seen_connections_ = 0;
+  std::uint64_t reported_mail_dropped_ = 0;  ///< comms_->mail_dropped() when last reported
+  std::string dropped_mail_warning_;          ///< the standing warning about it, if any
   std::optional<double> last_status_moos_s_;
   std::optional<double> last_iterate_start_moos_s_;
   std::optional<double> last_term_report_moos_s_;

@@ -18,6 +18,7 @@
 // - Every public function is thread-safe. Callbacks run on the implementation's own thread
 //   (TcpClient: its comms thread) with no lock held; they may call any function of this object.
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -78,6 +79,8 @@ class Comms {
 
   /// All mail received since the last call, oldest first.
   virtual std::vector<Message> fetch() = 0;
+  /// Mail dropped unread since the start because the inbox was full (never decreases).
+  std::uint64_t mail_dropped() const { return mail_dropped_.load(); }
 
   /// Called after every successful (re)connect, after the registrations were re-sent.
   void set_on_connect(std::function<void()> callback);
@@ -102,6 +105,8 @@ class Comms {
   std::vector<Message> replay_messages() const;
   void fire_on_connect();
   void fire_on_mail();
+  /// Counts mail the implementation dropped unread (a bounded inbox overflowed).
+  void count_mail_dropped(std::uint64_t messages) { mail_dropped_ += messages; }
 
  private:
   Message control_message(char type, char data_type, const std::string& key) const;
@@ -121,6 +126,7 @@ class Comms {
   std::set<std::string> published_;
   std::function<void()> on_connect_;
   std::function<void()> on_mail_;
+  std::atomic<std::uint64_t> mail_dropped_{0};
 };
 
 }  // namespace moos

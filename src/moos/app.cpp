@@ -311,6 +311,7 @@ void MoosApp::cycle() {
   }
 
   std::vector<Message> mail = comms_->fetch();
+  report_dropped_mail();
   if (!mail.empty()) {
     if (settings_.sort_mail_by_time)
       std::stable_sort(mail.begin(), mail.end(),
@@ -328,6 +329,17 @@ void MoosApp::cycle() {
   last_iterate_start_moos_s_ = now;
   iterate();
   post_report(now);
+}
+
+void MoosApp::report_dropped_mail() {
+  const std::uint64_t dropped = comms_->mail_dropped();
+  if (dropped == reported_mail_dropped_) return;
+  reported_mail_dropped_ = dropped;
+  // One standing warning whose count grows, not one warning per overflow.
+  if (!dropped_mail_warning_.empty()) retract_run_warning(dropped_mail_warning_);
+  dropped_mail_warning_ = "Mail arrived faster than the app read it: " + std::to_string(dropped) +
+                          " oldest unread messages dropped in all (inbox bounds)";
+  report_run_warning(dropped_mail_warning_);
 }
 
 void MoosApp::handle_framework_mail(std::vector<Message>& mail) {

@@ -31,6 +31,13 @@ namespace moos {
 
 namespace {
 
+/// What a message costs the inbox, in bytes: its strings plus a fixed part for the rest.
+std::size_t inbox_cost(const Message& msg) {
+  constexpr std::size_t kFixedPart = sizeof(Message);
+  return kFixedPart + msg.key.size() + msg.sval.size() + msg.source.size() +
+         msg.source_aux.size() + msg.community.size();
+}
+
 /// Bytes read per recv call, and recv calls per wake-up (1 MiB) before sending gets a turn.
 constexpr std::size_t kReadChunkBytes = 64 * 1024;
 constexpr int kMaxReadChunksPerWake = 16;
@@ -121,6 +128,8 @@ bool TcpClient::start() {
   else if (options_.port < 1 || options_.port > kMaxPort) problem = "port " + std::to_string(options_.port) + " is outside 1..65535";
   else if (!is_valid_time_warp(options_.time_warp))
     problem = "time warp " + base::format_g(options_.time_warp) + " is outside (0, 400]";
+  else if (options_.max_inbox_messages < 1 || options_.max_inbox_bytes < 1)
+    problem = "the inbox bounds must be at least 1";
   {
     std::lock_guard<std::mutex> lock(mutex_);
     if (problem.empty() && state_ != ConnectionState::kNotStarted) problem = "already started";
@@ -221,6 +230,7 @@ std::vector<Message> TcpClient::fetch() {
   std::lock_guard<std::mutex> lock(mutex_);
   std::vector<Message> mail;
   mail.swap(inbox_);
+  inbox_bytes_ = 0;
   return mail;
 }
 
@@ -568,11 +578,28 @@ void TcpClient::handle_packet(std::vector<Message> messages) {
     std::lock_guard<std::mutex> lock(mutex_);
     for (auto it = begin; it != messages.end(); ++it) {
       if (it->type == msg_type::kNull || it->type == msg_type::kTiming) continue;
+      inbox_bytes_ += inbox_cost(*it);
       inbox_.push_back(std::move(*it));
       added = true;
     }
+    enforce_inbox_bounds();
   }
   if (added) fire_on_mail();
+}
+
+void TcpClient::enforce_inbox_bounds() {
+  if (inbox_.size() <= options_.max_inbox_messages && inbox_bytes_ <= options_.max_inbox_bytes)
+    return;
+  const std::size_t keep_messages = std::max<std::size_t>(1, options_.max_inbox_messages / 4 * 3);
+  const std::size_t keep_bytes = options_.max_inbox_bytes / 4 * 3;
+  std::size_t drop = 0;
+  while (drop < inbox_.size() &&
+         (inbox_.size() - drop > keep_messages || inbox_bytes_ > keep_bytes)) {
+    inbox_bytes_ -= inbox_cost(inbox_[drop]);
+    ++drop;
+  }
+  inbox_.erase(inbox_.begin(), inbox_.begin() + static_cast<std::ptrdiff_t>(drop));
+  count_mail_dropped(drop);
 }
 
 void TcpClient::refine_skew(const Message& echo) {
