@@ -22,6 +22,13 @@ inline constexpr int kMaxPort = 65535;
 /// The highest CommsTick libMOOS accepts, in Hz (wire spec 4.2): CommsTick is in 1..200.
 inline constexpr int kMaxCommsTickHz = 200;
 
+/// AppTick range, in MOOS-time Hz (issue 12): below one iteration per 1,000 MOOS seconds an app
+/// looks stalled; above 1 kHz (x warp in real time) it only busy-loops. libMOOS accepts any
+/// positive number; we refuse the rest with a warning and keep the default.
+inline constexpr double kMinAppTickHz = 1e-3;
+inline constexpr double kMaxAppTickHz = 1000.0;
+constexpr bool is_valid_app_tick(double hz) { return hz >= kMinAppTickHz && hz <= kMaxAppTickHz; }
+
 /// True for 0 < warp <= kMaxTimeWarp (false for NaN).
 constexpr bool is_valid_time_warp(double warp) { return warp > 0 && warp <= kMaxTimeWarp; }
 

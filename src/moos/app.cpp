@@ -68,11 +68,12 @@ void apply_framework_line(const ConfigLine& line, AppSettings& s, bool& block_ap
   auto warn = [&](const std::string& what) { s.config_warnings.push_back(what + place(line)); };
   if (key == "APPTICK") {
     const auto f = base::parse_number(v);
-    if (f && *f > 0) {
+    if (f && is_valid_app_tick(*f)) {
       s.app_tick_hz = *f;
       block_app_tick = true;
     } else {
-      warn("Invalid AppTick: " + v + " (must be a number > 0)");
+      warn("Invalid AppTick: " + v + " (must be a number in [" + base::format_g(kMinAppTickHz) +
+           ", " + base::format_g(kMaxAppTickHz) + "] Hz)");
     }
   } else if (key == "COMMSTICK") {
     if (auto t = base::parse_integer(v, 1, kMaxCommsTickHz)) s.comms_tick_hz = static_cast<int>(*t);

@@ -1,6 +1,8 @@
 // The application base on the in-process bus with a manual clock (wire spec 6.2-6.4, 7.1, 7.2).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <sstream>
 
 #include "moos/app.hpp"
@@ -151,7 +153,7 @@ TEST(AppSettingsResolve, BadFrameworkValuesAreWarningsNamingThePlace) {
   ASSERT_EQ(s.config_warnings.size(), 6u);
   EXPECT_EQ(s.config_warnings[0], "Invalid MOOSTimeWarp: 0 (m.moos:2)");
   EXPECT_EQ(s.config_warnings[1], "Invalid value for TERM_REPORTING: maybe (m.moos:3)");
-  EXPECT_EQ(s.config_warnings[2], "Invalid AppTick: fast (must be a number > 0) (m.moos:6)");
+  EXPECT_EQ(s.config_warnings[2], "Invalid AppTick: fast (must be a number in [0.001, 1000] Hz) (m.moos:6)");
   EXPECT_EQ(s.config_warnings[3], "TERM_REPORT_INTERVAL 20 clipped to 10 (m.moos:7)");
   EXPECT_EQ(s.config_warnings[4], "MAX_APPCAST_EVENTS 70 clipped to 50 (m.moos:8)");
   EXPECT_NE(s.config_warnings[5].find("IterateMode 1 is not supported"), std::string::npos);
@@ -159,6 +161,22 @@ TEST(AppSettingsResolve, BadFrameworkValuesAreWarningsNamingThePlace) {
   EXPECT_EQ(s.app_tick_hz, 4.0);
   EXPECT_EQ(s.term_report_interval_s, 10.0);
   EXPECT_EQ(s.max_appcast_events, 50u);
+}
+
+TEST(AppSettingsResolve, AppTicksThatStallOrBusyLoopAreRefused_Issue12) {
+  for (const char* tick : {"1e-300", "0", "-4", "1e300", "1000.5"}) {
+    std::vector<MissionError> errors;
+    const auto m = mission(std::string("ProcessConfig = pEcho\n{\n AppTick = ") + tick + "\n}\n", &errors);
+    const auto s = resolve_app_settings(AppTraits{"pEcho", 4.0}, parse_command_line({"pEcho", "m.moos"}), &m);
+    const std::string expected = std::string("Invalid AppTick: ") + tick +
+                                 " (must be a number in [0.001, 1000] Hz) (m.moos:3)";
+    EXPECT_EQ(std::count(s.config_warnings.begin(), s.config_warnings.end(), expected), 1) << tick;
+    EXPECT_EQ(s.app_tick_hz, 4.0) << tick;
+  }
+  std::vector<MissionError> errors;
+  const auto m = mission("ProcessConfig = pEcho\n{\n AppTick = 1000\n}\n", &errors);
+  EXPECT_EQ(resolve_app_settings(AppTraits{"pEcho", 4.0}, parse_command_line({"pEcho", "m.moos"}), &m)
+                .app_tick_hz, 1000.0);
 }
 
 TEST(AppSettingsResolve, RepeatedFrameworkParameterFirstWinsOrLastWithWarning_D36) {
