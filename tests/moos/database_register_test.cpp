@@ -139,5 +139,57 @@ TEST_F(DatabaseTest, WildcardIntervalThrottlesBoundVariables_5_5) {
   EXPECT_EQ(to(send(kB, {notify_double("T", 3, "writer")}, kT0 + 10), kA).size(), 1u);
 }
 
+// ---------------------------------------------------------------------------------------
+// Settled with the reference MOOSDB (include/moos/database.hpp, docs/moos.md)
+
+TEST_F(DatabaseTest, WildcardFilterReplacesAnExplicitRegistrationAtFirstWrite_5_3) {
+  connect(kA, "reader", true);
+  connect(kB, "writer", true);
+  send(kA, {registration("X", 10, "reader"), wildcard("AppPattern=*,VarPattern=X,Interval=0", "reader")});
+  // The filter's interval 0 applies from the first write on: no update is throttled.
+  EXPECT_EQ(to(send(kB, {notify_double("X", 1, "writer")}, kT0), kA).size(), 1u);
+  EXPECT_EQ(to(send(kB, {notify_double("X", 2, "writer")}, kT0 + 1), kA).size(), 1u);
+}
+
+TEST_F(DatabaseTest, WildcardIntervalReplacesAnExplicitEveryUpdateRegistration_5_3) {
+  connect(kA, "reader", true);
+  connect(kB, "writer", true);
+  send(kA, {registration("X", 0, "reader"), wildcard("AppPattern=*,VarPattern=X,Interval=10", "reader")});
+  EXPECT_EQ(to(send(kB, {notify_double("X", 1, "writer")}, kT0), kA).size(), 1u);
+  EXPECT_TRUE(to(send(kB, {notify_double("X", 2, "writer")}, kT0 + 1), kA).empty());
+  EXPECT_EQ(to(send(kB, {notify_double("X", 3, "writer")}, kT0 + 10), kA).size(), 1u);
+}
+
+TEST_F(DatabaseTest, OfSeveralMatchingFiltersTheGreatestPatternPairWinsWhateverTheOrder_5_3) {
+  // ("*", "X?") > ("*", "X*") since '?' sorts after '*': interval 0 wins in both orders.
+  connect(kA, "first", true);
+  connect(kB, "second", true);
+  connect(kC, "writer", true);
+  send(kA, {wildcard("AppPattern=*,VarPattern=X*,Interval=10", "first"),
+            wildcard("AppPattern=*,VarPattern=X?,Interval=0", "first")});
+  send(kB, {wildcard("AppPattern=*,VarPattern=X?,Interval=0", "second"),
+            wildcard("AppPattern=*,VarPattern=X*,Interval=10", "second")});
+  send(kC, {notify_double("XY", 1, "writer")}, kT0);
+  const auto out = send(kC, {notify_double("XY", 2, "writer")}, kT0 + 1);
+  EXPECT_EQ(to(out, kA).size(), 1u);
+  EXPECT_EQ(to(out, kB).size(), 1u);
+}
+
+TEST_F(DatabaseTest, NeverDeliveredIsDueWhateverTheClock_5_3) {
+  // A DB whose MOOS time starts at 0 (a manual clock): the first update is not throttled
+  // against a time 0 that never was a delivery.
+  Database db(config(), 0.0, [](const std::string&) {});
+  ASSERT_TRUE(db.connect(kA, {identification("reader", true, 0.0)}, 0.0));
+  ASSERT_TRUE(db.connect(kB, {identification("writer", true, 0.0)}, 0.0));
+  db.process_packet(kA, {registration("X", 5, "reader")}, 0.5);
+  db.take_output();
+  db.process_packet(kB, {notify_double("X", 1, "writer")}, 1.0);
+  EXPECT_EQ(to(db.take_output(), kA).size(), 1u);
+  db.process_packet(kB, {notify_double("X", 2, "writer")}, 3.0);
+  EXPECT_TRUE(to(db.take_output(), kA).empty());  // then the interval counts from t = 1
+  db.process_packet(kB, {notify_double("X", 3, "writer")}, 6.0);
+  EXPECT_EQ(to(db.take_output(), kA).size(), 1u);
+}
+
 }  // namespace
 }  // namespace moos::test
