@@ -33,7 +33,10 @@
 //   on refresh_db_variables(); DB_EVENT and DB_CLIENTS on every connect and disconnect. With
 //   `db_variables = false` none is written (the in-process bus, which has no refresh timer).
 //
-// Deviations from the reference DB are listed in docs/moos.md.
+// Deviations from the reference DB (docs/moos.md section 3): malformed messages are refused
+// with a logged reason; an empty NOTIFY source becomes the client's name; WILDCARD_UNREGISTER
+// also removes the identical filter; a synchronous client's empty packet is answered; DB_QOS
+// and DB_VARSUMMARY are not published.
 
 #include <cstddef>
 #include <cstdint>
