@@ -121,11 +121,6 @@ class Database {
   bool is_connected(ClientId id) const { return clients_.count(id) != 0; }
   std::optional<std::string> client_name(ClientId id) const;
   bool is_async(ClientId id) const;
-  /// `MOOSDB_<community>`: the source of DB-generated messages (spec 5.7).
-  const std::string& db_name() const { return db_name_; }
-  const std::string& community() const { return config_.community; }
-  /// Names of connected clients, each followed by a comma (the DB_CLIENTS value).
-  std::string client_list() const;
   /// The snapshot a REGISTER of `name` would send now (spec 2.6); nullopt while unwritten.
   std::optional<Message> latest(const std::string& name) const;
 
@@ -177,7 +172,7 @@ class Database {
     int refusals = 0;
   };
 
-  // One handler per message type (spec 5.2 step 3), database.cpp and database_register.cpp.
+  // One handler per message type (spec 5.2 step 3), each in the file of its rule.
   void handle_message(ClientId id, Message msg, double now);
   void handle_notify(ClientId id, Message msg, double now);
   void handle_register(ClientId id, const Message& msg, double now);
@@ -202,6 +197,8 @@ class Database {
   void publish_db_string(const std::string& key, const std::string& value, double now);
   void publish_db_double(const std::string& key, double value, double now);
   void publish_db_variable(Message msg, double now);
+  /// Names of connected clients, each followed by a comma (the DB_CLIENTS value).
+  std::string client_list() const;
   std::string rw_summary() const;
 
   // Server requests (database_server_requests.cpp).
@@ -221,7 +218,7 @@ class Database {
   std::string describe(ClientId id) const;
 
   DatabaseConfig config_;
-  std::string db_name_;
+  std::string db_name_;  ///< `MOOSDB_<community>`: the source of DB-generated messages (5.7)
   double start_moos_s_;
   LogSink log_;
   NotifyObserver notify_observer_;
