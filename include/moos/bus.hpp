@@ -1,23 +1,20 @@
 #pragma once
-// An in-process MOOS community for tests: the MOOSDB's register/notify/fetch semantics (wire spec
-// 5.3-5.5) without sockets, threads or real time. Applications see it through the Comms
-// interface, exactly as they see a TcpClient.
+// An in-process MOOS community for tests: moos::Database (include/moos/database.hpp, the same
+// rules moosdb-lite serves) without sockets, threads or real time. Applications see it through
+// the Comms interface, exactly as they see a TcpClient.
 //
-// Contract (as a MOOSDB, spec section 5):
-// - NOTIFY: the first write fixes a variable's data type; later writes of another type (S vs B
-//   included) are dropped and noted in diagnostics(). A stored message's empty community becomes
-//   the bus community. Every subscriber whose interval has expired gets a copy (interval 0 =
-//   every update; throttled updates are dropped, not delayed); the publisher is not excluded.
-// - REGISTER sends a snapshot of a written variable at once (id -1, the last writer as source,
-//   the last write's time stamp), on every REGISTER; an unwritten variable sends nothing until
-//   its first write.
-// - Wildcard filters match the variable name and the writer (the last writer for existing
-//   variables, the first writer for new ones at their first write). WILDCARD_UNREGISTER removes
-//   the matching subscriptions and, unlike the reference DB (spec 5.5 allows it), the identical
-//   filter too.
-// - Delivery is synchronous and deterministic: a message is in the subscribers' inboxes when
-//   notify() returns, in posting order. Time is the bus clock x warp (skew 0).
-// - No DB_* variables are published (apps under test do not need them).
+// Contract (a thin adapter; the MOOSDB rules are moos::Database's, spec section 5):
+// - Every client is an asynchronous Database client; every message it transmits is one packet.
+//   The NOTIFYs the Database sends it land in its inbox (fetch()); protocol replies (WELCOME)
+//   are not mail. Delivery is synchronous and deterministic: a message is in the subscribers'
+//   inboxes when notify() returns, in posting order.
+// - Time is the bus clock x warp (skew 0), read when each message is processed, so a
+//   ManualClock starting at 0 throttles like one starting today ("never delivered" is explicit).
+// - Writes of another data type are refused by the Database; its log lines are diagnostics().
+// - Settled with the server: a wildcard filter binding a variable at its first write replaces
+//   an explicit REGISTER (the filter's interval applies), as in the reference DB.
+// - Differs from the server only in: no DB_* variables (no refresh timer; apps under test do not
+//   need them) and no SERVER_REQUEST traffic (Comms has no call that sends one).
 // - Thread-safe; on-mail callbacks run on the posting thread with no lock held.
 
 #include <memory>
@@ -27,6 +24,7 @@
 
 #include "moos/clock.hpp"
 #include "moos/comms.hpp"
+#include "moos/database.hpp"
 #include "moos/message.hpp"
 
 namespace moos {
@@ -37,7 +35,7 @@ struct BusCore;
 class InProcessBus {
  public:
   struct Options {
-    std::string community = "#1";  ///< the reference DB's default community (spec 5.11)
+    std::string community = kDefaultCommunity;  ///< spec 5.11
     double time_warp = 1.0;        ///< 0 < W <= 400 (spec 0.3)
   };
 
@@ -66,7 +64,7 @@ class InProcessBus {
   std::optional<Message> latest(const std::string& var) const;
   /// Connected client names, sorted.
   std::vector<std::string> client_names() const;
-  /// Notes about dropped messages (type mismatches), oldest first.
+  /// The Database's log: refused messages (e.g. type mismatches), oldest first.
   std::vector<std::string> diagnostics() const;
 
  private:

@@ -1,11 +1,10 @@
-// In-process MOOS community. The core processes each client message as the MOOSDB does (wire spec
-// 5.2 step 3, 5.3-5.5); contract in include/moos/bus.hpp.
+// In-process MOOS community: an adapter between Comms clients and moos::Database; contract in
+// include/moos/bus.hpp.
 //
-// Data structures: variables by name (std::map, so iteration order and therefore wildcard
-// matching order are deterministic); per variable, its subscribers by client name with the
-// interval and the MOOS time of the last delivery ("never" as nullopt); per client, its inbox,
-// wildcard filters and connection count. One mutex guards everything; callbacks run after it is
-// released.
+// Data structures: the Database (every rule of spec 5); per client name, its current Database
+// connection id (a reconnect is a new connection, as over TCP), its inbox and connection
+// count; the connection ids back to names, to route the Database's output. One mutex guards
+// everything; on-mail callbacks run after it is released.
 
 #include "moos/bus.hpp"
 
@@ -13,155 +12,91 @@
 #include <map>
 #include <mutex>
 
-#include "moos/wildcard.hpp"
-
 namespace moos {
 
 struct BusCore {
-  struct Subscription {
-    double interval_s = 0.0;
-    std::optional<double> last_delivery_moos_s;  // nullopt: never delivered
-  };
-  struct Variable {
-    char data_type = data_type::kNotSet;
-    std::uint64_t writes = 0;
-    Message last;  // the last accepted write, community filled in
-    std::map<std::string, Subscription> subscribers;
-  };
   struct ClientState {
     BusClient* handle = nullptr;  // for on-mail callbacks; cleared when the client goes away
+    ClientId id = 0;              // the current Database connection
     bool connected = true;
     std::uint64_t connections = 1;
     std::vector<Message> inbox;
-    std::vector<WildcardSpec> filters;
   };
 
-  BusCore(Clock& c, InProcessBus::Options o) : clock(c), options(std::move(o)) {}
+  BusCore(Clock& c, InProcessBus::Options o)
+      : clock(c),
+        options(std::move(o)),
+        db(database_config(options), now(), [this](const std::string& line) { diagnostics.push_back(line); },
+           [this](const Message& m) { postings.push_back(m); }) {}
+
+  static DatabaseConfig database_config(const InProcessBus::Options& o) {
+    DatabaseConfig config;
+    config.community = o.community;
+    config.db_variables = false;  // no refresh timer on the bus (see bus.hpp)
+    return config;
+  }
 
   double now() const { return clock.unix_now_s() * options.time_warp; }
 
   Clock& clock;
   const InProcessBus::Options options;
   mutable std::mutex mutex;
-  std::map<std::string, Variable> variables;
-  std::map<std::string, ClientState> clients;
   std::vector<Message> postings;
   std::vector<std::string> diagnostics;
+  Database db;  // after the two lists its callbacks fill
+  std::map<std::string, ClientState> clients;
+  std::map<ClientId, std::string> names_by_id;
+  ClientId next_id = 1;
 
-  // ---- message processing (mutex held); returns the clients that received mail ----------------
-  void deliver(const std::string& client, Message copy, std::vector<std::string>& woken) {
-    auto it = clients.find(client);
-    if (it == clients.end() || !it->second.connected) return;
-    copy.type = msg_type::kNotify;
-    it->second.inbox.push_back(std::move(copy));
-    if (std::find(woken.begin(), woken.end(), client) == woken.end()) woken.push_back(client);
-  }
+  // ---- mutex held ------------------------------------------------------------------------------
 
-  static Message snapshot_of(const Variable& v) {
-    Message m = v.last;
-    m.id = kUnsetId;  // snapshots carry id -1 (spec 2.6)
-    m.type = msg_type::kNotify;
-    return m;
-  }
-
-  void subscribe(const std::string& client, const std::string& var, double interval_s,
-                 std::vector<std::string>& woken) {
-    Variable& v = variables[var];  // created unwritten ('~') if absent (spec 5.4)
-    Subscription& sub = v.subscribers[client];
-    sub = Subscription{interval_s, std::nullopt};
-    if (v.writes > 0) {
-      deliver(client, snapshot_of(v), woken);
-      sub.last_delivery_moos_s = now();
+  /// A new Database connection for `name`; false if the Database refused it (POISON).
+  bool open_connection(const std::string& name, ClientState& state) {
+    Message ident;
+    ident.type = msg_type::kData;
+    ident.data_type = data_type::kString;
+    ident.key = kAsynchronousKey;
+    ident.sval = name;
+    ident.time = now();
+    const ClientId id = next_id++;
+    const bool welcomed = db.connect(id, {ident}, now());
+    if (welcomed) {
+      state.id = id;
+      names_by_id[id] = name;
     }
+    return welcomed;
   }
 
-  void on_notify(Message msg, std::vector<std::string>& woken) {
-    Variable& v = variables[msg.key];
-    if (v.writes == 0) {
-      v.data_type = msg.data_type;
-      // New variables are matched against stored filters at their first write (spec 5.3 step 2).
-      for (auto& [client, state] : clients)
-        for (const auto& f : state.filters)
-          if (f.matches(msg.source, msg.key))
-            v.subscribers[client] = Subscription{f.interval_s, std::nullopt};
+  void close_connection(ClientState& state) {
+    names_by_id.erase(state.id);
+    db.disconnect(state.id, now());
+    state.connected = false;
+    state.inbox.clear();
+  }
+
+  /// Moves the Database's output into the inboxes (only NOTIFYs are mail; WELCOME is protocol)
+  /// and lists the clients that got mail, for their on-mail callbacks.
+  void route_output(std::vector<std::string>& woken) {
+    for (auto& packet : db.take_output()) {
+      const auto name = names_by_id.find(packet.to);
+      if (name == names_by_id.end()) continue;  // a refused connection's POISON
+      ClientState& state = clients.at(name->second);
+      bool mail = false;
+      for (auto& m : packet.messages) {
+        if (m.type != msg_type::kNotify) continue;
+        state.inbox.push_back(std::move(m));
+        mail = true;
+      }
+      if (mail && std::find(woken.begin(), woken.end(), name->second) == woken.end())
+        woken.push_back(name->second);
     }
-    if (msg.data_type != v.data_type) {
-      diagnostics.push_back("dropped " + msg.key + " from " + msg.source + ": data type '" +
-                            std::string(1, msg.data_type) + "' but the variable is '" +
-                            std::string(1, v.data_type) + "'");
-      return;
+    // The server would close these connections; so does the bus.
+    for (const auto& drop : db.take_drop_requests()) {
+      const auto name = names_by_id.find(drop.id);
+      if (name == names_by_id.end()) continue;
+      diagnostics.push_back("client \"" + name->second + "\" dropped: " + drop.reason);
+      close_connection(clients.at(name->second));
     }
-    if (msg.community.empty()) msg.community = options.community;
-    msg.type = msg_type::kNotify;
-    v.last = msg;
-    ++v.writes;
-    postings.push_back(msg);
-    const double t = now();
-    for (auto& [client, sub] : v.subscribers) {
-      const bool due = sub.interval_s <= 0 || !sub.last_delivery_moos_s ||
-                       t - *sub.last_delivery_moos_s >= sub.interval_s;
-      if (!due) continue;  // throttled: dropped, not delayed (spec 5.3 step 5)
-      deliver(client, msg, woken);
-      sub.last_delivery_moos_s = t;
-    }
-  }
-
-  // An existing variable matches by its last writer ("" while unwritten), spec 5.5.
-  static bool matches(const WildcardSpec& spec, const std::string& name, const Variable& v) {
-    return spec.matches(v.writes > 0 ? std::string_view(v.last.source) : std::string_view(), name);
-  }
-
-  void on_wildcard_register(const std::string& client, const WildcardSpec& spec,
-                            std::vector<std::string>& woken) {
-    auto& filters = clients[client].filters;
-    const bool known = std::any_of(filters.begin(), filters.end(),
-                                   [&](const WildcardSpec& f) { return f.same_patterns(spec); });
-    // Set semantics on the pattern pair: the first filter's interval stays (spec 5.5).
-    if (!known) filters.push_back(spec);
-    std::vector<std::string> matching;
-    for (const auto& [name, v] : variables)
-      if (matches(spec, name, v)) matching.push_back(name);
-    for (const auto& name : matching) subscribe(client, name, spec.interval_s, woken);
-  }
-
-  void on_wildcard_unregister(const std::string& client, const WildcardSpec& spec) {
-    for (auto& [name, v] : variables)
-      if (matches(spec, name, v)) v.subscribers.erase(client);
-    auto& filters = clients[client].filters;
-    filters.erase(std::remove_if(filters.begin(), filters.end(),
-                                 [&](const WildcardSpec& f) { return f.same_patterns(spec); }),
-                  filters.end());
-  }
-
-  void process(const std::string& client, Message msg, std::vector<std::string>& woken) {
-    switch (msg.type) {
-      case msg_type::kNotify:
-        msg.source = client;
-        on_notify(std::move(msg), woken);
-        break;
-      case msg_type::kRegister:
-        subscribe(client, msg.key, msg.dval > 0 ? msg.dval : 0.0, woken);
-        break;
-      case msg_type::kUnregister:
-        if (auto it = variables.find(msg.key); it != variables.end()) it->second.subscribers.erase(client);
-        break;
-      case msg_type::kWildcardRegister:
-        on_wildcard_register(client, parse_wildcard_spec(msg.sval), woken);
-        break;
-      case msg_type::kWildcardUnregister:
-        on_wildcard_unregister(client, parse_wildcard_spec(msg.sval));
-        break;
-      default:
-        break;  // NULL, COMMAND and others are ignored, as by the DB (spec 5.2 step 3)
-    }
-  }
-
-  void forget_client(const std::string& client) {
-    for (auto& [name, v] : variables) v.subscribers.erase(client);
-    auto it = clients.find(client);
-    if (it == clients.end()) return;
-    it->second.filters.clear();
-    it->second.inbox.clear();
   }
 };
 
@@ -176,15 +111,17 @@ InProcessBus::~InProcessBus() = default;
 
 std::unique_ptr<BusClient> InProcessBus::connect(const std::string& name) {
   if (name.empty()) return nullptr;
+  std::unique_ptr<BusClient> client(new BusClient(core_, name));
+  std::vector<std::string> woken;
   {
     std::lock_guard<std::mutex> lock(core_->mutex);
-    auto it = core_->clients.find(name);
-    if (it != core_->clients.end()) return nullptr;
-    core_->clients[name] = BusCore::ClientState{};
+    if (core_->clients.count(name) != 0) return nullptr;  // a real DB would POISON it (1.6)
+    BusCore::ClientState state;
+    if (!core_->open_connection(name, state)) return nullptr;
+    state.handle = client.get();
+    core_->clients.emplace(name, std::move(state));
+    core_->route_output(woken);
   }
-  std::unique_ptr<BusClient> client(new BusClient(core_, name));
-  std::lock_guard<std::mutex> lock(core_->mutex);
-  core_->clients[name].handle = client.get();
   return client;
 }
 
@@ -213,9 +150,7 @@ void InProcessBus::clear_postings() {
 
 std::optional<Message> InProcessBus::latest(const std::string& var) const {
   std::lock_guard<std::mutex> lock(core_->mutex);
-  auto it = core_->variables.find(var);
-  if (it == core_->variables.end() || it->second.writes == 0) return std::nullopt;
-  return BusCore::snapshot_of(it->second);
+  return core_->db.latest(var);
 }
 
 std::vector<std::string> InProcessBus::client_names() const {
@@ -238,8 +173,12 @@ BusClient::BusClient(std::shared_ptr<BusCore> core, std::string name)
 
 BusClient::~BusClient() {
   std::lock_guard<std::mutex> lock(core_->mutex);
-  core_->forget_client(name());
-  core_->clients.erase(name());
+  auto it = core_->clients.find(name());
+  if (it == core_->clients.end() || it->second.handle != this) return;  // refused at connect
+  if (it->second.connected) core_->close_connection(it->second);
+  core_->clients.erase(it);
+  std::vector<std::string> woken;
+  core_->route_output(woken);  // no callbacks from a destructor: the mail waits in the inboxes
 }
 
 bool BusClient::is_connected() const {
@@ -274,7 +213,8 @@ bool BusClient::transmit(Message msg) {
     std::lock_guard<std::mutex> lock(core_->mutex);
     auto it = core_->clients.find(name());
     if (it == core_->clients.end() || !it->second.connected) return false;
-    core_->process(name(), std::move(msg), woken);
+    core_->db.process_packet(it->second.id, {std::move(msg)}, core_->now());
+    core_->route_output(woken);
     // Copied under the bus lock (lock order: bus, then a client's book), called after it.
     for (const auto& client : woken) {
       auto w = core_->clients.find(client);
@@ -290,8 +230,9 @@ void BusClient::simulate_disconnect() {
   std::lock_guard<std::mutex> lock(core_->mutex);
   auto it = core_->clients.find(name());
   if (it == core_->clients.end() || !it->second.connected) return;
-  core_->forget_client(name());
-  it->second.connected = false;
+  core_->close_connection(it->second);
+  std::vector<std::string> woken;
+  core_->route_output(woken);
 }
 
 bool BusClient::simulate_reconnect() {
@@ -300,8 +241,11 @@ bool BusClient::simulate_reconnect() {
     auto it = core_->clients.find(name());
     if (it == core_->clients.end()) return false;
     if (it->second.connected) return true;
+    if (!core_->open_connection(name(), it->second)) return false;
     it->second.connected = true;
     ++it->second.connections;
+    std::vector<std::string> woken;
+    core_->route_output(woken);
   }
   for (auto& m : replay_messages()) transmit(std::move(m));
   fire_on_connect();

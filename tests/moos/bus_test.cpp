@@ -1,7 +1,11 @@
-// In-process bus: MOOSDB semantics of wire spec section 5, through the Comms interface.
+// In-process bus: MOOSDB semantics of wire spec section 5 (moos::Database), through the Comms
+// interface.
 #include <gtest/gtest.h>
 
 #include "moos/bus.hpp"
+#include "moos/database.hpp"
+#include "moos/wildcard.hpp"
+#include "wire_messages.hpp"
 
 namespace moos {
 namespace {
@@ -268,6 +272,75 @@ TEST_F(BusTest, PostingsHistoryAndLatest) {
   bus.clear_postings();
   EXPECT_TRUE(bus.postings().empty());
   EXPECT_EQ(bus.latest("X")->dval, 1.0);
+}
+
+// ---- settled with the server: the bus runs moos::Database's rules --------------------------
+
+TEST_F(BusTest, WildcardFilterReplacesAnExplicitRegistrationAtFirstWrite_5_3) {
+  b->register_variable("X", 10.0);
+  b->register_wildcard("X", "*", 0.0);
+  a->notify("X", 1.0);
+  clock.advance_real_s(0.5);  // 1 MOOS s, well inside the explicit 10 s
+  a->notify("X", 2.0);
+  EXPECT_EQ(b->fetch().size(), 2u);  // the filter's interval 0 applies (reference DB)
+}
+
+TEST(BusClock, ManualClockAtZeroThrottlesLikeOneStartingToday_5_3) {
+  ManualClock clock{0.0};
+  InProcessBus bus{clock};
+  auto a = bus.connect("pA");
+  auto b = bus.connect("pB");
+  b->register_variable("X", 5.0);
+  clock.advance_real_s(1.0);
+  a->notify("X", 1.0);  // never delivered before: due, though 1 - 0 < 5
+  clock.advance_real_s(2.0);
+  a->notify("X", 2.0);  // throttled: 2 s after the delivery
+  clock.advance_real_s(3.0);
+  a->notify("X", 3.0);
+  const auto mail = b->fetch();
+  ASSERT_EQ(mail.size(), 2u);
+  EXPECT_EQ(mail[0].dval, 1.0);
+  EXPECT_EQ(mail[1].dval, 3.0);
+}
+
+TEST_F(BusTest, BusAndServerDeliverTheSameMail_5) {
+  // The same traffic through the bus and into a moos::Database driven as moosdb-lite drives
+  // it (one packet per message): pB's mail agrees message for message.
+  DatabaseConfig config;
+  config.community = "alpha";
+  config.db_variables = false;
+  Database server(config, bus.moos_time(), [](const std::string&) {});
+  ASSERT_TRUE(server.connect(1, {test::identification("pA", true)}, bus.moos_time()));
+  ASSERT_TRUE(server.connect(2, {test::identification("pB", true)}, bus.moos_time()));
+  server.take_output();
+  std::vector<Message> server_mail;
+  auto to_server = [&](ClientId id, const Message& m) {
+    server.process_packet(id, {m}, bus.moos_time());
+    for (auto& packet : server.take_output())
+      if (packet.to == 2) server_mail.insert(server_mail.end(), packet.messages.begin(), packet.messages.end());
+  };
+  auto post = [&](const std::string& var, double value) {
+    EXPECT_TRUE(a->notify(var, value));
+    to_server(1, make_double_notify(var, value, "pA", bus.moos_time()));
+    clock.advance_real_s(0.25);  // 0.5 MOOS s
+  };
+  post("NAV_X", 1.0);
+  b->register_variable("NAV_X", 1.0);
+  to_server(2, test::registration("NAV_X", 1.0, "pB"));
+  post("NAV_X", 2.0);  // throttled: the snapshot was just delivered
+  b->register_wildcard("NAV_*", "*", 0.0);
+  to_server(2, test::wildcard(format_wildcard_spec(WildcardSpec{"*", "NAV_*", 0.0}), "pB"));
+  for (int i = 0; i < 6; ++i) post(i % 2 ? "NAV_X" : "NAV_Y", i);
+  const auto bus_mail = b->fetch();
+  ASSERT_EQ(bus_mail.size(), server_mail.size());
+  ASSERT_EQ(bus_mail.size(), 8u);  // 2 snapshots of NAV_X, then every post
+  for (std::size_t i = 0; i < bus_mail.size(); ++i) {
+    EXPECT_EQ(bus_mail[i].key, server_mail[i].key) << i;
+    EXPECT_EQ(bus_mail[i].dval, server_mail[i].dval) << i;
+    EXPECT_EQ(bus_mail[i].time, server_mail[i].time) << i;
+    EXPECT_EQ(bus_mail[i].source, server_mail[i].source) << i;
+    EXPECT_EQ(bus_mail[i].community, server_mail[i].community) << i;
+  }
 }
 
 }  // namespace

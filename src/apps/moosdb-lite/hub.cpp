@@ -40,7 +40,8 @@ std::string quote_bytes(std::string_view bytes, std::size_t max_bytes) {
 
 }  // namespace
 
-Hub::Hub(HubConfig config, double start_real_s, LogSink log, Database::NotifyObserver observer)
+Hub::Hub(HubConfig config, double start_real_s, LogSink log,
+         moos::Database::NotifyObserver observer)
     : config_(std::move(config)),
       log_(std::move(log)),
       db_(config_.database, start_real_s * config_.time_warp, log_, std::move(observer)),
@@ -122,7 +123,7 @@ void Hub::handle_identification(ConnectionId id, const std::vector<moos::Message
     collect_database_output(now);
     close(id,
           name.empty() ? std::string("handshake refused: no client name")
-                       : "handshake refused: " + duplicate_name_reason(name),
+                       : "handshake refused: " + moos::duplicate_name_reason(name),
           now, Action::Kind::kCloseAfterSend);
     return;
   }

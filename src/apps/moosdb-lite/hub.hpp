@@ -1,6 +1,6 @@
 #pragma once
 // The connection state machine of moosdb-lite (../shared/spec/moos-wire-protocol.md 5.1a),
-// between raw bytes and the Database, without sockets.
+// between raw bytes and moos::Database (include/moos/database.hpp), without sockets.
 //
 // Contract:
 // - The transport opens a connection (open), hands over received bytes in any segmentation
@@ -27,12 +27,15 @@
 #include <string_view>
 #include <vector>
 
-#include "database.hpp"
 #include "moos/codec.hpp"
+#include "moos/database.hpp"
 
 namespace moosdb_lite {
 
-using ConnectionId = ClientId;
+using ConnectionId = moos::ClientId;
+// The database defaults the command line shows (options.cpp).
+using moos::kDefaultCommunity;
+using moos::kDefaultMaxPendingBytes;
 
 /// Banner and identification limits (spec 1.5: the DB reads the identification with a
 /// 5-second timeout; the banner gets the same).
@@ -45,7 +48,7 @@ inline constexpr double kDefaultClientTimeout_s = 5.0;
 inline constexpr double kDbVariableRefreshInterval_s = 1.0;
 
 struct HubConfig {
-  DatabaseConfig database;
+  moos::DatabaseConfig database;
   double time_warp = 1.0;  ///< MOOS time = unix time x warp (spec 0.3), 0 < warp <= 400
   double banner_timeout_s = kDefaultBannerTimeout_s;
   double handshake_timeout_s = kDefaultHandshakeTimeout_s;
@@ -70,7 +73,7 @@ class Hub {
 
   /// `observer` sees every NOTIFY the Database accepts (see Database).
   Hub(HubConfig config, double start_real_s, LogSink log,
-      Database::NotifyObserver observer = {});
+      moos::Database::NotifyObserver observer = {});
 
   /// A new connection from `peer` (e.g. "127.0.0.1:40312"); returns its id.
   ConnectionId open(std::string peer, double now_real_s);
@@ -84,7 +87,7 @@ class Hub {
 
   std::vector<Action> take_actions();
 
-  Database& database() { return db_; }
+  moos::Database& database() { return db_; }
   /// "client "pFoo" (127.0.0.1:40312)" or "connection #3 (127.0.0.1:40312)".
   std::string describe(ConnectionId id) const;
   std::size_t connection_count() const { return connections_.size(); }
@@ -112,7 +115,7 @@ class Hub {
 
   HubConfig config_;
   LogSink log_;
-  Database db_;
+  moos::Database db_;
   std::map<ConnectionId, Connection> connections_;
   ConnectionId next_id_ = 1;
   double last_refresh_real_s_;

@@ -139,7 +139,7 @@ int main(int argc, char** argv) {
       return kExitCannotStart;
     }
   }
-  Database::NotifyObserver observer;
+  moos::Database::NotifyObserver observer;
   if (alog.is_open()) observer = [&alog](const moos::Message& msg) { alog.write(msg); };
   Hub hub(config, start_real_s, log_line, observer);
 

@@ -7,7 +7,6 @@
 #include <cmath>
 #include <limits>
 
-#include "database.hpp"
 #include "hub.hpp"
 #include "moos/codec.hpp"
 #include "moos/limits.hpp"

@@ -10,12 +10,12 @@
 #include "alog_writer.hpp"
 #include "moos/alog.hpp"
 #include "scratch_files.hpp"
-#include "test_messages.hpp"
+#include "wire_messages.hpp"
 
 namespace moosdb_lite {
 namespace {
 
-using namespace moosdb_lite::test;
+using namespace moos::test;
 
 std::vector<std::string> read_lines(const std::string& path) {
   std::ifstream in(path);

@@ -9,13 +9,13 @@
 
 #include "hub.hpp"
 #include "moos/codec.hpp"
-#include "test_messages.hpp"
+#include "wire_messages.hpp"
 
 namespace moosdb_lite {
 namespace {
 
 using moos::Message;
-using namespace moosdb_lite::test;
+using namespace moos::test;
 namespace mt = moos::msg_type;
 
 constexpr double kStart = kT0;

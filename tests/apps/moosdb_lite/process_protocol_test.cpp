@@ -15,9 +15,11 @@
 #include "moos/alog.hpp"
 #include "moosdb_server.hpp"
 #include "raw_client.hpp"
-#include "test_messages.hpp"
+#include "wire_messages.hpp"
 
 namespace moosdb_lite::test {
+
+using namespace moos::test;
 namespace {
 
 using moos::Message;

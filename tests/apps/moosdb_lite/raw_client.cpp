@@ -13,9 +13,11 @@
 
 #include "child_process.hpp"
 #include "moos/clock.hpp"
-#include "test_messages.hpp"
+#include "wire_messages.hpp"
 
 namespace moosdb_lite::test {
+
+using namespace moos::test;
 
 namespace {
 

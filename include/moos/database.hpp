@@ -1,6 +1,8 @@
 #pragma once
-// The MOOSDB's data and delivery semantics, without sockets or clocks
-// (../shared/spec/moos-wire-protocol.md sections 1.5-1.9 and 5).
+// The MOOSDB's rules, once, without sockets, threads or clocks
+// (../shared/spec/moos-wire-protocol.md sections 1.5-1.9 and 5). Two users: moosdb-lite (the
+// server; src/apps/moosdb-lite turns bytes into packets and back) and moos::InProcessBus (the
+// in-process community of the app tests, include/moos/bus.hpp).
 //
 // Contract:
 // - Clients are known by a small integer id chosen by the caller (the connection layer) and
@@ -17,8 +19,24 @@
 //   that names the client; the rest of the packet is processed.
 // - A client whose undelivered mail exceeds `max_pending_bytes` is reported through
 //   take_drop_requests() (the connection layer disconnects it); no more mail is queued for it.
+// - Subscriptions (spec 5.3-5.5), as the reference MOOSDB keeps them:
+//   * a subscription that never delivered is always due ("never" is explicit, not a time 0,
+//     so a clock that starts at 0 behaves like one that starts today); a REGISTER snapshot
+//     counts as a delivery and starts the throttle window;
+//   * at a variable's first write every stored wildcard filter of a client that matches (app
+//     pattern vs the writer, variable pattern vs the name) REPLACES that client's
+//     subscription, an explicit REGISTER included: the filter's interval applies and the
+//     subscription has never delivered. Of several matching filters of one client the one
+//     with the greatest (app pattern, variable pattern) pair wins, as in the reference DB's
+//     ordered filter set.
+// - DB variables (spec 5.7): DB_TIME, DB_UPTIME, DB_CLIENTS, DB_RWSUMMARY at construction and
+//   on refresh_db_variables(); DB_EVENT and DB_CLIENTS on every connect and disconnect. With
+//   `db_variables = false` none is written (the in-process bus, which has no refresh timer).
 //
-// Deviations from the reference DB are listed in docs/moos.md.
+// Deviations from the reference DB (docs/moos.md section 3): malformed messages are refused
+// with a logged reason; an empty NOTIFY source becomes the client's name; WILDCARD_UNREGISTER
+// also removes the identical filter; a synchronous client's empty packet is answered; DB_QOS
+// and DB_VARSUMMARY are not published.
 
 #include <cstddef>
 #include <cstdint>
@@ -33,7 +51,7 @@
 #include "moos/message.hpp"
 #include "moos/wildcard.hpp"
 
-namespace moosdb_lite {
+namespace moos {
 
 using ClientId = std::uint64_t;
 
@@ -50,12 +68,13 @@ struct DatabaseConfig {
   std::string community = kDefaultCommunity;
   std::string hostname;  ///< sent in WELCOME as `hostname=<hostname>` (spec 1.6)
   std::size_t max_pending_bytes = kDefaultMaxPendingBytes;
+  bool db_variables = true;  ///< publish the DB_* variables of spec 5.7
 };
 
 /// One packet for one client.
 struct OutPacket {
   ClientId to = 0;
-  std::vector<moos::Message> messages;
+  std::vector<Message> messages;
 };
 
 struct DropRequest {
@@ -70,19 +89,18 @@ inline constexpr const char* kNoNameReason = "Failed to read receive client's na
 class Database {
  public:
   using LogSink = std::function<void(const std::string&)>;
-  using NotifyObserver = std::function<void(const moos::Message&)>;
+  using NotifyObserver = std::function<void(const Message&)>;
 
   /// Creates the DB and writes its DB_* variables once (spec 5.6 SHOULD), so a client
   /// registering before the first refresh gets a snapshot. `observer` (may be empty) is
   /// called with every NOTIFY the DB accepts, as stored and forwarded, DB variables
-  /// included: this is what `--log` writes.
+  /// included: this is what moosdb-lite's `--log` writes.
   Database(DatabaseConfig config, double start_moos_s, LogSink log, NotifyObserver observer = {});
 
   /// Handshake (spec 1.5-1.6): `identification` is the decoded identification packet.
   /// Queues WELCOME (returns true; the client is now connected, DB_EVENT and DB_CLIENTS are
   /// published) or POISON (returns false; the caller closes the connection after sending).
-  bool connect(ClientId id, const std::vector<moos::Message>& identification,
-               double now_moos_s);
+  bool connect(ClientId id, const std::vector<Message>& identification, double now_moos_s);
 
   /// Disconnect clean-up of spec 1.9: subscriptions, filters and undelivered mail go, the
   /// name is free, DB_EVENT/DB_CLIENTS are published. Unknown ids are ignored.
@@ -90,7 +108,7 @@ class Database {
 
   /// Processes one packet from a connected client (spec 5.2) and queues the replies.
   /// Taken by value: its NOTIFYs are moved into storage, not copied.
-  void process_packet(ClientId id, std::vector<moos::Message> packet, double now_moos_s);
+  void process_packet(ClientId id, std::vector<Message> packet, double now_moos_s);
 
   /// Rewrites DB_TIME, DB_UPTIME, DB_CLIENTS and DB_RWSUMMARY (spec 5.7).
   void refresh_db_variables(double now_moos_s);
@@ -103,90 +121,104 @@ class Database {
   bool is_connected(ClientId id) const { return clients_.count(id) != 0; }
   std::optional<std::string> client_name(ClientId id) const;
   bool is_async(ClientId id) const;
-  /// `MOOSDB_<community>`: the source of DB-generated messages (spec 5.7).
-  const std::string& db_name() const { return db_name_; }
-  const std::string& community() const { return config_.community; }
-  /// Names of connected clients, each followed by a comma (the DB_CLIENTS value).
-  std::string client_list() const;
+  /// The snapshot a REGISTER of `name` would send now (spec 2.6); nullopt while unwritten.
+  std::optional<Message> latest(const std::string& name) const;
 
  private:
   using VarId = std::size_t;
 
   struct Subscription {
-    double interval_s = 0.0;
-    double last_delivery_moos_s = 0.0;
+    double interval_s = 0.0;  ///< 0: every update
+    std::optional<double> last_delivery_moos_s;  ///< nullopt: never delivered
+  };
+
+  /// The last accepted write of a variable.
+  struct Value {
+    double dval = kUnsetDouble;   ///< the wire's -1 for string and binary values
+    std::string sval;
+    double time_moos_s = 0.0;     ///< the publisher's time stamp
+    double db_write_moos_s = 0.0; ///< DB time of the write
+    std::string writer;
+    std::string writer_aux;
+    std::string community;
+  };
+
+  /// Write-frequency estimate (dval2 of the `ALL` answer, spec 5.8).
+  struct WriteFrequency {
+    double hz = 0.0;
+    double window_start_moos_s = 0.0;
+    std::uint64_t window_start_count = 0;
   };
 
   struct Variable {
     std::string name;
-    char data_type = moos::data_type::kNotSet;
-    double dval = moos::kUnsetDouble;
-    std::string sval;
-    double time_moos_s = moos::kUnsetDouble;      ///< publisher's time stamp of the last write
-    double db_write_moos_s = moos::kUnsetDouble;  ///< DB time of the last write
-    std::string writer;
-    std::string writer_aux;
-    std::string community;
+    char data_type = data_type::kNotSet;
+    std::optional<Value> value;  ///< nullopt: never written (or cleared by DB_CLEAR)
     std::uint64_t write_count = 0;
-    double frequency_hz = 0.0;
-    double frequency_window_start_moos_s = 0.0;
-    std::uint64_t frequency_window_start_count = 0;
+    WriteFrequency frequency;
     std::map<ClientId, Subscription> subscribers;  ///< ordered: deterministic fan-out
   };
 
   struct Client {
     std::string name;
     bool async = false;
-    std::vector<moos::Message> pending;  ///< undelivered mail, in order
+    std::vector<Message> pending;  ///< undelivered mail, in order
     std::size_t pending_bytes = 0;
-    bool queued_for_flush = false;       ///< already listed in async_with_mail_
+    bool queued_for_flush = false;  ///< already listed in async_with_mail_
     bool overflowed = false;
-    std::vector<moos::WildcardSpec> filters;
+    std::vector<WildcardSpec> filters;
     std::set<VarId> subscribed;
     std::set<VarId> published;
     int refusals = 0;
   };
 
-  // One handler per message type (spec 5.2 step 3).
-  void handle_message(ClientId id, moos::Message msg, double now);
-  void handle_notify(ClientId id, moos::Message msg, double now);
-  void handle_register(ClientId id, const moos::Message& msg, double now);
-  void handle_unregister(ClientId id, const moos::Message& msg);
-  void handle_wildcard_register(ClientId id, const moos::Message& msg, double now);
-  void handle_wildcard_unregister(ClientId id, const moos::Message& msg);
-  void handle_server_request(ClientId id, const moos::Message& msg, double now);
+  // One handler per message type (spec 5.2 step 3), each in the file of its rule.
+  void handle_message(ClientId id, Message msg, double now);
+  void handle_notify(ClientId id, Message msg, double now);
+  void handle_register(ClientId id, const Message& msg, double now);
+  void handle_unregister(ClientId id, const Message& msg);
+  void handle_wildcard_register(ClientId id, const Message& msg, double now);
+  void handle_wildcard_unregister(ClientId id, const Message& msg);
+  void handle_server_request(ClientId id, const Message& msg, double now);
 
-  // Core operations shared by clients and the DB's own variables.
-  /// Stores and fans out a NOTIFY (spec 5.3); returns its variable. The write was refused
-  /// if the variable's type differs from the message's afterwards.
-  VarId publish(moos::Message msg, double now);
+  // NOTIFY storage and fan-out (database_notify.cpp). publish() returns the variable; the
+  // write was refused if the variable's type differs from the message's afterwards.
+  VarId publish(Message msg, double now);
+  void store(Variable& var, const Message& msg, double now);
+  void fan_out(Variable& var, const Message& msg, double now);
+  VarId find_or_create(const std::string& name);
+
+  // Subscriptions (database_register.cpp).
   void subscribe(ClientId id, VarId var, double interval_s, double now);
   void bind_wildcard_filters(VarId var, const std::string& writer);
-  static bool matches(const moos::WildcardSpec& spec, const Variable& var);
-  VarId find_or_create(const std::string& name);
+  static bool matches(const WildcardSpec& spec, const Variable& var);
+
+  // DB variables (database_db_variables.cpp).
   void publish_db_string(const std::string& key, const std::string& value, double now);
   void publish_db_double(const std::string& key, double value, double now);
-  void publish_db_variable(moos::Message msg, double now);
+  void publish_db_variable(Message msg, double now);
+  /// Names of connected clients, each followed by a comma (the DB_CLIENTS value).
+  std::string client_list() const;
+  std::string rw_summary() const;
 
-  // Server requests (spec 5.8).
+  // Server requests (database_server_requests.cpp).
   void answer_all(ClientId id, std::int32_t request_id);
   void answer_var_summary(ClientId id, std::int32_t request_id, double now);
   void answer_proc_summary(ClientId requester, std::int32_t request_id, double now);
   void clear_db();
 
-  // Mail and replies.
-  moos::Message snapshot(const Variable& var) const;
-  void queue_mail(ClientId id, moos::Message msg);
+  // Mail and replies (database_mail.cpp).
+  Message snapshot(const Variable& var) const;
+  void queue_mail(ClientId id, Message msg);
   void flush_async_mail();
-  void send_packet(ClientId to, std::vector<moos::Message> messages);
-  moos::Message null_reply(double now) const;
+  void send_packet(ClientId to, std::vector<Message> messages);
+  Message null_reply(double now) const;
 
   void refuse(ClientId id, const std::string& what);
   std::string describe(ClientId id) const;
-  std::string rw_summary() const;
 
   DatabaseConfig config_;
-  std::string db_name_;
+  std::string db_name_;  ///< `MOOSDB_<community>`: the source of DB-generated messages (5.7)
   double start_moos_s_;
   LogSink log_;
   NotifyObserver notify_observer_;
@@ -201,4 +233,4 @@ class Database {
   std::vector<DropRequest> drops_;
 };
 
-}  // namespace moosdb_lite
+}  // namespace moos

@@ -1,5 +1,6 @@
 #pragma once
-// Message builders shared by the moosdb-lite tests: what libMOOS and pymoos2 clients send
+// Message builders shared by the MOOSDB tests (moos::Database in tests/moos, moosdb-lite in
+// tests/apps/moosdb_lite): what libMOOS and pymoos2 clients send
 // (../shared/spec/moos-wire-protocol.md 1.5, 2.6).
 
 #include <string>
@@ -7,7 +8,7 @@
 
 #include "moos/message.hpp"
 
-namespace moosdb_lite::test {
+namespace moos::test {
 
 /// A fixed MOOS time for unit tests (1700000000.0, spec 8).
 inline constexpr double kT0 = 1700000000.0;
@@ -104,4 +105,4 @@ inline moos::Message null_message(const std::string& source) {
   return m;
 }
 
-}  // namespace moosdb_lite::test
+}  // namespace moos::test

@@ -1,0 +1,207 @@
+// MOOSDB rules: handshake, disconnect and the packet loop (../shared/spec/moos-wire-protocol.md
+// 1.5-1.9, 5.2). Contract in include/moos/database.hpp; the other rules live in
+// database_notify.cpp (5.3), database_register.cpp (5.4-5.5), database_db_variables.cpp (5.7),
+// database_server_requests.cpp (5.8) and database_mail.cpp (5.6).
+//
+// Algorithm: each call applies the spec's rules in order and appends mail to the pending
+// queues of the clients it concerns. At the end of every public call, the pending mail of
+// each asynchronous client is sent as one packet (spec 5.6 SHOULD: deliver as soon as
+// queued), while a synchronous client's mail waits for the reply to its next packet
+// (spec 5.6 MUST: no unsolicited packets). The requester's own reply is built first, so
+// an echoed TIMING opens its packet.
+//
+// Data structures: variables live in a vector indexed by a small VarId, found by name
+// through a hash map; each variable keeps its subscribers in an ordered map (fan-out order
+// = connection order, deterministic); each client keeps the ids of the variables it is
+// subscribed to, so a disconnect touches only those. Asynchronous clients with queued mail
+// are listed once in `async_with_mail_`, so flushing costs nothing for idle clients.
+
+#include "moos/database.hpp"
+
+#include <cassert>
+#include <utility>
+
+#include "base/text.hpp"
+
+namespace moos {
+
+namespace {
+
+namespace mt = msg_type;
+namespace dt = data_type;
+
+Message handshake_reply(char type, char data_type, double now) {
+  Message m;
+  m.id = kUnsetId;
+  m.type = type;
+  m.data_type = data_type;
+  m.time = now;
+  return m;
+}
+
+}  // namespace
+
+std::string duplicate_name_reason(const std::string& name) {
+  return "A client of this name (\"" + name + "\") already exists";
+}
+
+Database::Database(DatabaseConfig config, double start_moos_s, LogSink log,
+                   NotifyObserver observer)
+    : config_(std::move(config)),
+      db_name_("MOOSDB_" + config_.community),
+      start_moos_s_(start_moos_s),
+      log_(std::move(log)),
+      notify_observer_(std::move(observer)) {
+  refresh_db_variables(start_moos_s);
+}
+
+// ---------------------------------------------------------------------------------------
+// Connections (spec 1.5, 1.6, 1.9)
+
+bool Database::connect(ClientId id, const std::vector<Message>& identification,
+                       double now_moos_s) {
+  assert(clients_.count(id) == 0 && "connection ids are unique");
+  const Message* ident = identification.empty() ? nullptr : &identification.front();
+  std::optional<std::string> poison_reason;
+  if (ident == nullptr || ident->sval.empty()) {
+    poison_reason = kNoNameReason;
+  } else if (client_by_name_.count(ident->sval) != 0) {
+    poison_reason = duplicate_name_reason(ident->sval);
+  }
+  if (poison_reason) {
+    Message poison = handshake_reply(mt::kPoison, dt::kString, now_moos_s);
+    poison.sval = *poison_reason;
+    send_packet(id, {std::move(poison)});
+    return false;
+  }
+
+  Client client;
+  client.name = ident->sval;
+  client.async = base::iequals(ident->key, kAsynchronousKey);
+  client_by_name_[client.name] = id;
+  const std::string name = client.name;
+  clients_.emplace(id, std::move(client));
+
+  // Skew = server MOOS time when the identification is processed - its time (spec 1.8).
+  Message welcome = handshake_reply(mt::kWelcome, dt::kDouble, now_moos_s);
+  welcome.source_aux = "hostname=" + config_.hostname;
+  welcome.community = config_.community;
+  welcome.dval = now_moos_s - ident->time;
+  welcome.sval = kAsynchronousKey;
+  send_packet(id, {std::move(welcome)});
+
+  publish_db_string("DB_EVENT", "connected=" + name, now_moos_s);
+  publish_db_string("DB_CLIENTS", client_list(), now_moos_s);
+  flush_async_mail();
+  return true;
+}
+
+void Database::disconnect(ClientId id, double now_moos_s) {
+  const auto it = clients_.find(id);
+  if (it == clients_.end()) return;
+  Client& client = it->second;
+  for (const VarId var : client.subscribed) vars_[var].subscribers.erase(id);
+  if (client.refusals > kLoggedRefusalsPerClient)
+    log_("client \"" + client.name + "\": " + std::to_string(client.refusals) +
+         " messages refused in total");
+  const std::string name = client.name;
+  client_by_name_.erase(name);
+  clients_.erase(it);
+
+  publish_db_string("DB_EVENT", "disconnected=" + name, now_moos_s);
+  publish_db_string("DB_CLIENTS", client_list(), now_moos_s);
+  flush_async_mail();
+}
+
+// ---------------------------------------------------------------------------------------
+// Packets (spec 5.2)
+
+void Database::process_packet(ClientId id, std::vector<Message> packet, double now_moos_s) {
+  if (clients_.count(id) == 0) return;
+  // Step 2: a leading TIMING is echoed to asynchronous clients; synchronous clients never
+  // receive TIMING (spec 5.6), so theirs is dropped. TIMING elsewhere is ignored.
+  std::optional<Message> echo;
+  std::size_t first = 0;
+  if (!packet.empty() && packet.front().type == mt::kTiming) {
+    first = 1;
+    if (clients_.at(id).async) {
+      echo = packet.front();
+      echo->dval = now_moos_s;  // server local warped time; the DB's skew is 0
+      echo->dval2 = 0.0;        // outgoing delay for this client, seconds (none)
+    }
+  }
+  for (std::size_t i = first; i < packet.size(); ++i)
+    handle_message(id, std::move(packet[i]), now_moos_s);
+
+  // Step 6: the reply. Sync: NULL first, always. Async: echo first, only if non-empty.
+  Client& client = clients_.at(id);
+  std::vector<Message> reply;
+  if (!client.async) {
+    reply.push_back(null_reply(now_moos_s));
+  } else if (echo) {
+    reply.push_back(std::move(*echo));
+  }
+  for (auto& mail : client.pending) reply.push_back(std::move(mail));
+  client.pending.clear();
+  client.pending_bytes = 0;
+  if (!reply.empty()) send_packet(id, std::move(reply));
+  // Step 7, for every asynchronous client and on every packet (spec 5.6 SHOULD).
+  flush_async_mail();
+}
+
+void Database::handle_message(ClientId id, Message msg, double now) {
+  switch (msg.type) {
+    case mt::kNotify: handle_notify(id, std::move(msg), now); break;
+    case mt::kRegister: handle_register(id, msg, now); break;
+    case mt::kUnregister: handle_unregister(id, msg); break;
+    case mt::kWildcardRegister: handle_wildcard_register(id, msg, now); break;
+    case mt::kWildcardUnregister: handle_wildcard_unregister(id, msg); break;
+    case mt::kServerRequest: handle_server_request(id, msg, now); break;
+    case mt::kNull:     // keep-alive
+    case mt::kCommand:  // ignored by the reference DB
+    case mt::kTiming:   // only meaningful first in a packet
+      break;
+    default:
+      refuse(id, std::string("message of unknown type '") + msg.type + "' (key \"" + msg.key +
+                     "\") ignored");
+      break;
+  }
+}
+
+// ---------------------------------------------------------------------------------------
+// Diagnostics and queries
+
+void Database::refuse(ClientId id, const std::string& what) {
+  Client& client = clients_.at(id);
+  ++client.refusals;
+  if (client.refusals <= kLoggedRefusalsPerClient) {
+    log_(describe(id) + ": " + what);
+  } else if (client.refusals == kLoggedRefusalsPerClient + 1) {
+    log_(describe(id) + ": more refused messages; further ones are counted, not logged");
+  }
+}
+
+std::string Database::describe(ClientId id) const {
+  const auto it = clients_.find(id);
+  return it == clients_.end() ? "client #" + std::to_string(id)
+                              : "client \"" + it->second.name + "\"";
+}
+
+std::optional<std::string> Database::client_name(ClientId id) const {
+  const auto it = clients_.find(id);
+  if (it == clients_.end()) return std::nullopt;
+  return it->second.name;
+}
+
+bool Database::is_async(ClientId id) const {
+  const auto it = clients_.find(id);
+  return it != clients_.end() && it->second.async;
+}
+
+std::optional<Message> Database::latest(const std::string& name) const {
+  const auto it = var_index_.find(name);
+  if (it == var_index_.end() || !vars_[it->second].value) return std::nullopt;
+  return snapshot(vars_[it->second]);
+}
+
+}  // namespace moos

@@ -1,0 +1,92 @@
+// MOOSDB rule: mail, replies and their order (../shared/spec/moos-wire-protocol.md 2.6, 5.6).
+// Contract in include/moos/database.hpp.
+
+#include <utility>
+
+#include "moos/database.hpp"
+
+namespace moos {
+
+namespace mt = msg_type;
+namespace dt = data_type;
+
+Message Database::snapshot(const Variable& var) const {
+  // Spec 2.6 "NOTIFY S->C snapshot on REGISTER"; an unwritten variable (the `ALL` answer)
+  // shows the wire's unset fields.
+  Message m;
+  m.id = kUnsetId;
+  m.type = mt::kNotify;
+  m.data_type = var.data_type;
+  m.key = var.name;
+  m.dval2 = kUnsetDouble;
+  if (var.value) {
+    m.source = var.value->writer;
+    m.source_aux = var.value->writer_aux;
+    m.community = var.value->community;
+    m.time = var.value->time_moos_s;
+    m.dval = var.value->dval;
+    m.sval = var.value->sval;
+  }
+  return m;
+}
+
+void Database::queue_mail(ClientId id, Message msg) {
+  Client& client = clients_.at(id);
+  if (client.overflowed) return;
+  const std::size_t size = msg.encoded_size();
+  if (client.pending_bytes + size > config_.max_pending_bytes) {
+    client.overflowed = true;
+    drops_.push_back(DropRequest{
+        id, "undelivered mail would exceed " + std::to_string(config_.max_pending_bytes) +
+                " bytes (the client does not collect its mail)"});
+    return;
+  }
+  client.pending_bytes += size;
+  client.pending.push_back(std::move(msg));
+  if (client.async && !client.queued_for_flush) {
+    client.queued_for_flush = true;
+    async_with_mail_.push_back(id);
+  }
+}
+
+void Database::flush_async_mail() {
+  for (const ClientId id : async_with_mail_) {
+    const auto it = clients_.find(id);
+    if (it == clients_.end()) continue;
+    Client& client = it->second;
+    client.queued_for_flush = false;
+    if (client.pending.empty()) continue;
+    send_packet(id, std::move(client.pending));
+    client.pending.clear();
+    client.pending_bytes = 0;
+  }
+  async_with_mail_.clear();
+}
+
+void Database::send_packet(ClientId to, std::vector<Message> messages) {
+  output_.push_back(OutPacket{to, std::move(messages)});
+}
+
+Message Database::null_reply(double now) const {
+  // Spec 2.6 "NULL S->C": dval carries the server's local warped time, time is -1.
+  Message m;
+  m.id = kUnsetId;
+  m.type = mt::kNull;
+  m.data_type = dt::kDouble;
+  m.dval = now;
+  return m;
+}
+
+std::vector<OutPacket> Database::take_output() {
+  std::vector<OutPacket> out;
+  out.swap(output_);
+  return out;
+}
+
+std::vector<DropRequest> Database::take_drop_requests() {
+  std::vector<DropRequest> out;
+  out.swap(drops_);
+  return out;
+}
+
+}  // namespace moos

@@ -1,0 +1,127 @@
+// MOOSDB rule: NOTIFY, the store and the fan-out (../shared/spec/moos-wire-protocol.md 5.3).
+// Contract in include/moos/database.hpp. Clients' NOTIFYs and the DB's own variables take
+// the same path, so subscribers cannot tell them apart.
+
+#include <utility>
+
+#include "moos/database.hpp"
+
+namespace moos {
+
+namespace {
+
+namespace mt = msg_type;
+namespace dt = data_type;
+
+/// Write-frequency estimate of a variable (dval2 of the `ALL` answer, spec 5.8): writes
+/// counted over windows of at least this many MOOS seconds.
+constexpr double kFrequencyWindow_moos_s = 1.0;
+
+bool is_value_type(char data_type) {
+  return data_type == dt::kDouble || data_type == dt::kString || data_type == dt::kBinary;
+}
+
+std::string type_name(char data_type) {
+  switch (data_type) {
+    case dt::kDouble: return "double";
+    case dt::kString: return "string";
+    case dt::kBinary: return "binary";
+    default: return std::string("type '") + data_type + "'";
+  }
+}
+
+}  // namespace
+
+void Database::handle_notify(ClientId id, Message msg, double now) {
+  if (msg.key.empty()) return refuse(id, "NOTIFY with an empty variable name refused");
+  if (!is_value_type(msg.data_type))
+    return refuse(id, "NOTIFY " + msg.key + " with data type '" + msg.data_type +
+                          "' refused (expected D, S or B)");
+  Client& client = clients_.at(id);
+  if (msg.source.empty()) msg.source = client.name;
+  const char type = msg.data_type;
+  const VarId var = publish(std::move(msg), now);
+  if (vars_[var].data_type != type)
+    return refuse(id, "NOTIFY " + vars_[var].name + " as " + type_name(type) +
+                          " refused: the variable is " + type_name(vars_[var].data_type) +
+                          " (fixed by its first write)");
+  client.published.insert(var);
+}
+
+void Database::publish_db_variable(Message msg, double now) {
+  msg.community = config_.community;
+  const char type = msg.data_type;
+  const VarId var = publish(std::move(msg), now);
+  if (vars_[var].data_type != type)
+    log_("DB variable " + vars_[var].name + " not written: a client wrote it first as " +
+         type_name(vars_[var].data_type));
+}
+
+Database::VarId Database::publish(Message msg, double now) {
+  const VarId id = find_or_create(msg.key);
+  if (vars_[id].write_count == 0) {
+    // Step 2: the first write fixes the type and binds the wildcard filters.
+    vars_[id].data_type = msg.data_type;
+    bind_wildcard_filters(id, msg.source);
+  }
+  Variable& var = vars_[id];
+  if (msg.data_type != var.data_type) return id;  // step 3: the caller reports the refusal
+
+  msg.type = mt::kNotify;
+  if (msg.community.empty()) msg.community = config_.community;
+  store(var, msg, now);
+  if (notify_observer_) notify_observer_(msg);
+  fan_out(var, msg, now);
+  return id;
+}
+
+void Database::store(Variable& var, const Message& msg, double now) {
+  // Step 4: the value, its stamps and the write-frequency estimate.
+  Value value;
+  if (msg.data_type == dt::kDouble) {
+    value.dval = msg.dval;
+  } else {
+    value.sval = msg.sval;
+  }
+  value.time_moos_s = msg.time;
+  value.db_write_moos_s = now;
+  value.writer = msg.source;
+  value.writer_aux = msg.source_aux;
+  value.community = msg.community;
+  var.value = std::move(value);
+
+  WriteFrequency& f = var.frequency;
+  if (var.write_count == 0) f.window_start_moos_s = now;
+  ++var.write_count;
+  const double window_s = now - f.window_start_moos_s;
+  if (window_s >= kFrequencyWindow_moos_s) {
+    f.hz = static_cast<double>(var.write_count - f.window_start_count) / window_s;
+    f.window_start_moos_s = now;
+    f.window_start_count = var.write_count;
+  }
+}
+
+void Database::fan_out(Variable& var, const Message& msg, double now) {
+  // Steps 5-6: every subscriber whose interval expired, the publisher included; throttled
+  // updates are dropped, not delayed. A subscription that never delivered is due.
+  for (auto& [subscriber, sub] : var.subscribers) {
+    const bool due = sub.interval_s <= 0.0 || !sub.last_delivery_moos_s ||
+                     now - *sub.last_delivery_moos_s >= sub.interval_s;
+    if (!due) continue;
+    sub.last_delivery_moos_s = now;
+    queue_mail(subscriber, msg);
+  }
+}
+
+Database::VarId Database::find_or_create(const std::string& name) {
+  const auto it = var_index_.find(name);
+  if (it != var_index_.end()) return it->second;
+  const VarId id = vars_.size();
+  Variable var;
+  var.name = name;
+  vars_.push_back(std::move(var));
+  var_index_.emplace(name, id);
+  return id;
+}
+
+}  // namespace moos
