@@ -76,6 +76,18 @@ bool in_swath(const Pose& pose, double x_m, double y_m, double half_width_m,
   return std::abs(along) <= half_length_m && std::abs(across) <= half_width_m;
 }
 
+std::optional<double> detection_delay(const std::deque<SentReport>& history, double received_s,
+                                      double x_m, double y_m, double half_width_m,
+                                      double half_length_m) {
+  auto inside = [&](auto it) { return in_swath(it->pose, x_m, y_m, half_width_m, half_length_m); };
+  auto it = std::upper_bound(history.begin(), history.end(), received_s,
+                             [](double t, const SentReport& s) { return t < s.real_s; });
+  while (it != history.begin() && !inside(std::prev(it))) --it;
+  if (it == history.begin()) return std::nullopt;
+  while (it != history.begin() && inside(std::prev(it))) --it;
+  return received_s - it->real_s;
+}
+
 std::string node_report(std::string_view name, const Pose& pose, double speed_mps, double time_s) {
   std::string text = "NAME=";
   text += name;

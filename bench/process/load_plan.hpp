@@ -5,6 +5,7 @@
 //
 // Conventions: x east, y north, metres; MOOS headings in degrees clockwise from north.
 
+#include <deque>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -50,6 +51,19 @@ class Lawnmower {
 /// True if (x_m, y_m) lies in the rectangle centred on `pose`: `half_width_m` to each side and
 /// `half_length_m` fore and aft (boundary included).
 bool in_swath(const Pose& pose, double x_m, double y_m, double half_width_m, double half_length_m);
+
+/// A node report as the load generator sent it: when (real seconds) and where.
+struct SentReport {
+  double real_s = 0;
+  Pose pose;
+};
+/// The delay of a detection of (x_m, y_m) received at `received_s`: real seconds since the
+/// node report that first put the object in the swath, in the run of consecutive reports with
+/// it inside that ends with the latest such report sent before `received_s`. nullopt when no
+/// report in `history` (oldest first) had it inside.
+std::optional<double> detection_delay(const std::deque<SentReport>& history, double received_s,
+                                      double x_m, double y_m, double half_width_m,
+                                      double half_length_m);
 
 /// NODE_REPORT text with NAME, X, Y, SPD, HDG, TYPE, TIME and LENGTH.
 std::string node_report(std::string_view name, const Pose& pose, double speed_mps, double time_s);

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <deque>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -33,15 +32,10 @@ constexpr double kConfigRepeat_real_s = 0.5;
 constexpr std::size_t kHistoryReports = 6000;
 constexpr double kStopGrace_real_s = 5;
 
-struct Sent {
-  double real_s;
-  Pose pose;
-};
-
 struct Vehicle {
   std::string name;
   Lawnmower track;
-  std::deque<Sent> history;
+  std::deque<SentReport> history;
   bool acked = false;
 };
 
@@ -75,21 +69,6 @@ struct AppcastSample {
   double moos_s;
   long long iteration;
 };
-
-/// Real seconds from the node report that first put (x, y) in the swath, in the run of reports
-/// that ends with the latest one sent before `received_s`, to `received_s`; nullopt if none did.
-std::optional<double> detection_delay(const std::deque<Sent>& history, double received_s,
-                                      double x, double y, double half_width,
-                                      double half_length) {
-  auto it = std::upper_bound(history.begin(), history.end(), received_s,
-                             [](double t, const Sent& s) { return t < s.real_s; });
-  while (it != history.begin() && !in_swath(std::prev(it)->pose, x, y, half_width, half_length))
-    --it;
-  if (it == history.begin()) return std::nullopt;
-  while (it != history.begin() && in_swath(std::prev(it)->pose, x, y, half_width, half_length))
-    --it;
-  return received_s - it->real_s;
-}
 
 std::string appcast_request() {
   return std::string("node=") + kCommunity + ",app=" + kSensorName +
