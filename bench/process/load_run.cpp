@@ -140,8 +140,9 @@ class Run {
     if (!sensor_.start(target_.sensor, {"mission.moos", kSensorName}, target_.work_dir,
                        target_.work_dir + "/sensor"))
       return fail(r, "cannot start " + target_.sensor + ": " + sensor_.error());
-    if (!configure_all(started)) return fail(r, "the sensor did not acknowledge every vehicle's "
-                                                "configuration in time (see " + target_.work_dir + "/sensor.err)");
+    if (!configure_all(started))
+      return fail(r, "the sensor did not iterate and acknowledge every vehicle's configuration in "
+                     "time (see " + target_.work_dir + "/sensor.err)");
     r.startup_real_s = steady_now_s() - started;
     log_ << "  " << target_.label << ": sensor ready after " << base::fix(r.startup_real_s, 1)
          << " s, playing " << base::format_g(spec_.duration_s) << " simulated s\n";
@@ -161,7 +162,8 @@ class Run {
   bool configure_all(double started) {
     double next_request = 0;
     std::size_t acked = 0;
-    while (acked < vehicles_.size()) {
+    bool iterated = false;  // the first APPCAST comes with the first iteration, after loading
+    while (acked < vehicles_.size() || !iterated) {
       const double now = steady_now_s();
       if (now - started > spec_.startup_timeout_real_s || !sensor_.running()) return false;
       if (now >= next_request) {
@@ -172,6 +174,7 @@ class Run {
         next_request = now + kConfigRepeat_real_s;
       }
       for (const auto& item : inbox_.take()) {
+        if (item.message.key == "APPCAST") iterated = true;
         if (!base::starts_with(item.message.key, "UHZ_CONFIG_ACK_")) continue;
         const auto found = index_.find(value_of(item.message.sval, "vname"));
         if (found == index_.end() || vehicles_[found->second].acked) continue;

@@ -8,8 +8,9 @@
 // - Every wait is bounded (start-up_timeout_real_s for the sensor to acknowledge every
 //   vehicle's configuration, a few seconds for everything else); both processes are stopped
 //   before run_load returns, whatever happened.
-// - The measurement window starts when every vehicle has its configuration acknowledged and
-//   lasts duration_s / warp real seconds; CPU is the difference of /proc figures at its two ends.
+// - The measurement window starts when the sensor has iterated once (its first APPCAST) and
+//   every vehicle has its configuration acknowledged; it lasts duration_s / warp real seconds.
+//   CPU is the difference of the /proc figures at its two ends.
 
 #include <cstddef>
 #include <ostream>

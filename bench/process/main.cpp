@@ -28,7 +28,7 @@ uFldHazardSensor is found (--original, or on PATH and not ours), it runs on the 
 load and MOOSDB, and a ratio column is printed.
 
   --objects=N          objects in the field, half hazards (default 10000, at most 1000000)
-  --vehicles=V         vehicles (default 1, at most 1000)
+  --vehicles=V         vehicles (default 1, at most 1000; 0 measures an idle sensor)
   --warp=W             MOOS time warp (default 50)
   --duration=S         simulated seconds of load (default 600)
   --report-hz=HZ       node reports per vehicle per MOOS second (default 10)
@@ -77,7 +77,7 @@ std::optional<Options> parse(int argc, char** argv) {
       ok = n.has_value();
       if (ok) o.objects = *n;
     } else if (name == "--vehicles") {
-      const auto n = base::parse_integer(value, 1, 1000);
+      const auto n = base::parse_integer(value, 0, 1000);
       ok = n.has_value();
       if (ok) o.spec.vehicles = static_cast<int>(*n);
     } else if (name == "--warp") {
