@@ -35,7 +35,8 @@ each stamped with its send time.
   --window=N           messages in flight at most (default 20000)
   --rate=HZ            messages per second in the latency run (default 10000)
   --seconds=S          length of the latency run (default 5)
-  --work-dir=DIR       mission files and DB logs (default: a new /tmp folder)
+  --work-dir=DIR       mission files and DB logs (default: a new /tmp folder, removed at the
+                       end unless a run failed)
 )";
 
 constexpr double kConnectTimeout_real_s = 10;
@@ -219,6 +220,9 @@ std::optional<Options> parse(int argc, char** argv) {
       return std::nullopt;
     }
   }
+  // The DBs run in their own folders: relative program paths would break there.
+  for (std::string* program : {&o.moosdb, &o.reference})
+    if (program->find('/') != std::string::npos) *program = std::filesystem::absolute(*program).string();
   return o;
 }
 
@@ -232,7 +236,8 @@ int main(int argc, char** argv) {
   auto options = parse(argc, argv);
   if (!options) return 1;
   Options& o = *options;
-  if (o.work_dir.empty()) {
+  const bool temporary = o.work_dir.empty();  // removed at the end unless a run failed
+  if (temporary) {
     char pattern[] = "/tmp/moosdb_bench.XXXXXX";
     if (::mkdtemp(pattern) == nullptr) return 1;
     o.work_dir = pattern;
@@ -275,5 +280,6 @@ int main(int argc, char** argv) {
       std::cout << dbs[i].first << " failed: " << results[i].error << "\n";
       code = 2;
     }
+  if (temporary && code == 0) std::filesystem::remove_all(o.work_dir);
   return code;
 }

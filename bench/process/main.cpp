@@ -40,7 +40,8 @@ load and MOOSDB, and a ratio column is printed.
   --original=PATH|none the original uFldHazardSensor (default: uFldHazardSensor on PATH if it
                        is not ours)
   --gen-hazards=PATH   gen_hazards (default: the one built with this benchmark)
-  --work-dir=DIR       where the field, missions and logs go (default: a new /tmp folder)
+  --work-dir=DIR       where the field, missions and logs go and stay (default: a new /tmp
+                       folder, removed at the end unless a run failed)
   --startup-timeout=S  real seconds a sensor may take to load its field (default 600)
 )";
 
@@ -118,6 +119,10 @@ std::optional<Options> parse(int argc, char** argv) {
       return std::nullopt;
     }
   }
+  // The processes run in their own folders: relative program paths would break there.
+  for (std::string* program : {&o.sensor, &o.moosdb, &o.gen_hazards})
+    if (program->find('/') != std::string::npos) *program = std::filesystem::absolute(*program).string();
+  if (o.original.find('/') != std::string::npos) o.original = std::filesystem::absolute(o.original).string();
   o.spec.field_side_m = std::sqrt(static_cast<double>(o.objects) * o.area_per_object_m2);
   return o;
 }
@@ -204,7 +209,8 @@ int main(int argc, char** argv) {
   auto options = parse(argc, argv);
   if (!options) return 1;
   Options& o = *options;
-  if (o.work_dir.empty()) {
+  const bool temporary = o.work_dir.empty();  // removed at the end unless a run failed
+  if (temporary) {
     char pattern[] = "/tmp/process_bench.XXXXXX";
     if (::mkdtemp(pattern) == nullptr) {
       std::cerr << "process_bench: cannot create a folder in /tmp\n";
@@ -235,6 +241,10 @@ int main(int argc, char** argv) {
   }
   print_table(o, runs);
   for (const auto& run : runs)
-    if (!run.second.ok) return 2;
+    if (!run.second.ok) {
+      std::cerr << "process_bench: logs kept in " << o.work_dir << "\n";
+      return 2;
+    }
+  if (temporary) std::filesystem::remove_all(o.work_dir);
   return 0;
 }
