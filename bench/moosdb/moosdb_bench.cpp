@@ -220,14 +220,9 @@ std::optional<Options> parse(int argc, char** argv) {
       return std::nullopt;
     }
   }
-  // The DBs run in their own folders: relative program paths would break there.
-  for (std::string* program : {&o.moosdb, &o.reference})
-    if (program->find('/') != std::string::npos) *program = std::filesystem::absolute(*program).string();
+  o.moosdb = bench::absolute_program(o.moosdb);
+  o.reference = bench::absolute_program(o.reference);
   return o;
-}
-
-std::string cell(double value, int decimals) {
-  return value < 0 || std::isnan(value) ? "-" : base::fix(value, decimals);
 }
 
 }  // namespace
@@ -237,10 +232,10 @@ int main(int argc, char** argv) {
   if (!options) return 1;
   Options& o = *options;
   const bool temporary = o.work_dir.empty();  // removed at the end unless a run failed
-  if (temporary) {
-    char pattern[] = "/tmp/moosdb_bench.XXXXXX";
-    if (::mkdtemp(pattern) == nullptr) return 1;
-    o.work_dir = pattern;
+  if (temporary) o.work_dir = bench::make_temporary_dir("moosdb_bench");
+  if (o.work_dir.empty()) {
+    std::cerr << "moosdb_bench: cannot create a folder in /tmp\n";
+    return 1;
   }
   std::vector<std::pair<std::string, std::string>> dbs = {{"moosdb-lite", o.moosdb}};
   const std::string reference = o.reference.empty() ? bench::find_on_path("MOOSDB") : o.reference;
@@ -255,18 +250,15 @@ int main(int argc, char** argv) {
   std::cout << "\n" << o.messages << " small messages relayed between two clients on loopback; "
             << "latency at " << base::format_g(o.rate_hz) << " messages/s for "
             << base::format_g(o.seconds) << " s\n";
-  auto row = [&](std::string what, auto value_of) {
-    what.resize(34, ' ');
-    for (const auto& r : results) {
-      const std::string text = r.ok ? value_of(r) : std::string("failed");
-      what += text + std::string(text.size() < 16 ? 16 - text.size() : 1, ' ');
-    }
-    std::cout << what << "\n";
+  auto row = [&](const std::string& what, auto value_of) {
+    std::vector<std::string> cells;
+    for (const auto& r : results) cells.push_back(r.ok ? value_of(r) : std::string("failed"));
+    std::cout << bench::table_line(what, cells) << "\n";
   };
-  std::string header;
-  header.resize(34, ' ');
-  for (const auto& db : dbs) header += db.first + std::string(16 - db.first.size(), ' ');
-  std::cout << header << "\n";
+  std::vector<std::string> header;
+  for (const auto& db : dbs) header.push_back(db.first);
+  std::cout << bench::table_line("", header) << "\n";
+  using bench::cell;
   row("relayed messages / s", [](const Result& r) { return cell(r.messages_per_s, 0); });
   row("DB CPU us / message", [](const Result& r) { return cell(r.db_cpu_us_per_message, 2); });
   row("delay p50 ms", [](const Result& r) { return cell(r.p50_ms, 3); });

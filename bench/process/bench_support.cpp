@@ -121,6 +121,27 @@ std::string canonical_path(const std::string& path) {
   return error ? std::string() : canonical.string();
 }
 
+std::string absolute_program(const std::string& program) {
+  if (program.find('/') == std::string::npos) return program;
+  return std::filesystem::absolute(program).string();
+}
+
+std::string make_temporary_dir(const std::string& stem) {
+  std::string pattern = "/tmp/" + stem + ".XXXXXX";
+  return ::mkdtemp(pattern.data()) == nullptr ? std::string() : pattern;
+}
+
+std::string cell(double value, int decimals) {
+  return value < 0 || std::isnan(value) ? "-" : base::fix(value, decimals);
+}
+
+std::string table_line(std::string label, const std::vector<std::string>& cells) {
+  label.resize(std::max(label.size(), kLabelColumns), ' ');
+  for (const auto& text : cells)
+    label += text + std::string(text.size() < kCellColumns ? kCellColumns - text.size() : 1, ' ');
+  return label;
+}
+
 Process::~Process() { stop(1.0); }
 
 bool Process::start(const std::string& program, const std::vector<std::string>& args,

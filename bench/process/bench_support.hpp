@@ -48,6 +48,20 @@ std::string find_on_path(const std::string& name);
 /// The canonical path of an existing file, "" if it does not exist.
 std::string canonical_path(const std::string& path);
 
+/// A program path with a '/' made absolute (children run in other folders); a bare name, found
+/// on PATH by exec, unchanged.
+std::string absolute_program(const std::string& program);
+/// A new folder /tmp/<stem>.XXXXXX; "" if it cannot be made.
+std::string make_temporary_dir(const std::string& stem);
+
+/// A table cell: "-" for a negative or NaN value (not measured), else the value to `decimals`.
+std::string cell(double value, int decimals);
+/// One line of a result table: `label` in kLabelColumns, then each cell in kCellColumns (a
+/// longer cell pushes the next one right by at least one blank).
+inline constexpr std::size_t kLabelColumns = 34;
+inline constexpr std::size_t kCellColumns = 16;
+std::string table_line(std::string label, const std::vector<std::string>& cells);
+
 /// A child process with its standard output and error in files.
 class Process {
  public:

@@ -120,9 +120,8 @@ std::optional<Options> parse(int argc, char** argv) {
     }
   }
   // The processes run in their own folders: relative program paths would break there.
-  for (std::string* program : {&o.sensor, &o.moosdb, &o.gen_hazards})
-    if (program->find('/') != std::string::npos) *program = std::filesystem::absolute(*program).string();
-  if (o.original.find('/') != std::string::npos) o.original = std::filesystem::absolute(o.original).string();
+  for (std::string* program : {&o.sensor, &o.moosdb, &o.gen_hazards, &o.original})
+    *program = bench::absolute_program(*program);
   o.spec.field_side_m = std::sqrt(static_cast<double>(o.objects) * o.area_per_object_m2);
   return o;
 }
@@ -154,10 +153,6 @@ bool generate_field(const Options& o, const std::string& path) {
   return std::filesystem::exists(path);
 }
 
-std::string cell(double value, int decimals) {
-  return value < 0 || std::isnan(value) ? "-" : base::fix(value, decimals);
-}
-
 void print_table(const Options& o, const std::vector<std::pair<std::string, bench::LoadResult>>& runs) {
   std::cout << "\nload: " << o.objects << " objects x " << o.spec.vehicles << " vehicles, warp "
             << base::format_g(o.spec.time_warp) << ", " << base::format_g(o.spec.duration_s)
@@ -165,23 +160,20 @@ void print_table(const Options& o, const std::vector<std::pair<std::string, benc
             << " Hz, AppTick " << base::format_g(o.spec.app_tick_hz) << ", markers "
             << (o.spec.show_hazards ? "on" : "off") << ", MOOSDB " << o.moosdb << "\n";
   auto row = [&](const std::string& what, auto value_of, bool ratio) {
-    std::string line = what;
-    line.resize(34, ' ');
-    std::vector<double> values;
-    for (const auto& run : runs) {
-      const std::string text = run.second.ok ? value_of(run.second) : std::string("failed");
-      line += text + std::string(text.size() < 16 ? 16 - text.size() : 1, ' ');
-      values.push_back(run.second.ok ? base::parse_number(text).value_or(-1) : -1);
+    std::vector<std::string> cells;
+    for (const auto& run : runs) cells.push_back(run.second.ok ? value_of(run.second) : "failed");
+    if (ratio && cells.size() == 2) {
+      const auto ours = base::parse_number(cells[0]);
+      const auto theirs = base::parse_number(cells[1]);
+      if (ours && theirs && *ours > 0 && *theirs > 0) cells.push_back(base::fix(*theirs / *ours, 1) + "x");
     }
-    if (ratio && values.size() == 2 && values[0] > 0 && values[1] > 0)
-      line += base::fix(values[1] / values[0], 1) + "x";
-    std::cout << line << "\n";
+    std::cout << bench::table_line(what, cells) << "\n";
   };
-  std::string header = "";
-  header.resize(34, ' ');
-  for (const auto& run : runs) header += run.first + std::string(16 - run.first.size(), ' ');
-  if (runs.size() == 2) header += "original / ours";
-  std::cout << header << "\n";
+  std::vector<std::string> header;
+  for (const auto& run : runs) header.push_back(run.first);
+  if (runs.size() == 2) header.push_back("original / ours");
+  std::cout << bench::table_line("", header) << "\n";
+  using bench::cell;
   using R = bench::LoadResult;
   row("sensor CPU s / simulated hour", [](const R& r) { return cell(r.sensor_cpu_per_h, 2); }, true);
   row("sensor share of a core", [](const R& r) { return cell(100 * r.sensor_cpu_share, 3) + "%"; }, true);
@@ -210,13 +202,10 @@ int main(int argc, char** argv) {
   if (!options) return 1;
   Options& o = *options;
   const bool temporary = o.work_dir.empty();  // removed at the end unless a run failed
-  if (temporary) {
-    char pattern[] = "/tmp/process_bench.XXXXXX";
-    if (::mkdtemp(pattern) == nullptr) {
-      std::cerr << "process_bench: cannot create a folder in /tmp\n";
-      return 1;
-    }
-    o.work_dir = pattern;
+  if (temporary) o.work_dir = bench::make_temporary_dir("process_bench");
+  if (o.work_dir.empty()) {
+    std::cerr << "process_bench: cannot create a folder in /tmp\n";
+    return 1;
   }
   std::filesystem::create_directories(o.work_dir);
   const std::string field = o.work_dir + "/hazards.txt";

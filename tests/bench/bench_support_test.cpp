@@ -89,3 +89,34 @@ TEST(Process, EscalatesToSigkillForAChildThatIgnoresSigint) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(Cell, DashesWhatWasNotMeasured) {
+  EXPECT_EQ(bench::cell(2.456, 2), "2.46");
+  EXPECT_EQ(bench::cell(0, 1), "0.0");
+  EXPECT_EQ(bench::cell(-1, 2), "-");
+  EXPECT_EQ(bench::cell(std::nan(""), 2), "-");
+}
+
+TEST(TableLine, PadsTheLabelAndEveryCell) {
+  const std::string line = bench::table_line("cpu", {"1.50", "82.00"});
+  EXPECT_EQ(line.size(), bench::kLabelColumns + 2 * bench::kCellColumns);
+  EXPECT_EQ(line.substr(0, 3), "cpu");
+  EXPECT_EQ(line.substr(bench::kLabelColumns, 4), "1.50");
+  EXPECT_EQ(line.substr(bench::kLabelColumns + bench::kCellColumns, 5), "82.00");
+  // A cell wider than its column still leaves a blank before the next one.
+  const std::string wide(20, 'w');
+  EXPECT_EQ(bench::table_line("x", {wide, "y"}).substr(bench::kLabelColumns + 20, 2), " y");
+}
+
+TEST(AbsoluteProgram, AnchorsPathsAndLeavesBareNamesToPath) {
+  EXPECT_EQ(bench::absolute_program("MOOSDB"), "MOOSDB");
+  EXPECT_EQ(bench::absolute_program("/usr/bin/env"), "/usr/bin/env");
+  const std::string anchored = bench::absolute_program("build/x");
+  EXPECT_EQ(anchored.front(), '/');
+  EXPECT_EQ(anchored.substr(anchored.size() - 8), "/build/x");
+  EXPECT_EQ(bench::absolute_program(""), "");
+}
+
+}  // namespace
