@@ -28,7 +28,7 @@ constexpr double kConnectTimeout_real_s = 15;
 constexpr double kAppcastTimeout_real_s = 30;
 /// Real seconds between repeated configuration requests while waiting for the ACKs.
 constexpr double kConfigRepeat_real_s = 0.5;
-/// Node reports kept per vehicle for matching detections (a minute at 10 Hz x 10).
+/// Node reports kept per vehicle for matching detections (600 MOOS seconds at 10 Hz).
 constexpr std::size_t kHistoryReports = 6000;
 constexpr double kStopGrace_real_s = 5;
 
