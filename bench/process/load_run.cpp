@@ -131,7 +131,7 @@ class Run {
     client_->register_variable("UHZ_HAZARD_REPORT");
     client_->register_variable("APPCAST");
     client_->register_wildcard("UHZ_CONFIG_ACK_*");
-    if (!client_->start() || !client_->wait_until_connected(kConnectTimeout_real_s))
+    if (!client_->start() || !connect_while_db_runs())
       return fail(r, "no connection to " + target_.moosdb + " on port " + std::to_string(*port) +
                          " (see " + target_.work_dir + "/moosdb.err)");
 
@@ -147,6 +147,14 @@ class Run {
     log_ << "  " << target_.label << ": sensor ready after " << base::fix(r.startup_real_s, 1)
          << " s, playing " << base::format_g(spec_.duration_s) << " simulated s\n";
     return play(r);
+  }
+
+  /// Waits for the load client's connection, giving up early if the MOOSDB has exited.
+  bool connect_while_db_runs() {
+    const double deadline = steady_now_s() + kConnectTimeout_real_s;
+    while (steady_now_s() < deadline && db_.running())
+      if (client_->wait_until_connected(0.1)) return true;
+    return false;
   }
 
   void make_vehicles() {
