@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <optional>
 #include <string>
@@ -43,6 +44,7 @@ load and MOOSDB, and a ratio column is printed.
   --work-dir=DIR       where the field, missions and logs go and stay (default: a new /tmp
                        folder, removed at the end unless a run failed)
   --startup-timeout=S  real seconds a sensor may take to load its field (default 600)
+  --csv=FILE           also append one line per run to FILE (a header first if it is new)
 )";
 
 struct Options {
@@ -54,6 +56,7 @@ struct Options {
   std::string gen_hazards = HAZARD_GEN_HAZARDS_PROGRAM;
   std::string original;  // "" = look on PATH
   std::string work_dir;
+  std::string csv;
 };
 
 std::optional<double> positive(std::string_view text) {
@@ -111,6 +114,8 @@ std::optional<Options> parse(int argc, char** argv) {
       o.gen_hazards = value;
     } else if (name == "--work-dir" && !value.empty()) {
       o.work_dir = value;
+    } else if (name == "--csv" && !value.empty()) {
+      o.csv = value;
     } else {
       ok = false;
     }
@@ -195,6 +200,26 @@ void print_table(const Options& o, const std::vector<std::pair<std::string, benc
     if (!run.second.ok) std::cout << run.first << " failed: " << run.second.error << "\n";
 }
 
+/// Appends one line per run to `path`, for plots and studies (plot_performance.py reads it).
+bool append_csv(const Options& o, const std::vector<std::pair<std::string, bench::LoadResult>>& runs,
+                const std::string& path) {
+  const bool fresh = !std::filesystem::exists(path);
+  std::ofstream out(path, std::ios::app);
+  if (fresh)
+    out << "program,objects,vehicles,warp,simulated_s,markers,ok,sensor_cpu_s_per_h,"
+           "moosdb_cpu_s_per_h,iterations_per_s,app_tick,sensor_rss_kb,sensor_hwm_kb,"
+           "delay_p50_ms,delay_p99_ms,detections,startup_s\n";
+  for (const auto& [label, r] : runs)
+    out << label << ',' << o.objects << ',' << o.spec.vehicles << ',' << base::format_g(o.spec.time_warp)
+        << ',' << base::format_g(o.spec.duration_s) << ',' << (o.spec.show_hazards ? 1 : 0) << ','
+        << (r.ok ? 1 : 0) << ',' << base::fix(r.sensor_cpu_per_h, 3) << ','
+        << base::fix(r.moosdb_cpu_per_h, 3) << ',' << base::fix(r.iterations_per_s, 3) << ','
+        << base::format_g(o.spec.app_tick_hz) << ',' << r.sensor_rss_kb << ',' << r.sensor_hwm_kb
+        << ',' << base::fix(r.delay_p50_ms, 2) << ',' << base::fix(r.delay_p99_ms, 2) << ','
+        << r.detections << ',' << base::fix(r.startup_real_s, 2) << '\n';
+  return static_cast<bool>(out);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -229,6 +254,8 @@ int main(int argc, char** argv) {
     std::cerr << "process_bench: no original uFldHazardSensor (give --original=PATH); ours only\n";
   }
   print_table(o, runs);
+  if (!o.csv.empty() && !append_csv(o, runs, o.csv))
+    std::cerr << "process_bench: cannot write " << o.csv << "\n";
   for (const auto& run : runs)
     if (!run.second.ok) {
       std::cerr << "process_bench: logs kept in " << o.work_dir << "\n";

@@ -11,6 +11,8 @@
 #   1M-idle   1,000,000 objects, no vehicle (the idle cost)
 #   1M-markers 1,000,000 objects x 100 vehicles with show_hazards on (memory)
 #   all       the four table rows (the default)
+#   sweep     10k, 100k and 1M objects x 1, 10 and 100 vehicles at warp 10, 300 simulated s
+#             each (the plot of docs/performance.md; add -- --csv=FILE to keep the figures)
 # Options after -- go to every run, e.g. --duration=300, --original=PATH, --moosdb=PATH
 # (a real MOOSDB: both sensors then use it). BUILD_DIR (default build/release) is where
 # process_bench was built.
@@ -40,6 +42,12 @@ for preset in "${presets[@]}"; do
     1M-idle)    run --objects=1000000 --vehicles=0 "$@" || status=$? ;;
     1M-markers) run --objects=1000000 --vehicles=100 --markers "$@" || status=$? ;;
     all)        "$0" 10k-1 10k-10 100k-10 1M-100 -- "$@" || status=$? ;;
+    sweep)
+      for objects in 10000 100000 1000000; do
+        for vehicles in 1 10 100; do
+          run --warp=10 --objects=$objects --vehicles=$vehicles --duration=300 "$@" || status=$?
+        done
+      done ;;
     *) echo "run.sh: unknown preset '$preset' (see the header of this script)" >&2; exit 1 ;;
   esac
 done
