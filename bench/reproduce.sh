@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Reproduces every number in docs/effects.md, docs/accuracy.md and docs/performance.md and
-# redraws docs/images/accuracy.svg.
+# redraws docs/images/accuracy.svg and docs/images/performance.svg.
 #
 #   bench/reproduce.sh [BUILD_DIR]      BUILD_DIR: a Release build (default build/release)
 #
@@ -22,7 +22,10 @@ trap 'rm -rf "$DATA"' EXIT
 python3 "$HERE/accuracy/plot_accuracy.py" "$DATA" "$ROOT/docs/images/accuracy.svg"
 echo "(plot: docs/images/accuracy.svg)" >&2
 echo
-echo "# docs/performance.md (about three minutes; a reference MOOSDB or original"
+echo "# docs/performance.md (about ten minutes; a reference MOOSDB or original"
 echo "# uFldHazardSensor on PATH is measured side by side)"
 "$BUILD/bench/moosdb/moosdb_bench"
 BUILD_DIR="$BUILD" "$HERE/process/run.sh" all 1M-idle
+BUILD_DIR="$BUILD" "$HERE/process/run.sh" sweep -- --csv="$DATA/performance.csv"
+python3 "$HERE/process/plot_performance.py" "$DATA/performance.csv" "$ROOT/docs/images/performance.svg"
+echo "(plot: docs/images/performance.svg)" >&2
