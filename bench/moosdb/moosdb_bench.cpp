@@ -234,11 +234,8 @@ int main(int argc, char** argv) {
   if (!options) return 1;
   Options& o = *options;
   const bool temporary = o.work_dir.empty();  // removed at the end unless a run failed
-  if (temporary) o.work_dir = bench::make_temporary_dir("moosdb_bench");
-  if (o.work_dir.empty()) {
-    std::cerr << "moosdb_bench: cannot create a folder in /tmp\n";
-    return 1;
-  }
+  o.work_dir = bench::work_folder(o.work_dir, "moosdb_bench", std::cerr);
+  if (o.work_dir.empty()) return 1;
   std::vector<std::pair<std::string, std::string>> dbs = {{"moosdb-lite", o.moosdb}};
   const std::string reference = o.reference.empty() ? bench::find_on_path("MOOSDB") : o.reference;
   if (!reference.empty() && reference != "none") dbs.emplace_back("MOOSDB", reference);

@@ -124,9 +124,19 @@ std::string absolute_program(const std::string& program) {
   return std::filesystem::absolute(program).string();
 }
 
-std::string make_temporary_dir(const std::string& stem) {
-  std::string pattern = "/tmp/" + stem + ".XXXXXX";
-  return ::mkdtemp(pattern.data()) == nullptr ? std::string() : pattern;
+std::string work_folder(const std::string& requested, const std::string& stem, std::ostream& err) {
+  std::string folder = requested;
+  if (folder.empty()) {
+    folder = "/tmp/" + stem + ".XXXXXX";
+    if (::mkdtemp(folder.data()) == nullptr) folder.clear();
+  } else {
+    std::error_code error;
+    std::filesystem::create_directories(folder, error);
+    if (error) folder.clear();
+  }
+  if (folder.empty())
+    err << stem << ": cannot create the folder " << (requested.empty() ? "in /tmp" : requested) << "\n";
+  return folder;
 }
 
 std::string cell(double value, int decimals) {

@@ -16,6 +16,7 @@
 #include <sys/types.h>
 
 #include <optional>
+#include <ostream>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -51,8 +52,9 @@ std::string canonical_path(const std::string& path);
 /// A program path with a '/' made absolute (children run in other folders); a bare name, found
 /// on PATH by exec, unchanged.
 std::string absolute_program(const std::string& program);
-/// A new folder /tmp/<stem>.XXXXXX; "" if it cannot be made.
-std::string make_temporary_dir(const std::string& stem);
+/// The folder a benchmark works in: `requested` (created if needed) or, when that is empty, a
+/// new /tmp/<stem>.XXXXXX. "" (with the reason on `err`) if it cannot be made.
+std::string work_folder(const std::string& requested, const std::string& stem, std::ostream& err);
 
 /// A table cell: "-" for a negative or NaN value (not measured), else the value to `decimals`.
 std::string cell(double value, int decimals);

@@ -227,12 +227,8 @@ int main(int argc, char** argv) {
   if (!options) return 1;
   Options& o = *options;
   const bool temporary = o.work_dir.empty();  // removed at the end unless a run failed
-  if (temporary) o.work_dir = bench::make_temporary_dir("process_bench");
-  if (o.work_dir.empty()) {
-    std::cerr << "process_bench: cannot create a folder in /tmp\n";
-    return 1;
-  }
-  std::filesystem::create_directories(o.work_dir);
+  o.work_dir = bench::work_folder(o.work_dir, "process_bench", std::cerr);
+  if (o.work_dir.empty()) return 1;
   const std::string field = o.work_dir + "/hazards.txt";
   std::cerr << "process_bench: field of " << o.objects << " objects, " << base::fix(o.spec.field_side_m, 0)
             << " m square, in " << o.work_dir << "\n";

@@ -5,6 +5,8 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <filesystem>
+#include <sstream>
 #include <vector>
 
 namespace {
@@ -117,6 +119,29 @@ TEST(AbsoluteProgram, AnchorsPathsAndLeavesBareNamesToPath) {
   EXPECT_EQ(anchored.front(), '/');
   EXPECT_EQ(anchored.substr(anchored.size() - 8), "/build/x");
   EXPECT_EQ(bench::absolute_program(""), "");
+}
+
+}  // namespace
+
+namespace {
+
+TEST(WorkFolder, MakesATemporaryFolderOrTheOneAskedFor) {
+  std::ostringstream err;
+  const std::string temporary = bench::work_folder("", "bench_tests", err);
+  ASSERT_FALSE(temporary.empty());
+  EXPECT_EQ(temporary.rfind("/tmp/bench_tests.", 0), 0u);
+  EXPECT_TRUE(std::filesystem::is_directory(temporary));
+  const std::string nested = temporary + "/a/b";
+  EXPECT_EQ(bench::work_folder(nested, "bench_tests", err), nested);
+  EXPECT_TRUE(std::filesystem::is_directory(nested));
+  EXPECT_TRUE(err.str().empty());
+  std::filesystem::remove_all(temporary);
+}
+
+TEST(WorkFolder, SaysWhyWhenItCannot) {
+  std::ostringstream err;
+  EXPECT_EQ(bench::work_folder("/proc/no-folders-here", "bench_tests", err), "");
+  EXPECT_NE(err.str().find("cannot create the folder /proc/no-folders-here"), std::string::npos);
 }
 
 }  // namespace
