@@ -232,7 +232,6 @@ class Run {
 
   bool play(LoadResult& r) {
     const double step_real_s = 1.0 / (spec_.report_hz * spec_.time_warp);
-    const double window_real_s = spec_.duration_s / spec_.time_warp;
     const double request_every_s = 1.0 / spec_.request_hz;
     const auto sensor_start = read_proc_usage(sensor_.pid());
     const auto db_start = read_proc_usage(db_.pid());
@@ -241,9 +240,9 @@ class Run {
     client_->notify("APPCAST_REQ", appcast_request());
     const double t0 = steady_now_s();
     double next_request_sim = 0;
-    for (long long step = 0;; ++step) {
+    const auto steps = std::llround(spec_.duration_s * spec_.report_hz);
+    for (long long step = 0; step < steps; ++step) {
       const double due = t0 + static_cast<double>(step) * step_real_s;
-      if (due - t0 >= window_real_s) break;
       const double now = steady_now_s();
       if (due > now) std::this_thread::sleep_for(std::chrono::duration<double>(due - now));
       const double sent = steady_now_s();
@@ -262,6 +261,9 @@ class Run {
       handle_mail(spec_.swath_half_length_m);
       if (step % 64 == 0 && !sensor_.running()) return fail(r, "the sensor exited during the load");
     }
+    // The window ends one step after the last reports were posted.
+    const double end = t0 + static_cast<double>(steps) * step_real_s;
+    if (end > steady_now_s()) std::this_thread::sleep_for(std::chrono::duration<double>(end - steady_now_s()));
     const double t1 = steady_now_s();
     const auto sensor_end = read_proc_usage(sensor_.pid());
     const auto db_end = read_proc_usage(db_.pid());
