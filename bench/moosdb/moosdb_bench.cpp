@@ -159,7 +159,8 @@ Result measure(const Options& o, const std::string& db_program, const std::strin
   const auto cpu_after = bench::read_proc_usage(db.pid());
   r.messages_per_s = static_cast<double>(o.messages) / (receiver.last_throughput_s - t0);
   if (cpu_before && cpu_after)
-    r.db_cpu_us_per_message = 1e6 * (cpu_after->cpu_s - cpu_before->cpu_s) / static_cast<double>(o.messages);
+    r.db_cpu_us_per_message =
+        1e6 * (cpu_after->cpu_s - cpu_before->cpu_s) / static_cast<double>(o.messages);
 
   // Messages are posted on a 1 ms tick (those due by then, each stamped when posted): a
   // sender spinning on a 100 us period would take a core from the DB on a small machine.

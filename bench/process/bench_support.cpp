@@ -135,7 +135,8 @@ std::string work_folder(const std::string& requested, const std::string& stem, s
     if (error) folder.clear();
   }
   if (folder.empty())
-    err << stem << ": cannot create the folder " << (requested.empty() ? "in /tmp" : requested) << "\n";
+    err << stem << ": cannot create the folder " << (requested.empty() ? "in /tmp" : requested)
+        << "\n";
   return folder;
 }
 

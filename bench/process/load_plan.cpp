@@ -13,7 +13,9 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kDegPerRad = 180.0 / kPi;
 
 /// MOOS heading of the direction (dx, dy): 0 north, 90 east.
-double heading_of(double dx_m, double dy_m) { return base::norm360(std::atan2(dx_m, dy_m) * kDegPerRad); }
+double heading_of(double dx_m, double dy_m) {
+  return base::norm360(std::atan2(dx_m, dy_m) * kDegPerRad);
+}
 
 }  // namespace
 

@@ -119,7 +119,8 @@ class Run {
     const std::string mission_path = target_.work_dir + "/mission.moos";
     std::ofstream(mission_path) << mission_text(mission);
 
-    if (!db_.start(target_.moosdb, {"mission.moos"}, target_.work_dir, target_.work_dir + "/moosdb"))
+    if (!db_.start(target_.moosdb, {"mission.moos"}, target_.work_dir,
+                   target_.work_dir + "/moosdb"))
       return fail(r, "cannot start " + target_.moosdb + ": " + db_.error());
     moos::TcpClientOptions options;
     options.port = *port;
@@ -177,8 +178,9 @@ class Run {
       if (now >= next_request) {
         for (const auto& v : vehicles_)
           if (!v.acked)
-            client_->notify("UHZ_CONFIG_REQUEST", "vname=" + v.name + ",width=" +
-                                                      base::format_g(spec_.sensor_width_m) + ",pd=0.9");
+            client_->notify("UHZ_CONFIG_REQUEST",
+                            "vname=" + v.name + ",width=" + base::format_g(spec_.sensor_width_m) +
+                                ",pd=0.9");
         next_request = now + kConfigRepeat_real_s;
       }
       for (const auto& item : inbox_.take()) {
@@ -263,7 +265,8 @@ class Run {
     }
     // The window ends one step after the last reports were posted.
     const double end = t0 + static_cast<double>(steps) * step_real_s;
-    if (end > steady_now_s()) std::this_thread::sleep_for(std::chrono::duration<double>(end - steady_now_s()));
+    if (end > steady_now_s())
+      std::this_thread::sleep_for(std::chrono::duration<double>(end - steady_now_s()));
     const double t1 = steady_now_s();
     const auto sensor_end = read_proc_usage(sensor_.pid());
     const auto db_end = read_proc_usage(db_.pid());

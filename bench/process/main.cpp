@@ -34,7 +34,8 @@ load and MOOSDB, and a ratio column is printed.
   --duration=S         simulated seconds of load (default 600)
   --report-hz=HZ       node reports per vehicle per MOOS second (default 10)
   --app-tick=HZ        the sensor's AppTick (default 4)
-  --area-per-object=M2 field area per object, square metres (default 400: 10k objects in 2 km x 2 km)
+  --area-per-object=M2 field area per object, square metres (default 400: 10k objects in
+                       2 km x 2 km)
   --markers            show_hazards = true (default false)
   --sensor=PATH        our uFldHazardSensor (default: the one built with this benchmark)
   --moosdb=PATH        the MOOSDB both sensors use (default: our moosdb-lite)
@@ -158,7 +159,9 @@ bool generate_field(const Options& o, const std::string& path) {
   return std::filesystem::exists(path);
 }
 
-void print_table(const Options& o, const std::vector<std::pair<std::string, bench::LoadResult>>& runs) {
+using Runs = std::vector<std::pair<std::string, bench::LoadResult>>;
+
+void print_table(const Options& o, const Runs& runs) {
   std::cout << "\nload: " << o.objects << " objects x " << o.spec.vehicles << " vehicles, warp "
             << base::format_g(o.spec.time_warp) << ", " << base::format_g(o.spec.duration_s)
             << " simulated s, node reports " << base::format_g(o.spec.report_hz)
@@ -170,7 +173,8 @@ void print_table(const Options& o, const std::vector<std::pair<std::string, benc
     if (ratio && cells.size() == 2) {
       const auto ours = base::parse_number(cells[0]);
       const auto theirs = base::parse_number(cells[1]);
-      if (ours && theirs && *ours > 0 && *theirs > 0) cells.push_back(base::fix(*theirs / *ours, 1) + "x");
+      if (ours && theirs && *ours > 0 && *theirs > 0)
+        cells.push_back(base::fix(*theirs / *ours, 1) + "x");
     }
     std::cout << bench::table_line(what, cells) << "\n";
   };
@@ -180,9 +184,12 @@ void print_table(const Options& o, const std::vector<std::pair<std::string, benc
   std::cout << bench::table_line("", header) << "\n";
   using bench::cell;
   using R = bench::LoadResult;
-  row("sensor CPU s / simulated hour", [](const R& r) { return cell(r.sensor_cpu_per_h, 2); }, true);
-  row("sensor share of a core", [](const R& r) { return cell(100 * r.sensor_cpu_share, 3) + "%"; }, true);
-  row("MOOSDB CPU s / simulated hour", [](const R& r) { return cell(r.moosdb_cpu_per_h, 2); }, true);
+  row("sensor CPU s / simulated hour", [](const R& r) { return cell(r.sensor_cpu_per_h, 2); },
+      true);
+  row("sensor share of a core",
+      [](const R& r) { return cell(100 * r.sensor_cpu_share, 3) + "%"; }, false);
+  row("MOOSDB CPU s / simulated hour", [](const R& r) { return cell(r.moosdb_cpu_per_h, 2); },
+      true);
   row("iterations / s (nominal " + base::format_g(o.spec.app_tick_hz) + ")",
       [](const R& r) { return cell(r.iterations_per_s, 2); }, false);
   row("sensor VmRSS / VmHWM MB", [](const R& r) {
@@ -201,8 +208,7 @@ void print_table(const Options& o, const std::vector<std::pair<std::string, benc
 }
 
 /// Appends one line per run to `path`, for plots and studies (plot_performance.py reads it).
-bool append_csv(const Options& o, const std::vector<std::pair<std::string, bench::LoadResult>>& runs,
-                const std::string& path) {
+bool append_csv(const Options& o, const Runs& runs, const std::string& path) {
   const bool fresh = !std::filesystem::exists(path);
   std::ofstream out(path, std::ios::app);
   if (fresh)
@@ -210,9 +216,9 @@ bool append_csv(const Options& o, const std::vector<std::pair<std::string, bench
            "moosdb_cpu_s_per_h,iterations_per_s,app_tick,sensor_rss_kb,sensor_hwm_kb,"
            "delay_p50_ms,delay_p99_ms,detections,startup_s\n";
   for (const auto& [label, r] : runs)
-    out << label << ',' << o.objects << ',' << o.spec.vehicles << ',' << base::format_g(o.spec.time_warp)
-        << ',' << base::format_g(o.spec.duration_s) << ',' << (o.spec.show_hazards ? 1 : 0) << ','
-        << (r.ok ? 1 : 0) << ',' << base::fix(r.sensor_cpu_per_h, 3) << ','
+    out << label << ',' << o.objects << ',' << o.spec.vehicles << ','
+        << base::format_g(o.spec.time_warp) << ',' << base::format_g(o.spec.duration_s) << ','
+        << (o.spec.show_hazards ? 1 : 0) << ',' << (r.ok ? 1 : 0) << ',' << base::fix(r.sensor_cpu_per_h, 3) << ','
         << base::fix(r.moosdb_cpu_per_h, 3) << ',' << base::fix(r.iterations_per_s, 3) << ','
         << base::format_g(o.spec.app_tick_hz) << ',' << r.sensor_rss_kb << ',' << r.sensor_hwm_kb
         << ',' << base::fix(r.delay_p50_ms, 2) << ',' << base::fix(r.delay_p99_ms, 2) << ','
@@ -230,13 +236,13 @@ int main(int argc, char** argv) {
   o.work_dir = bench::work_folder(o.work_dir, "process_bench", std::cerr);
   if (o.work_dir.empty()) return 1;
   const std::string field = o.work_dir + "/hazards.txt";
-  std::cerr << "process_bench: field of " << o.objects << " objects, " << base::fix(o.spec.field_side_m, 0)
-            << " m square, in " << o.work_dir << "\n";
+  std::cerr << "process_bench: field of " << o.objects << " objects, "
+            << base::fix(o.spec.field_side_m, 0) << " m square, in " << o.work_dir << "\n";
   if (!generate_field(o, field)) {
     std::cerr << "process_bench: " << o.gen_hazards << " did not write " << field << "\n";
     return 1;
   }
-  std::vector<std::pair<std::string, bench::LoadResult>> runs;
+  Runs runs;
   bench::Target ours{"ours", o.sensor, o.moosdb, field, o.work_dir + "/ours"};
   runs.emplace_back("ours", bench::run_load(o.spec, ours, std::cerr));
   const std::string original = original_sensor(o);

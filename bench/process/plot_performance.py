@@ -24,7 +24,8 @@ QUOTED_ORIGINAL = [(10000, 1, 82, 82), (10000, 10, 735, 735), (100000, 10, 9900,
 
 
 def log_ticks(lo, hi):
-    return [10 ** k for k in range(int(math.floor(math.log10(lo))), int(math.ceil(math.log10(hi))) + 1)]
+    first, last = int(math.floor(math.log10(lo))), int(math.ceil(math.log10(hi)))
+    return [10 ** k for k in range(first, last + 1)]
 
 
 def series(rows, program, value):
@@ -40,7 +41,8 @@ def legend(x, y, fleets, with_quoted):
     out = []
     for i, v in enumerate(fleets):
         yy = y + 16 * i
-        out.append(f'<line x1="{x}" y1="{yy}" x2="{x + 24}" y2="{yy}" stroke="{FLEET_COLOURS.get(v, "#444")}" '
+        colour = FLEET_COLOURS.get(v, "#444")
+        out.append(f'<line x1="{x}" y1="{yy}" x2="{x + 24}" y2="{yy}" stroke="{colour}" '
                    'stroke-width="2"/>')
         out.append(text(x + 30, yy + 4, f"ours, {v} vehicle{'s' if v > 1 else ''}", 11, "start"))
     if with_quoted:

@@ -26,7 +26,8 @@ TEST(CpuTicksFromStat, RefusesTruncatedOrNonNumericLines) {
 }
 
 TEST(StatusKb, ReadsTheNamedFieldOnly) {
-  const std::string status = "Name:\tsensor\nVmPeak:\t  9000 kB\nVmHWM:\t    5120 kB\nVmRSS:\t    4096 kB\n";
+  const std::string status =
+      "Name:\tsensor\nVmPeak:\t  9000 kB\nVmHWM:\t    5120 kB\nVmRSS:\t    4096 kB\n";
   EXPECT_EQ(bench::status_kb(status, "VmRSS"), 4096);
   EXPECT_EQ(bench::status_kb(status, "VmHWM"), 5120);
   EXPECT_FALSE(bench::status_kb(status, "VmSwap"));
