@@ -74,6 +74,7 @@ TEST(Process, StopsAChildThatIgnoresNothingAndReportsTheSigintExit) {
   EXPECT_TRUE(child.running());
   EXPECT_TRUE(child.stop(5));
   EXPECT_FALSE(child.running());
+  std::filesystem::remove_all(dir);
 }
 
 TEST(Process, EscalatesToSigkillForAChildThatIgnoresSigint) {
@@ -89,6 +90,7 @@ TEST(Process, EscalatesToSigkillForAChildThatIgnoresSigint) {
   ASSERT_EQ(::access(marker.c_str(), F_OK), 0);
   EXPECT_FALSE(child.stop(0.2));
   EXPECT_FALSE(child.running());
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace
