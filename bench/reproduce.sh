@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Reproduces every number in docs/effects.md and docs/accuracy.md and redraws
-# docs/images/accuracy.svg.
+# Reproduces every number in docs/effects.md, docs/accuracy.md and docs/performance.md and
+# redraws docs/images/accuracy.svg and docs/images/performance.svg.
 #
 #   bench/reproduce.sh [BUILD_DIR]      BUILD_DIR: a Release build (default build/release)
 #
@@ -11,7 +11,7 @@ HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 ROOT="$(cd "$HERE/.." && pwd)"
 BUILD="${1:-$ROOT/build/release}"
 
-cmake --build "$BUILD" --target effects_bench accuracy_bench -j2 >&2
+cmake --build "$BUILD" --target effects_bench accuracy_bench moosdb_bench process_bench -j2 >&2
 echo "# docs/effects.md"
 "$BUILD/bench/engine/effects_bench"
 echo
@@ -21,3 +21,11 @@ trap 'rm -rf "$DATA"' EXIT
 "$BUILD/bench/accuracy/accuracy_bench" --csv "$DATA"
 python3 "$HERE/accuracy/plot_accuracy.py" "$DATA" "$ROOT/docs/images/accuracy.svg"
 echo "(plot: docs/images/accuracy.svg)" >&2
+echo
+echo "# docs/performance.md (about ten minutes; a reference MOOSDB or original"
+echo "# uFldHazardSensor on PATH is measured side by side)"
+"$BUILD/bench/moosdb/moosdb_bench"
+BUILD_DIR="$BUILD" "$HERE/process/run.sh" all 1M-idle
+BUILD_DIR="$BUILD" "$HERE/process/run.sh" sweep -- --csv="$DATA/performance.csv"
+python3 "$HERE/process/plot_performance.py" "$DATA/performance.csv" "$ROOT/docs/images/performance.svg"
+echo "(plot: docs/images/performance.svg)" >&2
