@@ -5,7 +5,10 @@
 // Contract:
 // - A time warp is valid in (0, kMaxTimeWarp] (wire spec 0.3).
 // - parse_time_warp accepts what base::parse_number accepts and a valid warp; nullopt otherwise.
-// - kMaxPort is the highest TCP port number; clients connect to ports 1..kMaxPort.
+// - kMaxPort is the highest TCP port number. Clients connect to ports kMinConnectPort..kMaxPort;
+//   a server may listen on kAnyListenPort..kMaxPort, where kAnyListenPort (0) lets the operating
+//   system pick a free port (kConnectPortRange, kListenPortRange).
+// - A Range is a closed or open interval of numbers; contains() is false for NaN.
 // - CommsTick is a whole number of Hz in 1..kMaxCommsTickHz (wire spec 4.2).
 
 #include <optional>
@@ -15,15 +18,38 @@
 
 namespace moos {
 
+/// An interval of numbers, each end closed (included) or open.
+struct Range {
+  double low;
+  double high;
+  bool low_open = false;
+  bool high_open = false;
+  /// True when `value` lies in the interval (false for NaN).
+  constexpr bool contains(double value) const {
+    return (low_open ? value > low : value >= low) && (high_open ? value < high : value <= high);
+  }
+};
+
 /// The largest time warp libMOOS accepts (wire spec 0.3).
 inline constexpr double kMaxTimeWarp = 400.0;
+/// A time warp: (0, kMaxTimeWarp].
+inline constexpr Range kTimeWarpRange{0.0, kMaxTimeWarp, true, false};
 /// The highest TCP port number.
 inline constexpr int kMaxPort = 65535;
+/// The lowest port a client connects to (there is no port 0 to connect to).
+inline constexpr int kMinConnectPort = 1;
+/// The port a server listens on to let the operating system pick a free one.
+inline constexpr int kAnyListenPort = 0;
+/// Ports a client connects to, and ports a server listens on.
+inline constexpr Range kConnectPortRange{kMinConnectPort, kMaxPort};
+inline constexpr Range kListenPortRange{kAnyListenPort, kMaxPort};
 /// The highest CommsTick libMOOS accepts, in Hz (wire spec 4.2): CommsTick is in 1..200.
 inline constexpr int kMaxCommsTickHz = 200;
+/// CommsTick in Hz: 1..kMaxCommsTickHz.
+inline constexpr Range kCommsTickRangeHz{1, kMaxCommsTickHz};
 
 /// True for 0 < warp <= kMaxTimeWarp (false for NaN).
-constexpr bool is_valid_time_warp(double warp) { return warp > 0 && warp <= kMaxTimeWarp; }
+constexpr bool is_valid_time_warp(double warp) { return kTimeWarpRange.contains(warp); }
 
 /// A number (base::parse_number) that is a valid time warp; nullopt otherwise.
 inline std::optional<double> parse_time_warp(std::string_view text) {

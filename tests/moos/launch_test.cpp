@@ -16,7 +16,9 @@ CommandLine parse(std::vector<std::string> args) {
 OwnSwitches refusing_loud(int* calls) {
   return [calls](const CommandLine& cl) -> std::string {
     ++*calls;
-    return cl.has_flag("--loud") ? "'--loud' is not a switch of pFoo" : "";
+    for (const std::string& arg : cl.unhandled)
+      if (arg == "--loud") return "'--loud' is not a switch of pFoo";
+    return "";
   };
 }
 
