@@ -52,6 +52,15 @@ const SwitchRule* find_rule(const std::vector<SwitchRule>& rules, std::string_vi
   return nullptr;
 }
 
+/// An end of a range as a whole number (the ends of long long beyond them; an open end of a
+/// kInteger rule is not used).
+long long clamped_integer(double end) {
+  constexpr double kLimit = 9.2e18;  // below 2^63, exact enough for any range we write
+  if (end >= kLimit) return LLONG_MAX;
+  if (end <= -kLimit) return LLONG_MIN;
+  return static_cast<long long>(end);
+}
+
 /// A value that a kInteger rule accepted.
 long long whole_number(const std::string& value) {
   return base::parse_integer(value, LLONG_MIN, LLONG_MAX).value_or(0);
@@ -83,8 +92,8 @@ bool accepts(const SwitchRule& rule, const std::string& value) {
     case SwitchKind::kIgnored: return true;
     case SwitchKind::kText: return !value.empty() && (!rule.check || rule.check(value));
     case SwitchKind::kInteger:
-      return base::parse_integer(value, static_cast<long long>(rule.range.low),
-                                 static_cast<long long>(rule.range.high))
+      return base::parse_integer(value, clamped_integer(rule.range.low),
+                                 clamped_integer(rule.range.high))
           .has_value();
     case SwitchKind::kUnsigned: {
       const std::optional<std::uint64_t> v = base::parse_unsigned(value);

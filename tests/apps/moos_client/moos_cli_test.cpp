@@ -53,6 +53,26 @@ TEST(MoosCliOptions, UsageErrorsNameTheProblem) {
   EXPECT_EQ(help->command, Command::kHelp);
 }
 
+TEST(MoosCliOptions, EachSwitchProblemNamesSwitchAndValue) {
+  std::string error;
+  EXPECT_FALSE(parse_options({"poke", "--host=", "A=1"}, &error));
+  EXPECT_EQ(error, "--host= needs a host");
+  EXPECT_FALSE(parse_options({"watch", "A", "--count=0", "--timeout=-1"}, &error));
+  EXPECT_EQ(error, "bad count: --count=0");  // the first problem
+  EXPECT_FALSE(parse_options({"watch", "--timeout", "A"}, &error));
+  EXPECT_EQ(error, "unknown option for watch: --timeout");
+  EXPECT_FALSE(parse_options({"poke", "--moos_time_warp=401", "A=1"}, &error));
+  EXPECT_EQ(error, "bad time warp: --moos_time_warp=401");
+}
+
+TEST(MoosCliOptions, HelpWinsOverAProblemBesideIt) {
+  // Settled with moosdb-lite and gen_hazards (docs/differences.md): --help anywhere wins.
+  std::string error;
+  const auto help = parse_options({"poke", "--port=0", "--help"}, &error);
+  ASSERT_TRUE(help.has_value()) << error;
+  EXPECT_EQ(help->command, Command::kHelp);
+}
+
 TEST(MoosCliPoke, NumbersAreDoublesUnlessQuotedOrForced) {
   std::string error;
   auto p = parse_poke("DEPTH=12.5", false, &error);
