@@ -3,6 +3,7 @@
 
 #include "HazardReplay_Info.hpp"
 #include "args.hpp"
+#include "doc_tables.hpp"
 
 namespace hazard_replay {
 namespace {
@@ -67,6 +68,14 @@ TEST(ReplayArgs, HelpNeedsNoFiles) {
   EXPECT_TRUE(bad_and_help.options->help);
   EXPECT_NE(help_text().find(usage_line()), std::string::npos);
   EXPECT_NE(help_text().find("--until=T"), std::string::npos);
+}
+
+TEST(ReplayArgs, TheDocsSwitchTableIsTheSwitchTable) {
+  const auto rows = test_support::doc_table(
+      std::string(HAZARD_SOURCE_DIR) + "/docs/configuration.md", "Running offline: hazard_replay");
+  ASSERT_FALSE(rows.empty()) << "docs/configuration.md: no switch table for hazard_replay";
+  EXPECT_EQ(test_support::switches_in_first_column(rows),
+            test_support::switches_of(switch_table(), false));
 }
 
 }  // namespace
