@@ -25,7 +25,7 @@
 //   free (kept in order). A switch is looked up by its text before any '=' (its name or an alias).
 // - kFlag matches only without '='. kIgnored matches with or without a value and adds the note
 //   "<argument> ignored: <problem>". Every other kind needs `=value`: without one, the table's
-//   missing_value text is an error; a value the rule does not accept (accepts()) gives the
+//   missing_value text (or, without one, its unknown text) is an error; a value the rule does not accept (accepts()) gives the
 //   table's bad_value text. A switch not in the table gives the table's unknown text.
 // - Errors and notes are in argument order; for a switch given twice, the last value counts.
 // - The typed getters read a value with the same function that accepted it (one rule).
@@ -59,17 +59,24 @@ struct SwitchRule {
   std::string name;                  ///< as typed before any '=', e.g. "--moos_port"
   std::vector<std::string> aliases;  ///< other spellings, e.g. "-h"
   SwitchKind kind = SwitchKind::kFlag;
-  Range range{-1e308, 1e308};        ///< kInteger, kNumber (kUnsigned: low only)
+  Range range = kAnyNumber;          ///< kInteger, kNumber (kUnsigned: low only)
   std::function<bool(const std::string&)> check;  ///< kText: a further condition
   std::string problem;  ///< why a value is refused (kIgnored: why the switch is ignored)
 };
+
+/// A rule without aliases or a further check.
+SwitchRule switch_rule(std::string name, SwitchKind kind, std::string problem,
+                       Range range = kAnyNumber);
+
+/// `--help` and `-h`, a flag: every program's help switch.
+SwitchRule help_switch_rule();
 
 /// A program's switches and its wording of the three errors.
 struct SwitchTable {
   std::vector<SwitchRule> rules;
   /// A refused value: from the argument as typed and its rule.
   std::function<std::string(const std::string& argument, const SwitchRule&)> bad_value;
-  /// A switch that needs `=value` given without one.
+  /// A switch that needs `=value` given without one (empty: the `unknown` text).
   std::function<std::string(const std::string& argument, const SwitchRule&)> missing_value;
   /// A switch the table does not know.
   std::function<std::string(const std::string& argument)> unknown;

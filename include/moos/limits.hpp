@@ -11,6 +11,7 @@
 // - A Range is a closed or open interval of numbers; contains() is false for NaN.
 // - CommsTick is a whole number of Hz in 1..kMaxCommsTickHz (wire spec 4.2).
 
+#include <limits>
 #include <optional>
 #include <string_view>
 
@@ -29,6 +30,11 @@ struct Range {
     return (low_open ? value > low : value >= low) && (high_open ? value < high : value <= high);
   }
 };
+
+/// Every finite number; numbers more than 0 (a duration to wait, a rate); 0 or more.
+inline constexpr Range kAnyNumber{-std::numeric_limits<double>::max(), std::numeric_limits<double>::max()};
+inline constexpr Range kPositive{0.0, std::numeric_limits<double>::max(), true, false};
+inline constexpr Range kNonNegative{0.0, std::numeric_limits<double>::max()};
 
 /// The largest time warp libMOOS accepts (wire spec 0.3).
 inline constexpr double kMaxTimeWarp = 400.0;

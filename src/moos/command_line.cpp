@@ -27,23 +27,6 @@ std::string bad_generic_value(const std::string& argument, const SwitchRule& rul
   return argument + ": " + rule.problem;
 }
 
-SwitchRule text_rule(std::string name, std::string problem) {
-  SwitchRule r;
-  r.name = std::move(name);
-  r.kind = SwitchKind::kText;
-  r.problem = std::move(problem);
-  return r;
-}
-
-SwitchRule number_rule(std::string name, SwitchKind kind, Range range, std::string problem) {
-  SwitchRule r;
-  r.name = std::move(name);
-  r.kind = kind;
-  r.range = range;
-  r.problem = std::move(problem);
-  return r;
-}
-
 const SwitchRule* find_rule(const std::vector<SwitchRule>& rules, std::string_view name) {
   for (const SwitchRule& r : rules) {
     if (r.name == name) return &r;
@@ -86,6 +69,21 @@ void set_typed_switch(CommandLine& cl, const std::string& name, const std::strin
 
 }  // namespace
 
+SwitchRule switch_rule(std::string name, SwitchKind kind, std::string problem, Range range) {
+  SwitchRule r;
+  r.name = std::move(name);
+  r.kind = kind;
+  r.problem = std::move(problem);
+  r.range = range;
+  return r;
+}
+
+SwitchRule help_switch_rule() {
+  SwitchRule r = switch_rule("--help", SwitchKind::kFlag, "");
+  r.aliases = {"-h"};
+  return r;
+}
+
 bool accepts(const SwitchRule& rule, const std::string& value) {
   switch (rule.kind) {
     case SwitchKind::kFlag: return value.empty();
@@ -109,18 +107,18 @@ bool accepts(const SwitchRule& rule, const std::string& value) {
 
 const std::vector<SwitchRule>& generic_switch_rules() {
   static const std::vector<SwitchRule> rules = {
-      text_rule("--moos_name", "empty name"),
-      text_rule("--moos_app_name", "empty name"),
-      text_rule("--moos_host", "empty host"),
-      text_rule("--moos_file", "empty file name"),
-      number_rule("--moos_port", SwitchKind::kInteger, kConnectPortRange,
-                  "not a port number in 1..65535"),
-      number_rule("--moos_time_warp", SwitchKind::kNumber, kTimeWarpRange,
-                  "time warp must be a number in (0, 400]"),
-      number_rule("--moos_app_tick", SwitchKind::kNumber, Range{0.0, 1e308, true, false},
-                  "AppTick must be a number > 0"),
-      number_rule("--moos_comms_tick", SwitchKind::kInteger, kCommsTickRangeHz,
-                  "CommsTick must be a whole number in 1..200"),
+      switch_rule("--moos_name", SwitchKind::kText, "empty name"),
+      switch_rule("--moos_app_name", SwitchKind::kText, "empty name"),
+      switch_rule("--moos_host", SwitchKind::kText, "empty host"),
+      switch_rule("--moos_file", SwitchKind::kText, "empty file name"),
+      switch_rule("--moos_port", SwitchKind::kInteger, "not a port number in 1..65535",
+                  kConnectPortRange),
+      switch_rule("--moos_time_warp", SwitchKind::kNumber,
+                  "time warp must be a number in (0, 400]", kTimeWarpRange),
+      switch_rule("--moos_app_tick", SwitchKind::kNumber, "AppTick must be a number > 0",
+                  kPositive),
+      switch_rule("--moos_comms_tick", SwitchKind::kInteger,
+                  "CommsTick must be a whole number in 1..200", kCommsTickRangeHz),
   };
   return rules;
 }
@@ -165,7 +163,7 @@ SwitchValues parse_switches(const std::vector<std::string>& args, const SwitchTa
     } else if (rule->kind == SwitchKind::kIgnored) {
       out.notes.push_back(arg + " ignored: " + rule->problem);
     } else if (rule->kind != SwitchKind::kFlag && !has_value) {
-      out.errors.push_back(table.missing_value(arg, *rule));
+      out.errors.push_back(table.missing_value ? table.missing_value(arg, *rule) : table.unknown(arg));
     } else if (!accepts(*rule, value)) {
       out.errors.push_back(table.bad_value(arg, *rule));
     } else {

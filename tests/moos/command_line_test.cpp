@@ -153,13 +153,8 @@ TEST(DecideLaunch, AnInformationSwitchWinsOverAMissionFile_Spec2) {
 
 // ---- the typed switch table ------------------------------------------------------------------
 
-SwitchRule rule(std::string name, SwitchKind kind, Range range = {-1e308, 1e308}) {
-  SwitchRule r;
-  r.name = std::move(name);
-  r.kind = kind;
-  r.range = range;
-  r.problem = "refused";
-  return r;
+SwitchRule rule(std::string name, SwitchKind kind, Range range = kAnyNumber) {
+  return switch_rule(std::move(name), kind, "refused", range);
 }
 
 SwitchTable test_table() {

@@ -4,36 +4,19 @@
 
 namespace hazard_replay {
 
-namespace {
-
-moos::SwitchRule row(std::string name, moos::SwitchKind kind, std::string problem) {
-  moos::SwitchRule r;
-  r.name = std::move(name);
-  r.kind = kind;
-  r.problem = std::move(problem);
-  return r;
-}
-
-}  // namespace
-
 const moos::SwitchTable& switch_table() {
   using moos::SwitchKind;
   static const moos::SwitchTable table = [] {
     moos::SwitchTable t;
-    moos::SwitchRule help = row("--help", SwitchKind::kFlag, "");
-    help.aliases = {"-h"};
-    t.rules = {row("--alias", SwitchKind::kText, "a name"),
-               row("--seed", SwitchKind::kUnsigned, "a whole number in [0, 2^64)"),
-               row("--until", SwitchKind::kNumber, "a finite number of seconds"),
-               row("--output", SwitchKind::kText, "a file name"),
-               help};
+    t.rules = {moos::switch_rule("--alias", SwitchKind::kText, "a name"),
+               moos::switch_rule("--seed", SwitchKind::kUnsigned, "a whole number in [0, 2^64)"),
+               moos::switch_rule("--until", SwitchKind::kNumber, "a finite number of seconds"),
+               moos::switch_rule("--output", SwitchKind::kText, "a file name"),
+               moos::help_switch_rule()};
     t.bad_value = [](const std::string& arg, const moos::SwitchRule& r) {
       return r.name + " needs " + r.problem + ": '" + arg + "'";
     };
     t.unknown = [](const std::string& arg) { return "unknown option '" + arg + "'"; };
-    t.missing_value = [](const std::string& arg, const moos::SwitchRule&) {
-      return "unknown option '" + arg + "'";
-    };
     return t;
   }();
   return table;

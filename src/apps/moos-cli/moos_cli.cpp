@@ -24,8 +24,6 @@ namespace {
 
 /// How long poke waits for its posts to reach the socket, real seconds.
 constexpr double kFlushTimeout_s = 10.0;
-/// --connect-timeout and --timeout: real seconds, more than 0.
-constexpr moos::Range kPositiveSeconds{0.0, 1e308, true, false};
 /// --count: messages, at least 1.
 constexpr moos::Range kCountRange{1, static_cast<double>(std::numeric_limits<long long>::max())};
 
@@ -62,31 +60,20 @@ std::optional<int> connect(moos::TcpClient& client, const Options& o, std::ostre
 
 const moos::SwitchTable& switch_table(Command command) {
   using moos::SwitchKind;
-  auto row = [](std::string name, SwitchKind kind, std::string problem,
-                moos::Range range = {-1e308, 1e308}) {
-    moos::SwitchRule r;
-    r.name = std::move(name);
-    r.kind = kind;
-    r.problem = std::move(problem);
-    r.range = range;
-    return r;
-  };
-  auto make = [&](Command c) {
+  auto make = [](Command c) {
     const std::string command_name = c == Command::kPoke ? "poke" : "watch";
     moos::SwitchTable t;
-    moos::SwitchRule help = row("--help", SwitchKind::kFlag, "");
-    help.aliases = {"-h"};
-    t.rules = {row("--host", SwitchKind::kText, "host"),
-               row("--port", SwitchKind::kInteger, "port", moos::kConnectPortRange),
-               row("--name", SwitchKind::kText, "name"),
-               row("--connect-timeout", SwitchKind::kNumber, "timeout", kPositiveSeconds),
-               row("--moos_time_warp", SwitchKind::kNumber, "time warp", moos::kTimeWarpRange),
-               help};
+    t.rules = {moos::switch_rule("--host", SwitchKind::kText, "host"),
+               moos::switch_rule("--port", SwitchKind::kInteger, "port", moos::kConnectPortRange),
+               moos::switch_rule("--name", SwitchKind::kText, "name"),
+               moos::switch_rule("--connect-timeout", SwitchKind::kNumber, "timeout", moos::kPositive),
+               moos::switch_rule("--moos_time_warp", SwitchKind::kNumber, "time warp", moos::kTimeWarpRange),
+               moos::help_switch_rule()};
     if (c == Command::kPoke) {
-      t.rules.push_back(row("--string", SwitchKind::kFlag, ""));
+      t.rules.push_back(moos::switch_rule("--string", SwitchKind::kFlag, ""));
     } else {
-      t.rules.push_back(row("--count", SwitchKind::kInteger, "count", kCountRange));
-      t.rules.push_back(row("--timeout", SwitchKind::kNumber, "timeout", kPositiveSeconds));
+      t.rules.push_back(moos::switch_rule("--count", SwitchKind::kInteger, "count", kCountRange));
+      t.rules.push_back(moos::switch_rule("--timeout", SwitchKind::kNumber, "timeout", moos::kPositive));
     }
     // "--host= needs a host" for an empty text, "bad port: --port=0" for a refused number.
     t.bad_value = [](const std::string& arg, const moos::SwitchRule& r) {
@@ -95,9 +82,6 @@ const moos::SwitchTable& switch_table(Command command) {
     };
     t.unknown = [command_name](const std::string& arg) {
       return "unknown option for " + command_name + ": " + arg;
-    };
-    t.missing_value = [unknown = t.unknown](const std::string& arg, const moos::SwitchRule&) {
-      return unknown(arg);
     };
     return t;
   };

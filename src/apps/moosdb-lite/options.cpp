@@ -26,20 +26,8 @@ constexpr const char* kOneMode = "moosdb-lite has one mode (single thread, async
 constexpr const char* kNoDns = "no DNS lookups are made";
 constexpr const char* kNoWebServer = "the web server is not implemented";
 constexpr const char* kNoDelay = "TCP_NODELAY is always set";
-/// Seconds of silence: 0 means never (ClientTimeout, --moos_timeout).
-constexpr moos::Range kClientTimeoutRange_s{0.0, 1e308};
-/// Seconds to wait for a handshake step: more than 0.
-constexpr moos::Range kHandshakeRange_s{0.0, 1e308, true, false};
-
-moos::SwitchRule row(std::string name, moos::SwitchKind kind, std::string problem,
-                     moos::Range range = {-1e308, 1e308}) {
-  moos::SwitchRule r;
-  r.name = std::move(name);
-  r.kind = kind;
-  r.problem = std::move(problem);
-  r.range = range;
-  return r;
-}
+/// Seconds of silence before a client is dropped: 0 means never (ClientTimeout, --moos_timeout).
+constexpr moos::Range kClientTimeoutRange_s = moos::kNonNegative;
 
 bool is_ipv4_literal(const std::string& text) {
   in_addr addr{};
@@ -47,15 +35,9 @@ bool is_ipv4_literal(const std::string& text) {
 }
 
 moos::SwitchRule bind_row() {
-  moos::SwitchRule r = row("--bind", moos::SwitchKind::kText,
-                           "not an IPv4 address (libMOOS clients connect over IPv4 only)");
+  moos::SwitchRule r = moos::switch_rule(
+      "--bind", moos::SwitchKind::kText, "not an IPv4 address (libMOOS clients connect over IPv4 only)");
   r.check = is_ipv4_literal;
-  return r;
-}
-
-moos::SwitchRule help_row() {
-  moos::SwitchRule r = row("--help", moos::SwitchKind::kFlag, "");
-  r.aliases = {"-h"};
   return r;
 }
 
@@ -138,31 +120,31 @@ const moos::SwitchTable& switch_table() {
     const std::string bytes = "expected a whole number of bytes >= " + std::to_string(kMinPacketLimitBytes);
     moos::SwitchTable t;
     t.rules = {
-        row("--moos_port", SwitchKind::kInteger, "not a port number (0-65535)", moos::kListenPortRange),
-        row("--moos_community", SwitchKind::kText, "empty community name"),
-        row("--moos_time_warp", SwitchKind::kNumber, "time warp must be a number in (0, 400]",
+        moos::switch_rule("--moos_port", SwitchKind::kInteger, "not a port number (0-65535)", moos::kListenPortRange),
+        moos::switch_rule("--moos_community", SwitchKind::kText, "empty community name"),
+        moos::switch_rule("--moos_time_warp", SwitchKind::kNumber, "time warp must be a number in (0, 400]",
             moos::kTimeWarpRange),
-        row("--moos_timeout", SwitchKind::kNumber, "timeout must be a number of seconds >= 0",
+        moos::switch_rule("--moos_timeout", SwitchKind::kNumber, "timeout must be a number of seconds >= 0",
             kClientTimeoutRange_s),
         bind_row(),
-        row("--port-file", SwitchKind::kText, kEmptyFileName),
-        row("--log", SwitchKind::kText, kEmptyFileName),
-        row("--max-packet-bytes", SwitchKind::kUnsigned, bytes, {double(kMinPacketLimitBytes), 1e308}),
-        row("--max-output-bytes", SwitchKind::kUnsigned, bytes, {double(kMinPacketLimitBytes), 1e308}),
-        row("--banner-timeout", SwitchKind::kNumber, "expected seconds > 0", kHandshakeRange_s),
-        row("--handshake-timeout", SwitchKind::kNumber, "expected seconds > 0", kHandshakeRange_s),
-        help_row(),
-        row("--version", SwitchKind::kFlag, ""),
+        moos::switch_rule("--port-file", SwitchKind::kText, kEmptyFileName),
+        moos::switch_rule("--log", SwitchKind::kText, kEmptyFileName),
+        moos::switch_rule("--max-packet-bytes", SwitchKind::kUnsigned, bytes, {double(kMinPacketLimitBytes), moos::kAnyNumber.high}),
+        moos::switch_rule("--max-output-bytes", SwitchKind::kUnsigned, bytes, {double(kMinPacketLimitBytes), moos::kAnyNumber.high}),
+        moos::switch_rule("--banner-timeout", SwitchKind::kNumber, "expected seconds > 0", moos::kPositive),
+        moos::switch_rule("--handshake-timeout", SwitchKind::kNumber, "expected seconds > 0", moos::kPositive),
+        moos::help_switch_rule(),
+        moos::switch_rule("--version", SwitchKind::kFlag, ""),
         // Switches of the reference MOOSDB (spec 5.11) that moosdb-lite accepts and ignores.
-        row("--response", SwitchKind::kIgnored, "per-client response delays are not implemented"),
-        row("-s", SwitchKind::kIgnored, kOneMode),
-        row("--single_threaded", SwitchKind::kIgnored, kOneMode),
-        row("-d", SwitchKind::kIgnored, kNoDns),
-        row("--dns", SwitchKind::kIgnored, kNoDns),
-        row("--tcpnodelay", SwitchKind::kIgnored, kNoDelay),
-        row("--audit_port", SwitchKind::kIgnored, "the UDP audit port is not implemented"),
-        row("--event_log", SwitchKind::kIgnored, "the event log is not implemented; see --log"),
-        row("--webserver_port", SwitchKind::kIgnored, kNoWebServer),
+        moos::switch_rule("--response", SwitchKind::kIgnored, "per-client response delays are not implemented"),
+        moos::switch_rule("-s", SwitchKind::kIgnored, kOneMode),
+        moos::switch_rule("--single_threaded", SwitchKind::kIgnored, kOneMode),
+        moos::switch_rule("-d", SwitchKind::kIgnored, kNoDns),
+        moos::switch_rule("--dns", SwitchKind::kIgnored, kNoDns),
+        moos::switch_rule("--tcpnodelay", SwitchKind::kIgnored, kNoDelay),
+        moos::switch_rule("--audit_port", SwitchKind::kIgnored, "the UDP audit port is not implemented"),
+        moos::switch_rule("--event_log", SwitchKind::kIgnored, "the event log is not implemented; see --log"),
+        moos::switch_rule("--webserver_port", SwitchKind::kIgnored, kNoWebServer),
     };
     t.bad_value = [](const std::string& arg, const moos::SwitchRule& r) { return arg + ": " + r.problem; };
     t.missing_value = [](const std::string& arg, const moos::SwitchRule& r) {
