@@ -60,20 +60,22 @@ std::optional<int> connect(moos::TcpClient& client, const Options& o, std::ostre
 
 const moos::SwitchTable& switch_table(Command command) {
   using moos::SwitchKind;
+  using moos::switch_rule;
   auto make = [](Command c) {
     const std::string command_name = c == Command::kPoke ? "poke" : "watch";
     moos::SwitchTable t;
-    t.rules = {moos::switch_rule("--host", SwitchKind::kText, "host"),
-               moos::switch_rule("--port", SwitchKind::kInteger, "port", moos::kConnectPortRange),
-               moos::switch_rule("--name", SwitchKind::kText, "name"),
-               moos::switch_rule("--connect-timeout", SwitchKind::kNumber, "timeout", moos::kPositive),
-               moos::switch_rule("--moos_time_warp", SwitchKind::kNumber, "time warp", moos::kTimeWarpRange),
+    t.rules = {switch_rule("--host", SwitchKind::kText, "host"),
+               switch_rule("--port", SwitchKind::kInteger, "port", moos::kConnectPortRange),
+               switch_rule("--name", SwitchKind::kText, "name"),
+               switch_rule("--connect-timeout", SwitchKind::kNumber, "timeout", moos::kPositive),
+               switch_rule("--moos_time_warp", SwitchKind::kNumber, "time warp",
+                           moos::kTimeWarpRange),
                moos::help_switch_rule()};
     if (c == Command::kPoke) {
-      t.rules.push_back(moos::switch_rule("--string", SwitchKind::kFlag, ""));
+      t.rules.push_back(switch_rule("--string", SwitchKind::kFlag, ""));
     } else {
-      t.rules.push_back(moos::switch_rule("--count", SwitchKind::kInteger, "count", kCountRange));
-      t.rules.push_back(moos::switch_rule("--timeout", SwitchKind::kNumber, "timeout", moos::kPositive));
+      t.rules.push_back(switch_rule("--count", SwitchKind::kInteger, "count", kCountRange));
+      t.rules.push_back(switch_rule("--timeout", SwitchKind::kNumber, "timeout", moos::kPositive));
     }
     // "--host= needs a host" for an empty text, "bad port: --port=0" for a refused number.
     t.bad_value = [](const std::string& arg, const moos::SwitchRule& r) {

@@ -22,7 +22,8 @@ constexpr std::size_t kMinPacketLimitBytes = moos::kPacketHeaderSize + moos::Mes
 
 /// Reasons shared by several rows.
 constexpr const char* kEmptyFileName = "empty file name";
-constexpr const char* kOneMode = "moosdb-lite has one mode (single thread, asynchronous clients supported)";
+constexpr const char* kOneMode =
+    "moosdb-lite has one mode (single thread, asynchronous clients supported)";
 constexpr const char* kNoDns = "no DNS lookups are made";
 constexpr const char* kNoWebServer = "the web server is not implemented";
 constexpr const char* kNoDelay = "TCP_NODELAY is always set";
@@ -35,8 +36,8 @@ bool is_ipv4_literal(const std::string& text) {
 }
 
 moos::SwitchRule bind_row() {
-  moos::SwitchRule r = moos::switch_rule(
-      "--bind", moos::SwitchKind::kText, "not an IPv4 address (libMOOS clients connect over IPv4 only)");
+  moos::SwitchRule r = moos::switch_rule("--bind", moos::SwitchKind::kText,
+                                         "not an IPv4 address (libMOOS clients connect over IPv4 only)");
   r.check = is_ipv4_literal;
   return r;
 }
@@ -116,37 +117,47 @@ const std::vector<OptionDoc>& mission_global_docs() {
 
 const moos::SwitchTable& switch_table() {
   using moos::SwitchKind;
+  using moos::switch_rule;
   static const moos::SwitchTable table = [] {
-    const std::string bytes = "expected a whole number of bytes >= " + std::to_string(kMinPacketLimitBytes);
+    const std::string bytes =
+        "expected a whole number of bytes >= " + std::to_string(kMinPacketLimitBytes);
+    const moos::Range byte_range{double(kMinPacketLimitBytes), moos::kAnyNumber.high};
     moos::SwitchTable t;
     t.rules = {
-        moos::switch_rule("--moos_port", SwitchKind::kInteger, "not a port number (0-65535)", moos::kListenPortRange),
-        moos::switch_rule("--moos_community", SwitchKind::kText, "empty community name"),
-        moos::switch_rule("--moos_time_warp", SwitchKind::kNumber, "time warp must be a number in (0, 400]",
-            moos::kTimeWarpRange),
-        moos::switch_rule("--moos_timeout", SwitchKind::kNumber, "timeout must be a number of seconds >= 0",
-            kClientTimeoutRange_s),
+        switch_rule("--moos_port", SwitchKind::kInteger, "not a port number (0-65535)",
+                    moos::kListenPortRange),
+        switch_rule("--moos_community", SwitchKind::kText, "empty community name"),
+        switch_rule("--moos_time_warp", SwitchKind::kNumber,
+                    "time warp must be a number in (0, 400]", moos::kTimeWarpRange),
+        switch_rule("--moos_timeout", SwitchKind::kNumber,
+                    "timeout must be a number of seconds >= 0", kClientTimeoutRange_s),
         bind_row(),
-        moos::switch_rule("--port-file", SwitchKind::kText, kEmptyFileName),
-        moos::switch_rule("--log", SwitchKind::kText, kEmptyFileName),
-        moos::switch_rule("--max-packet-bytes", SwitchKind::kUnsigned, bytes, {double(kMinPacketLimitBytes), moos::kAnyNumber.high}),
-        moos::switch_rule("--max-output-bytes", SwitchKind::kUnsigned, bytes, {double(kMinPacketLimitBytes), moos::kAnyNumber.high}),
-        moos::switch_rule("--banner-timeout", SwitchKind::kNumber, "expected seconds > 0", moos::kPositive),
-        moos::switch_rule("--handshake-timeout", SwitchKind::kNumber, "expected seconds > 0", moos::kPositive),
+        switch_rule("--port-file", SwitchKind::kText, kEmptyFileName),
+        switch_rule("--log", SwitchKind::kText, kEmptyFileName),
+        switch_rule("--max-packet-bytes", SwitchKind::kUnsigned, bytes, byte_range),
+        switch_rule("--max-output-bytes", SwitchKind::kUnsigned, bytes, byte_range),
+        switch_rule("--banner-timeout", SwitchKind::kNumber, "expected seconds > 0",
+                    moos::kPositive),
+        switch_rule("--handshake-timeout", SwitchKind::kNumber, "expected seconds > 0",
+                    moos::kPositive),
         moos::help_switch_rule(),
-        moos::switch_rule("--version", SwitchKind::kFlag, ""),
+        switch_rule("--version", SwitchKind::kFlag, ""),
         // Switches of the reference MOOSDB (spec 5.11) that moosdb-lite accepts and ignores.
-        moos::switch_rule("--response", SwitchKind::kIgnored, "per-client response delays are not implemented"),
-        moos::switch_rule("-s", SwitchKind::kIgnored, kOneMode),
-        moos::switch_rule("--single_threaded", SwitchKind::kIgnored, kOneMode),
-        moos::switch_rule("-d", SwitchKind::kIgnored, kNoDns),
-        moos::switch_rule("--dns", SwitchKind::kIgnored, kNoDns),
-        moos::switch_rule("--tcpnodelay", SwitchKind::kIgnored, kNoDelay),
-        moos::switch_rule("--audit_port", SwitchKind::kIgnored, "the UDP audit port is not implemented"),
-        moos::switch_rule("--event_log", SwitchKind::kIgnored, "the event log is not implemented; see --log"),
-        moos::switch_rule("--webserver_port", SwitchKind::kIgnored, kNoWebServer),
+        switch_rule("--response", SwitchKind::kIgnored,
+                    "per-client response delays are not implemented"),
+        switch_rule("-s", SwitchKind::kIgnored, kOneMode),
+        switch_rule("--single_threaded", SwitchKind::kIgnored, kOneMode),
+        switch_rule("-d", SwitchKind::kIgnored, kNoDns),
+        switch_rule("--dns", SwitchKind::kIgnored, kNoDns),
+        switch_rule("--tcpnodelay", SwitchKind::kIgnored, kNoDelay),
+        switch_rule("--audit_port", SwitchKind::kIgnored, "the UDP audit port is not implemented"),
+        switch_rule("--event_log", SwitchKind::kIgnored,
+                    "the event log is not implemented; see --log"),
+        switch_rule("--webserver_port", SwitchKind::kIgnored, kNoWebServer),
     };
-    t.bad_value = [](const std::string& arg, const moos::SwitchRule& r) { return arg + ": " + r.problem; };
+    t.bad_value = [](const std::string& arg, const moos::SwitchRule& r) {
+      return arg + ": " + r.problem;
+    };
     t.missing_value = [](const std::string& arg, const moos::SwitchRule& r) {
       return arg + ": expected " + r.name + "=VALUE";
     };
@@ -213,7 +224,8 @@ ServerOptions resolve_options(const CommandLine& cli, const std::string& mission
       return std::nullopt;
     };
     if (auto v = checked("ServerPort", "--moos_port"))
-      options.port = static_cast<int>(base::parse_integer(*v, 0, moos::kMaxPort).value_or(kDefaultPort));
+      options.port = static_cast<int>(base::parse_integer(*v, moos::kAnyListenPort, moos::kMaxPort)
+                                          .value_or(kDefaultPort));
     if (auto v = checked("MOOSTimeWarp", "--moos_time_warp")) options.time_warp = *base::parse_number(*v);
     if (auto v = checked("ClientTimeout", "--moos_timeout")) options.client_timeout_s = base::parse_number(*v);
     for (const auto& ignored : ignored_globals()) {
