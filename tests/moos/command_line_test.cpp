@@ -1,6 +1,9 @@
 // Command-line conventions: wire spec 6.4 and hazard spec 2.
 #include <gtest/gtest.h>
 
+#include <set>
+
+#include "doc_tables.hpp"
 #include "moos/command_line.hpp"
 
 namespace moos {
@@ -209,6 +212,17 @@ TEST(SwitchTable, PortRangesOfClientsAndServers) {
   const auto client = parse({"m.moos", "--moos_port=0"});
   ASSERT_EQ(client.errors.size(), 1u);
   EXPECT_EQ(client.errors[0], "--moos_port=0: not a port number in 1..65535");
+}
+
+TEST(SwitchTable, TheDocsGenericSwitchTableIsTheCode) {
+  const auto rows = test_support::doc_table(std::string(HAZARD_SOURCE_DIR) + "/docs/moos.md",
+                                            "Command line (`moos/command_line.hpp`)");
+  ASSERT_FALSE(rows.empty()) << "docs/moos.md: no table of the generic switches";
+  SwitchTable generic;
+  generic.rules = generic_switch_rules();
+  std::set<std::string> names = test_support::switches_of(generic, false);
+  names.insert("--alias");  // read by parse_command_line itself
+  EXPECT_EQ(test_support::switches_in_first_column(rows), names);
 }
 
 }  // namespace

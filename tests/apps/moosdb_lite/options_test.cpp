@@ -154,6 +154,17 @@ TEST(Info, TheDocsSwitchTableIsTheSwitchTable) {
             test_support::switches_of(switch_table(), false));
 }
 
+TEST(Info, TheDocsMissionGlobalsTableIsTheCodes) {
+  const auto rows = test_support::doc_table(std::string(HAZARD_SOURCE_DIR) + "/docs/moos.md",
+                                            "Mission globals read");
+  ASSERT_FALSE(rows.empty()) << "docs/moos.md: no table under '### Mission globals read'";
+  std::vector<std::string> in_doc;
+  for (const auto& row : rows) in_doc.push_back(row.front());
+  std::vector<std::string> in_code;
+  for (const auto& row : mission_global_docs()) in_code.push_back("`" + row.name + "`");
+  EXPECT_EQ(in_doc, in_code);
+}
+
 TEST(Info, HelpNamesEverySwitchOfTheTable) {
   std::string names;
   for (const auto& row : option_docs()) names += " " + row.name + " ";
