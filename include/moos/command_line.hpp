@@ -9,8 +9,8 @@
 //   is the mission file; `--alias=NAME` overrides it.
 // - Generic switches `--moos_<name>=value` are collected in `moos_switches`; the ones that matter
 //   are validated into typed fields by generic_switch_rules() (a bad value is an error naming
-//   the switch and value, and the field stays unset). `--moos_app_name NAME` and `--moos_comms_tick N` take the NEXT
-//   argument, as libMOOS reads them.
+//   the switch and value, and the field stays unset). `--moos_app_name NAME` and
+//   `--moos_comms_tick N` take the NEXT argument, as libMOOS reads them.
 // - Every other `--NAME=value` is a substitution for `$(NAME)` in the mission file (nsplug
 //   style) AND is listed in `unhandled`, in order, so an application can recognise its own
 //   `--name=value` flags. Arguments that start with '-' and carry no '=' (`--help`, `-e`) are
@@ -25,8 +25,9 @@
 //   free (kept in order). A switch is looked up by its text before any '=' (its name or an alias).
 // - kFlag matches only without '='. kIgnored matches with or without a value and adds the note
 //   "<argument> ignored: <problem>". Every other kind needs `=value`: without one, the table's
-//   missing_value text (or, without one, its unknown text) is an error; a value the rule does not accept (accepts()) gives the
-//   table's bad_value text. A switch not in the table gives the table's unknown text.
+//   missing_value text (or, when it has none, its unknown text) is an error; a value the rule
+//   does not accept (accepts()) gives the table's bad_value text. A switch not in the table
+//   gives the table's unknown text.
 // - Errors and notes are in argument order; for a switch given twice, the last value counts.
 // - The typed getters read a value with the same function that accepted it (one rule).
 
@@ -54,7 +55,7 @@ enum class SwitchKind {
   kIgnored,   ///< accepted with or without a value, and ignored with a note
 };
 
-/// One switch of a program: how it is read, and how its help and docs name it.
+/// One switch of a program: how it is read and what is wrong with a refused value.
 struct SwitchRule {
   std::string name;                  ///< as typed before any '=', e.g. "--moos_port"
   std::vector<std::string> aliases;  ///< other spellings, e.g. "-h"
@@ -102,8 +103,8 @@ struct SwitchValues {
 /// Reads `args` (without argv[0]) with `table` (see the contract).
 SwitchValues parse_switches(const std::vector<std::string>& args, const SwitchTable& table);
 
-/// The rules of the generic MOOS switches that CommandLine types (names without the dashes'
-/// "--" are the keys of CommandLine::moos_switches).
+/// The rules of the generic MOOS switches that CommandLine types (their names without the
+/// leading "--" are the keys of CommandLine::moos_switches).
 const std::vector<SwitchRule>& generic_switch_rules();
 
 // ---- the MOOS applications' command line --------------------------------------------------
