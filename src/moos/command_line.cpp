@@ -4,6 +4,7 @@
 #include "moos/command_line.hpp"
 
 #include <algorithm>
+#include <climits>
 
 #include "moos/limits.hpp"
 #include "base/text.hpp"
@@ -21,56 +22,155 @@ bool is_mission_name(std::string_view arg) {
   return base::ends_with(arg, ".moos") || base::ends_with(arg, ".moos++");
 }
 
-void set_typed_switch(CommandLine& cl, const std::string& name, const std::string& value) {
-  auto bad = [&](const std::string& why) {
-    cl.errors.push_back("--" + name + "=" + value + ": " + why);
-  };
-  if (name == "moos_name") {
-    if (value.empty()) bad("empty name"); else cl.moos_name = value;
-  } else if (name == "moos_app_name") {
-    if (value.empty()) bad("empty name"); else cl.moos_app_name = value;
-  } else if (name == "moos_host") {
-    if (value.empty()) bad("empty host"); else cl.moos_host = value;
-  } else if (name == "moos_community") {
-    if (value.empty()) bad("empty community"); else cl.moos_community = value;
-  } else if (name == "moos_file") {
-    if (value.empty()) bad("empty file name"); else cl.mission_file = value;
-  } else if (name == "moos_port") {
-    if (auto p = base::parse_integer(value, 1, kMaxPort)) cl.moos_port = static_cast<int>(*p);
-    else bad("not a port number in 1..65535");
-  } else if (name == "moos_time_warp") {
-    if (const auto w = parse_time_warp(value)) cl.moos_time_warp = *w;
-    else bad("time warp must be a number in (0, 400]");
-  } else if (name == "moos_app_tick") {
-    const auto f = base::parse_number(value);
-    if (f && *f > 0) cl.moos_app_tick_hz = *f;
-    else bad("AppTick must be a number > 0");
-  } else if (name == "moos_comms_tick") {
-    if (auto t = base::parse_integer(value, 1, kMaxCommsTickHz)) cl.moos_comms_tick_hz = static_cast<int>(*t);
-    else bad("CommsTick must be a whole number in 1..200");
-  } else if (name == "moos_timeout") {
-    const auto t = base::parse_number(value);
-    if (t && *t > 0) cl.moos_timeout_s = *t;
-    else bad("timeout must be a number > 0");
+/// The generic switches' rules, the error wording of libMOOS programs: "<arg>: <problem>".
+std::string bad_generic_value(const std::string& argument, const SwitchRule& rule) {
+  return argument + ": " + rule.problem;
+}
+
+const SwitchRule* find_rule(const std::vector<SwitchRule>& rules, std::string_view name) {
+  for (const SwitchRule& r : rules) {
+    if (r.name == name) return &r;
+    if (std::find(r.aliases.begin(), r.aliases.end(), name) != r.aliases.end()) return &r;
   }
+  return nullptr;
+}
+
+/// An end of a range as a whole number (the ends of long long beyond them; an open end of a
+/// kInteger rule is not used).
+long long clamped_integer(double end) {
+  constexpr double kLimit = 9.2e18;  // below 2^63, exact enough for any range we write
+  if (end >= kLimit) return LLONG_MAX;
+  if (end <= -kLimit) return LLONG_MIN;
+  return static_cast<long long>(end);
+}
+
+/// A value that a kInteger rule accepted.
+long long whole_number(const std::string& value) {
+  return base::parse_integer(value, LLONG_MIN, LLONG_MAX).value_or(0);
+}
+
+/// Sets the typed field of a valid generic switch (`name` without the dashes).
+void set_typed_switch(CommandLine& cl, const std::string& name, const std::string& value) {
+  const SwitchRule* rule = find_rule(generic_switch_rules(), "--" + name);
+  if (!rule) return;  // a generic switch that no field types
+  if (!accepts(*rule, value)) {
+    cl.errors.push_back(bad_generic_value("--" + name + "=" + value, *rule));
+    return;
+  }
+  if (name == "moos_name") cl.moos_name = value;
+  else if (name == "moos_app_name") cl.moos_app_name = value;
+  else if (name == "moos_host") cl.moos_host = value;
+  else if (name == "moos_file") cl.mission_file = value;
+  else if (name == "moos_port") cl.moos_port = static_cast<int>(whole_number(value));
+  else if (name == "moos_time_warp") cl.moos_time_warp = base::parse_number(value);
+  else if (name == "moos_app_tick") cl.moos_app_tick_hz = base::parse_number(value);
+  else if (name == "moos_comms_tick") cl.moos_comms_tick_hz = static_cast<int>(whole_number(value));
 }
 
 }  // namespace
 
-bool CommandLine::has_flag(const std::string& flag, const std::vector<std::string>& aliases) const {
-  for (const auto& arg : unhandled) {
-    if (arg == flag) return true;
-    if (std::find(aliases.begin(), aliases.end(), arg) != aliases.end()) return true;
+SwitchRule switch_rule(std::string name, SwitchKind kind, std::string problem, Range range) {
+  SwitchRule r;
+  r.name = std::move(name);
+  r.kind = kind;
+  r.problem = std::move(problem);
+  r.range = range;
+  return r;
+}
+
+SwitchRule help_switch_rule() {
+  SwitchRule r = switch_rule("--help", SwitchKind::kFlag, "");
+  r.aliases = {"-h"};
+  return r;
+}
+
+bool accepts(const SwitchRule& rule, const std::string& value) {
+  switch (rule.kind) {
+    case SwitchKind::kFlag: return value.empty();
+    case SwitchKind::kIgnored: return true;
+    case SwitchKind::kText: return !value.empty() && (!rule.check || rule.check(value));
+    case SwitchKind::kInteger:
+      return base::parse_integer(value, clamped_integer(rule.range.low),
+                                 clamped_integer(rule.range.high))
+          .has_value();
+    case SwitchKind::kUnsigned: {
+      const std::optional<std::uint64_t> v = base::parse_unsigned(value);
+      return v && static_cast<double>(*v) >= rule.range.low;
+    }
+    case SwitchKind::kNumber: {
+      const std::optional<double> v = base::parse_number(value);
+      return v && rule.range.contains(*v);
+    }
   }
   return false;
 }
 
-std::optional<std::string> CommandLine::flag_value(const std::string& name) const {
-  std::optional<std::string> found;
-  const std::string prefix = name + "=";
-  for (const auto& arg : unhandled)
-    if (base::starts_with(arg, prefix)) found = arg.substr(prefix.size());
-  return found;
+const std::vector<SwitchRule>& generic_switch_rules() {
+  static const std::vector<SwitchRule> rules = {
+      switch_rule("--moos_name", SwitchKind::kText, "empty name"),
+      switch_rule("--moos_app_name", SwitchKind::kText, "empty name"),
+      switch_rule("--moos_host", SwitchKind::kText, "empty host"),
+      switch_rule("--moos_file", SwitchKind::kText, "empty file name"),
+      switch_rule("--moos_port", SwitchKind::kInteger, "not a port number in 1..65535",
+                  kConnectPortRange),
+      switch_rule("--moos_time_warp", SwitchKind::kNumber,
+                  "time warp must be a number in (0, 400]", kTimeWarpRange),
+      switch_rule("--moos_app_tick", SwitchKind::kNumber, "AppTick must be a number > 0",
+                  kPositive),
+      switch_rule("--moos_comms_tick", SwitchKind::kInteger,
+                  "CommsTick must be a whole number in 1..200", kCommsTickRangeHz),
+  };
+  return rules;
+}
+
+bool SwitchValues::has(const std::string& name) const { return values.count(name) != 0; }
+
+std::optional<std::string> SwitchValues::text(const std::string& name) const {
+  const auto it = values.find(name);
+  if (it == values.end()) return std::nullopt;
+  return it->second;
+}
+
+std::optional<long long> SwitchValues::integer(const std::string& name) const {
+  const auto v = text(name);
+  return v ? base::parse_integer(*v, LLONG_MIN, LLONG_MAX) : std::nullopt;
+}
+
+std::optional<std::uint64_t> SwitchValues::whole(const std::string& name) const {
+  const auto v = text(name);
+  return v ? base::parse_unsigned(*v) : std::nullopt;
+}
+
+std::optional<double> SwitchValues::number(const std::string& name) const {
+  const auto v = text(name);
+  return v ? base::parse_number(*v) : std::nullopt;
+}
+
+SwitchValues parse_switches(const std::vector<std::string>& args, const SwitchTable& table) {
+  SwitchValues out;
+  for (const std::string& arg : args) {
+    if (arg.size() < 2 || arg[0] != '-') {
+      out.free.push_back(arg);
+      continue;
+    }
+    const auto eq = arg.find('=');
+    const bool has_value = eq != std::string::npos;
+    const std::string name = arg.substr(0, eq);
+    const std::string value = has_value ? arg.substr(eq + 1) : std::string();
+    const SwitchRule* rule = find_rule(table.rules, name);
+    if (!rule || (rule->kind == SwitchKind::kFlag && has_value)) {
+      out.errors.push_back(table.unknown(arg));
+    } else if (rule->kind == SwitchKind::kIgnored) {
+      out.notes.push_back(arg + " ignored: " + rule->problem);
+    } else if (rule->kind != SwitchKind::kFlag && !has_value) {
+      out.errors.push_back(table.missing_value ? table.missing_value(arg, *rule) : table.unknown(arg));
+    } else if (!accepts(*rule, value)) {
+      out.errors.push_back(table.bad_value(arg, *rule));
+    } else {
+      out.values[rule->name] = value;
+    }
+  }
+  return out;
 }
 
 CommandLine parse_command_line(int argc, const char* const* argv) {
@@ -81,7 +181,6 @@ CommandLine parse_command_line(int argc, const char* const* argv) {
 
 CommandLine parse_command_line(const std::vector<std::string>& args) {
   CommandLine cl;
-  if (!args.empty()) cl.program = args[0];
   std::vector<std::string> free;
   std::optional<std::string> alias_flag;
   std::optional<std::string> moos_file;
@@ -126,8 +225,7 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
   }
 
   // Mission file: first *.moos / *.moos++ argument, else the first free one (spec 6.4).
-  // `taken[i]` marks the free arguments consumed as mission file or alias.
-  std::vector<bool> taken(free.size(), false);
+  bool mission_is_second = false;  // then there is no positional alias
   std::size_t mission_index = free.size();  // free.size(): none
   for (std::size_t i = 0; i < free.size() && mission_index == free.size(); ++i)
     if (is_mission_name(free[i])) mission_index = i;
@@ -136,19 +234,15 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
     cl.mission_file = moos_file;  // every free argument stays visible to the application
   } else if (mission_index < free.size()) {
     cl.mission_file = free[mission_index];
-    taken[mission_index] = true;
+    mission_is_second = mission_index == 1;
   }
 
   // Alias: the second free argument unless it is the mission file (pAntler convention).
   if (alias_flag) {
     cl.run_alias = alias_flag;
-  } else if (free.size() > 1 && !taken[1]) {
+  } else if (free.size() > 1 && !mission_is_second) {
     cl.run_alias = free[1];
-    taken[1] = true;
   }
-
-  for (std::size_t i = 0; i < free.size(); ++i)
-    if (!taken[i]) cl.extra_arguments.push_back(free[i]);
   return cl;
 }
 

@@ -1,15 +1,11 @@
 #include "mission_app.hpp"
 
-#include <unistd.h>
-
 #include <algorithm>
-#include <iostream>
 
 #include "app_support.hpp"
 #include "base/text.hpp"
 #include "base/version.hpp"
 #include "moos/mission.hpp"
-#include "base/text.hpp"
 
 namespace mission_app {
 
@@ -19,16 +15,9 @@ namespace {
 constexpr std::size_t kRuleWidth = 63;
 /// Width of the '-' rule under an --interface section title.
 constexpr std::size_t kSectionRuleWidth = 40;
-/// ANSI colours of the launch line (green on a terminal, as MOOS-IvP apps print it).
-constexpr const char* kGreen = "\x1b[32m";
-constexpr const char* kPlain = "\x1b[0m";
 
 /// Decimals of a double handed to a text parser (a pose or a flag never needs more).
 constexpr int kMailDoubleDecimals = 6;
-int print(const std::string& text) {
-  std::cout << text << std::flush;
-  return std::cout ? 0 : 1;
-}
 
 std::string padded(std::string_view text, std::size_t width) {
   return std::string(text) + std::string(width > text.size() ? width - text.size() : 0, ' ');
@@ -43,26 +32,6 @@ std::string interface_section(const std::string& title,
 }
 
 }  // namespace
-
-int run_main(int argc, char** argv, const std::string& app_name, const InfoTexts& texts,
-             const AppFactory& make_app) {
-  const moos::CommandLine cl = moos::parse_command_line(argc, argv);
-  switch (decide_launch(cl)) {
-    case LaunchAction::kHelp:
-    case LaunchAction::kUsageError:  // not from decide_launch: these apps add no switches
-      return print(texts.help());
-    case LaunchAction::kExample: return print(texts.example());
-    case LaunchAction::kInterface: return print(texts.interface());
-    case LaunchAction::kVersion: return print(texts.version());
-    case LaunchAction::kRun: break;
-  }
-  const bool terminal = ::isatty(STDOUT_FILENO) != 0;
-  std::cout << (terminal ? kGreen : "") << app_name << " launching as "
-            << moos::app_name_from(cl, app_name) << (terminal ? kPlain : "") << "\n\n"
-            << std::flush;
-  const std::unique_ptr<moos::MoosApp> app = make_app();
-  return moos::run_app(*app, cl, std::cout, std::cerr, terminal);
-}
 
 // ---- text frames ---------------------------------------------------------------------------
 

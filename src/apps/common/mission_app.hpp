@@ -1,16 +1,10 @@
 #pragma once
 // What the mission helper applications (uSimSurveyVehicle, pHazardMgr, uFldHazardMetric, pLogLite)
-// share: the MOOS-IvP shape of main (information switches, run alias, TCP client), the frames of
-// their information texts, and a MoosApp base that publishes a libmission Outputs value.
+// share besides their main (which is moos::launch, as for every MOOS app): the frames of their
+// information texts, and a MoosApp base that publishes a libmission Outputs value.
 //
 // Contract
-// - Command line (the convention of uFldHazardSensor, spec 2): the first information switch
-//   decides (-e/--example/-example, -h/--help/-help, -i/--interface, -v/--version/-version);
-//   without one and without a mission file, the help is shown. The mission file, the run alias
-//   (argv[2] or --alias=) and the --moos_* switches are libmoos's parse_command_line's.
-// - run_main prints the chosen text (exit 0), or builds the app and runs it with moos::run_app
-//   until SIGINT or SIGTERM (exit 0; 1 if the mission file cannot be read, the MOOSDB refuses the
-//   name, or start-up fails). run_app reads the mission file once; the app finds the file's
+// - moos::run_app (through moos::launch) reads the mission file once; the app finds the file's
 //   folder and globals (LatOrigin, LongOrigin) in its settings (moos::AppSettings).
 // - MissionApp::publish posts every posting of an Outputs value in order (doubles as MOOS doubles)
 //   and hands events and warnings to the AppCast. A posting that cannot be sent because the
@@ -21,7 +15,6 @@
 #include <functional>
 #include <iosfwd>
 #include <map>
-#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -30,28 +23,8 @@
 #include "mission/outputs.hpp"
 #include "mission/params.hpp"
 #include "moos/app.hpp"
-#include "moos/command_line.hpp"
 
 namespace mission_app {
-
-// The action the command line asks for (see the contract): libmoos's rule, as for every app.
-using moos::decide_launch;
-using moos::LaunchAction;
-
-/// The information texts of one application.
-struct InfoTexts {
-  std::string (*help)();
-  std::string (*example)();
-  std::string (*interface)();
-  std::string (*version)();
-};
-
-using AppFactory = std::function<std::unique_ptr<moos::MoosApp>()>;
-
-/// The whole of main for a mission helper (see the contract). `app_name` is the default process
-/// name, printed in the launch line.
-int run_main(int argc, char** argv, const std::string& app_name, const InfoTexts& texts,
-             const AppFactory& make_app);
 
 // ---- text frames ---------------------------------------------------------------------------
 

@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "HazardReplay_Info.hpp"
+#include "args.hpp"
 #include "replay.hpp"
 
 int main(int argc, char** argv) {

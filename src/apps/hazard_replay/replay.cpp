@@ -77,44 +77,6 @@ constexpr double kMaxIterations = 1e8;
 
 }  // namespace
 
-ParsedArgs parse_args(const std::vector<std::string>& args) {
-  Options o;
-  std::vector<std::string> positional;
-  auto fail = [](std::string why) { return ParsedArgs{std::nullopt, std::move(why)}; };
-  for (const std::string& a : args) {
-    const auto eq = a.find('=');
-    const std::string name = a.substr(0, eq);
-    const std::string value = eq == std::string::npos ? "" : a.substr(eq + 1);
-    if (a == "--help" || a == "-h") {
-      o.help = true;
-    } else if (name == "--alias" && eq != std::string::npos) {
-      if (value.empty()) return fail("--alias needs a name: '" + a + "'");
-      o.app_name = value;
-    } else if (name == "--seed" && eq != std::string::npos) {
-      o.seed = base::parse_unsigned(value);
-      if (!o.seed) return fail("--seed needs a whole number in [0, 2^64): '" + a + "'");
-    } else if (name == "--until" && eq != std::string::npos) {
-      o.until_s = base::parse_number(value);
-      if (!o.until_s) return fail("--until needs a finite number of seconds: '" + a + "'");
-    } else if (name == "--output" && eq != std::string::npos) {
-      if (value.empty()) return fail("--output needs a file name: '" + a + "'");
-      o.output_path = value;
-    } else if (a.size() > 1 && a[0] == '-') {
-      return fail("unknown option '" + a + "'");
-    } else {
-      positional.push_back(a);
-    }
-  }
-  if (o.help) return ParsedArgs{o, {}};
-  if (positional.size() < 2) {
-    return fail(positional.empty() ? "missing CONFIG.moos and INPUT.alog" : "missing INPUT.alog");
-  }
-  if (positional.size() > 2) return fail("unexpected argument '" + positional[2] + "'");
-  o.config_path = positional[0];
-  o.input_path = positional[1];
-  return ParsedArgs{o, {}};
-}
-
 int run(const Options& options, std::ostream& out, std::ostream& err) {
   std::vector<moos::MissionError> mission_errors;
   const auto mission = moos::MissionFile::load(options.config_path, {}, &mission_errors);

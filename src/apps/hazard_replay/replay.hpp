@@ -1,5 +1,5 @@
 #pragma once
-// hazard_replay: command-line parsing and the replay loop (issue 2; rulings "hazard_replay
+// hazard_replay: the options and the replay loop (the command line: args.hpp) (issue 2; rulings "hazard_replay
 // output", "Release timing", "Seeds").
 //
 // Contract: the loop delivers each input line at its time through Engine::on_mail, the same
@@ -33,14 +33,6 @@ struct Options {
   std::optional<std::string> output_path;
   bool help = false;
 };
-
-struct ParsedArgs {
-  std::optional<Options> options;
-  std::string error;  ///< names the offending argument
-};
-
-/// Arguments after the program name.
-ParsedArgs parse_args(const std::vector<std::string>& args);
 
 /// Runs the replay; writes the .alog to `out` and diagnostics to `err`. Returns the exit code
 /// (0 done, 1 a file or block problem).

@@ -24,10 +24,10 @@ namespace {
 
 /// How long poke waits for its posts to reach the socket, real seconds.
 constexpr double kFlushTimeout_s = 10.0;
+/// --count: messages, at least 1.
+constexpr moos::Range kCountRange{1, static_cast<double>(std::numeric_limits<long long>::max())};
 
-using base::parse_integer;
 using base::parse_number;
-using base::starts_with;
 
 std::string default_name() { return "moos-cli-" + std::to_string(::getpid()); }
 
@@ -58,6 +58,40 @@ std::optional<int> connect(moos::TcpClient& client, const Options& o, std::ostre
 
 }  // namespace
 
+const moos::SwitchTable& switch_table(Command command) {
+  using moos::SwitchKind;
+  using moos::switch_rule;
+  auto make = [](Command c) {
+    const std::string command_name = c == Command::kPoke ? "poke" : "watch";
+    moos::SwitchTable t;
+    t.rules = {switch_rule("--host", SwitchKind::kText, "host"),
+               switch_rule("--port", SwitchKind::kInteger, "port", moos::kConnectPortRange),
+               switch_rule("--name", SwitchKind::kText, "name"),
+               switch_rule("--connect-timeout", SwitchKind::kNumber, "timeout", moos::kPositive),
+               switch_rule("--moos_time_warp", SwitchKind::kNumber, "time warp",
+                           moos::kTimeWarpRange),
+               moos::help_switch_rule()};
+    if (c == Command::kPoke) {
+      t.rules.push_back(switch_rule("--string", SwitchKind::kFlag, ""));
+    } else {
+      t.rules.push_back(switch_rule("--count", SwitchKind::kInteger, "count", kCountRange));
+      t.rules.push_back(switch_rule("--timeout", SwitchKind::kNumber, "timeout", moos::kPositive));
+    }
+    // "--host= needs a host" for an empty text, "bad port: --port=0" for a refused number.
+    t.bad_value = [](const std::string& arg, const moos::SwitchRule& r) {
+      return r.kind == SwitchKind::kText ? arg + " needs a " + r.problem
+                                         : "bad " + r.problem + ": " + arg;
+    };
+    t.unknown = [command_name](const std::string& arg) {
+      return "unknown option for " + command_name + ": " + arg;
+    };
+    return t;
+  };
+  static const moos::SwitchTable poke = make(Command::kPoke);
+  static const moos::SwitchTable watch = make(Command::kWatch);
+  return command == Command::kWatch ? watch : poke;
+}
+
 std::optional<Options> parse_options(const std::vector<std::string>& args, std::string* error) {
   Options o;
   auto fail = [&](const std::string& why) -> std::optional<Options> {
@@ -71,47 +105,22 @@ std::optional<Options> parse_options(const std::vector<std::string>& args, std::
   else if (command == "watch") o.command = Command::kWatch;
   else return fail("unknown command: " + command);
 
-  for (std::size_t i = 1; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    auto value_of = [&](std::string_view flag) { return std::string_view(a).substr(flag.size()); };
-    if (a == "--help" || a == "-h") {
-      o.command = Command::kHelp;
-      return o;
-    }
-    if (starts_with(a, "--host=")) {
-      o.host = std::string(value_of("--host="));
-      if (o.host.empty()) return fail("--host= needs a host");
-    } else if (starts_with(a, "--port=")) {
-      const auto p = parse_integer(value_of("--port="), 1, moos::kMaxPort);
-      if (!p) return fail("bad port: " + a);
-      o.port = static_cast<int>(*p);
-    } else if (starts_with(a, "--name=")) {
-      o.name = std::string(value_of("--name="));
-      if (o.name.empty()) return fail("--name= needs a name");
-    } else if (starts_with(a, "--connect-timeout=")) {
-      const auto t = parse_number(value_of("--connect-timeout="));
-      if (!t || *t <= 0) return fail("bad timeout: " + a);
-      o.connect_timeout_s = *t;
-    } else if (starts_with(a, "--moos_time_warp=")) {
-      const auto w = moos::parse_time_warp(value_of("--moos_time_warp="));
-      if (!w) return fail("bad time warp: " + a);
-      o.time_warp = *w;
-    } else if (a == "--string" && o.command == Command::kPoke) {
-      o.all_strings = true;
-    } else if (starts_with(a, "--count=") && o.command == Command::kWatch) {
-      const auto n = parse_integer(value_of("--count="), 1, std::numeric_limits<long long>::max());
-      if (!n) return fail("bad count: " + a);
-      o.count = *n;
-    } else if (starts_with(a, "--timeout=") && o.command == Command::kWatch) {
-      const auto t = parse_number(value_of("--timeout="));
-      if (!t || *t <= 0) return fail("bad timeout: " + a);
-      o.timeout_s = *t;
-    } else if (starts_with(a, "-")) {
-      return fail("unknown option for " + command + ": " + a);
-    } else {
-      o.arguments.push_back(a);
-    }
+  const moos::SwitchValues v =
+      moos::parse_switches({args.begin() + 1, args.end()}, switch_table(o.command));
+  if (v.has("--help")) {  // the help wins over every problem beside it
+    o.command = Command::kHelp;
+    return o;
   }
+  if (!v.errors.empty()) return fail(v.errors.front());
+  o.host = v.text("--host").value_or(o.host);
+  o.port = static_cast<int>(v.integer("--port").value_or(o.port));
+  o.name = v.text("--name").value_or(o.name);
+  o.connect_timeout_s = v.number("--connect-timeout").value_or(o.connect_timeout_s);
+  o.time_warp = v.number("--moos_time_warp").value_or(o.time_warp);
+  o.all_strings = v.has("--string");
+  o.count = v.integer("--count");
+  o.timeout_s = v.number("--timeout");
+  o.arguments = v.free;
   if (o.arguments.empty())
     return fail(o.command == Command::kPoke ? "poke needs at least one VAR=value"
                                             : "watch needs at least one variable or pattern");

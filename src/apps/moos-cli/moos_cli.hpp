@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "moos/command_line.hpp"
 #include "moos/message.hpp"
 
 namespace moos_cli {
@@ -36,7 +37,12 @@ struct Options {
   std::vector<std::string> arguments; ///< poke: VAR=value; watch: VAR or PATTERN
 };
 
-/// Parses the arguments after argv[0]. On a usage problem returns nullopt and sets `error`.
+/// The switches of a command (kPoke or kWatch), read with libmoos's moos::parse_switches.
+const moos::SwitchTable& switch_table(Command command);
+
+/// Parses the arguments after argv[0]: the command, then its switches and arguments. --help
+/// anywhere wins over every problem; else the first problem (in argument order) is the usage
+/// error, set in `error` with nullopt returned.
 std::optional<Options> parse_options(const std::vector<std::string>& args, std::string* error);
 
 /// One poke: `VAR=value` (a decimal number becomes a double unless `all_strings`),

@@ -4,8 +4,7 @@
 
 #include <arpa/inet.h>
 
-#include <cmath>
-#include <limits>
+#include <stdexcept>
 
 #include "hub.hpp"
 #include "moos/codec.hpp"
@@ -20,80 +19,53 @@ namespace {
 /// The smallest packet that can hold one message: below this no client could talk.
 constexpr std::size_t kMinPacketLimitBytes = moos::kPacketHeaderSize + moos::Message::kFixedEncodedSize;
 
-// Switches of the reference MOOSDB (spec 5.11) that moosdb-lite accepts and ignores.
-struct IgnoredSwitch {
-  std::string_view name;      ///< without any "=value"
-  std::string_view why;
-};
-const std::vector<IgnoredSwitch>& ignored_switches() {
-  static const std::vector<IgnoredSwitch> table = {
-      {"--response", "per-client response delays are not implemented"},
-      {"-s", "moosdb-lite has one mode (single thread, asynchronous clients supported)"},
-      {"--single_threaded", "moosdb-lite has one mode (single thread, asynchronous clients supported)"},
-      {"-d", "no DNS lookups are made"},
-      {"--dns", "no DNS lookups are made"},
-      {"--tcpnodelay", "TCP_NODELAY is always set"},
-      {"--audit_port", "the UDP audit port is not implemented"},
-      {"--event_log", "the event log is not implemented; see --log"},
-      {"--webserver_port", "the web server is not implemented"},
-  };
-  return table;
-}
-
-// Mission globals of the reference MOOSDB that moosdb-lite ignores (spec 5.11).
-const std::vector<IgnoredSwitch>& ignored_globals() {
-  static const std::vector<IgnoredSwitch> table = {
-      {"WarningLatency", "latency warnings are not implemented"},
-      {"WebServerPort", "the web server is not implemented"},
-      {"NoNetwork", "moosdb-lite always listens on TCP"},
-      {"tcpnodelay", "TCP_NODELAY is always set"},
-  };
-  return table;
-}
-
-std::optional<int> parse_port(std::string_view text) {
-  const auto value = base::parse_number(text);
-  if (!value || *value != std::floor(*value) || *value < 0 || *value > moos::kMaxPort)
-    return std::nullopt;
-  return static_cast<int>(*value);
-}
-
-std::optional<double> parse_non_negative(std::string_view text) {
-  const auto value = base::parse_number(text);
-  if (!value || *value < 0.0) return std::nullopt;
-  return value;
-}
-
-std::optional<double> parse_positive(std::string_view text) {
-  const auto value = base::parse_number(text);
-  if (!value || *value <= 0.0) return std::nullopt;
-  return value;
-}
-
-std::optional<std::size_t> parse_byte_count(std::string_view text, std::size_t minimum) {
-  if (text.empty() || text.find_first_not_of("0123456789") != std::string_view::npos)
-    return std::nullopt;
-  if (text.size() > std::numeric_limits<std::size_t>::digits10) return std::nullopt;
-  const std::size_t value = std::stoull(std::string(text));
-  if (value < minimum) return std::nullopt;
-  return value;
-}
+/// Reasons shared by several rows.
+constexpr const char* kEmptyFileName = "empty file name";
+constexpr const char* kOneMode =
+    "moosdb-lite has one mode (single thread, asynchronous clients supported)";
+constexpr const char* kNoDns = "no DNS lookups are made";
+constexpr const char* kNoWebServer = "the web server is not implemented";
+constexpr const char* kNoDelay = "TCP_NODELAY is always set";
+/// Seconds of silence before a client is dropped: 0 means never (ClientTimeout, --moos_timeout).
+constexpr moos::Range kClientTimeoutRange_s = moos::kNonNegative;
 
 bool is_ipv4_literal(const std::string& text) {
   in_addr addr{};
   return inet_pton(AF_INET, text.c_str(), &addr) == 1;
 }
 
-// Parses `--name=value` switches with a typed setter each.
-template <typename T, typename Parser>
-void set_from(std::optional<T>& field, std::string_view arg, std::string_view value,
-              Parser parse, std::string_view expected, std::vector<std::string>& errors) {
-  const auto parsed = parse(value);
-  if (!parsed) {
-    errors.push_back(std::string(arg) + ": " + std::string(expected));
-    return;
-  }
-  field = *parsed;
+moos::SwitchRule bind_row() {
+  moos::SwitchRule r = moos::switch_rule("--bind", moos::SwitchKind::kText,
+                                         "not an IPv4 address (libMOOS clients connect over IPv4 only)");
+  r.check = is_ipv4_literal;
+  return r;
+}
+
+const moos::SwitchRule& rule_named(const std::string& name) {
+  for (const moos::SwitchRule& r : switch_table().rules)
+    if (r.name == name) return r;
+  throw std::logic_error("moosdb-lite has no switch " + name);  // a typo in this file
+}
+
+// Mission globals of the reference MOOSDB that moosdb-lite ignores (spec 5.11).
+struct IgnoredGlobal {
+  std::string_view name;
+  std::string_view why;
+};
+const std::vector<IgnoredGlobal>& ignored_globals() {
+  static const std::vector<IgnoredGlobal> table = {
+      {"WarningLatency", "latency warnings are not implemented"},
+      {"WebServerPort", kNoWebServer},
+      {"NoNetwork", "moosdb-lite always listens on TCP"},
+      {"tcpnodelay", kNoDelay},
+  };
+  return table;
+}
+
+template <typename T>
+std::optional<T> optional_cast(const std::optional<long long>& v) {
+  if (!v) return std::nullopt;
+  return static_cast<T>(*v);
 }
 
 }  // namespace
@@ -142,80 +114,81 @@ const std::vector<OptionDoc>& mission_global_docs() {
   return table;
 }
 
-CommandLine parse_command_line(const std::vector<std::string>& args) {
-  CommandLine cli;
-  auto& errors = cli.errors;
-  for (const std::string& arg : args) {
-    const auto eq = arg.find('=');
-    const std::string_view name = std::string_view(arg).substr(0, eq);
-    const std::string_view value =
-        eq == std::string::npos ? std::string_view() : std::string_view(arg).substr(eq + 1);
-    const bool has_value = eq != std::string::npos;
-    auto want_value = [&]() {
-      if (!has_value) errors.push_back(arg + ": expected " + std::string(name) + "=VALUE");
-      return has_value;
+const moos::SwitchTable& switch_table() {
+  using moos::SwitchKind;
+  using moos::switch_rule;
+  static const moos::SwitchTable table = [] {
+    const std::string bytes =
+        "expected a whole number of bytes >= " + std::to_string(kMinPacketLimitBytes);
+    const moos::Range byte_range{double(kMinPacketLimitBytes), moos::kAnyNumber.high};
+    moos::SwitchTable t;
+    t.rules = {
+        switch_rule("--moos_port", SwitchKind::kInteger, "not a port number (0-65535)",
+                    moos::kListenPortRange),
+        switch_rule("--moos_community", SwitchKind::kText, "empty community name"),
+        switch_rule("--moos_time_warp", SwitchKind::kNumber,
+                    "time warp must be a number in (0, 400]", moos::kTimeWarpRange),
+        switch_rule("--moos_timeout", SwitchKind::kNumber,
+                    "timeout must be a number of seconds >= 0", kClientTimeoutRange_s),
+        bind_row(),
+        switch_rule("--port-file", SwitchKind::kText, kEmptyFileName),
+        switch_rule("--log", SwitchKind::kText, kEmptyFileName),
+        switch_rule("--max-packet-bytes", SwitchKind::kUnsigned, bytes, byte_range),
+        switch_rule("--max-output-bytes", SwitchKind::kUnsigned, bytes, byte_range),
+        switch_rule("--banner-timeout", SwitchKind::kNumber, "expected seconds > 0",
+                    moos::kPositive),
+        switch_rule("--handshake-timeout", SwitchKind::kNumber, "expected seconds > 0",
+                    moos::kPositive),
+        moos::help_switch_rule(),
+        switch_rule("--version", SwitchKind::kFlag, ""),
+        // Switches of the reference MOOSDB (spec 5.11) that moosdb-lite accepts and ignores.
+        switch_rule("--response", SwitchKind::kIgnored,
+                    "per-client response delays are not implemented"),
+        switch_rule("-s", SwitchKind::kIgnored, kOneMode),
+        switch_rule("--single_threaded", SwitchKind::kIgnored, kOneMode),
+        switch_rule("-d", SwitchKind::kIgnored, kNoDns),
+        switch_rule("--dns", SwitchKind::kIgnored, kNoDns),
+        switch_rule("--tcpnodelay", SwitchKind::kIgnored, kNoDelay),
+        switch_rule("--audit_port", SwitchKind::kIgnored, "the UDP audit port is not implemented"),
+        switch_rule("--event_log", SwitchKind::kIgnored,
+                    "the event log is not implemented; see --log"),
+        switch_rule("--webserver_port", SwitchKind::kIgnored, kNoWebServer),
     };
-    auto text = [](std::string_view v) -> std::optional<std::string> {
-      if (v.empty()) return std::nullopt;
-      return std::string(v);
+    t.bad_value = [](const std::string& arg, const moos::SwitchRule& r) {
+      return arg + ": " + r.problem;
     };
+    t.missing_value = [](const std::string& arg, const moos::SwitchRule& r) {
+      return arg + ": expected " + r.name + "=VALUE";
+    };
+    t.unknown = [](const std::string& arg) { return arg + ": unknown option (try --help)"; };
+    return t;
+  }();
+  return table;
+}
 
-    if (arg == "--help" || arg == "-h") {
-      cli.help = true;
-    } else if (arg == "--version") {
-      cli.version = true;
-    } else if (name == "--moos_port") {
-      if (want_value()) set_from(cli.port, arg, value, parse_port, "not a port number (0-65535)", errors);
-    } else if (name == "--moos_community") {
-      if (want_value()) set_from(cli.community, arg, value, text, "empty community name", errors);
-    } else if (name == "--moos_time_warp") {
-      if (want_value()) set_from(cli.time_warp, arg, value, moos::parse_time_warp, "time warp must be a number in (0, 400]", errors);
-    } else if (name == "--moos_timeout") {
-      if (want_value()) set_from(cli.client_timeout_s, arg, value, parse_non_negative, "timeout must be a number of seconds >= 0", errors);
-    } else if (name == "--bind") {
-      if (want_value()) {
-        set_from(cli.bind_address, arg, value,
-                 [](std::string_view v) -> std::optional<std::string> {
-                   if (!is_ipv4_literal(std::string(v))) return std::nullopt;
-                   return std::string(v);
-                 },
-                 "not an IPv4 address (libMOOS clients connect over IPv4 only)", errors);
-      }
-    } else if (name == "--port-file") {
-      if (want_value()) set_from(cli.port_file, arg, value, text, "empty file name", errors);
-    } else if (name == "--log") {
-      if (want_value()) set_from(cli.log_file, arg, value, text, "empty file name", errors);
-    } else if (name == "--max-packet-bytes") {
-      if (want_value())
-        set_from(cli.max_packet_bytes, arg, value,
-                 [](std::string_view v) { return parse_byte_count(v, kMinPacketLimitBytes); },
-                 "expected a whole number of bytes >= " + std::to_string(kMinPacketLimitBytes), errors);
-    } else if (name == "--max-output-bytes") {
-      if (want_value())
-        set_from(cli.max_output_bytes, arg, value,
-                 [](std::string_view v) { return parse_byte_count(v, kMinPacketLimitBytes); },
-                 "expected a whole number of bytes >= " + std::to_string(kMinPacketLimitBytes), errors);
-    } else if (name == "--banner-timeout") {
-      if (want_value()) set_from(cli.banner_timeout_s, arg, value, parse_positive, "expected seconds > 0", errors);
-    } else if (name == "--handshake-timeout") {
-      if (want_value()) set_from(cli.handshake_timeout_s, arg, value, parse_positive, "expected seconds > 0", errors);
-    } else if (!arg.empty() && arg[0] == '-') {
-      bool known = false;
-      for (const auto& ignored : ignored_switches()) {
-        if (name == ignored.name) {
-          cli.notes.push_back(arg + " ignored: " + std::string(ignored.why));
-          known = true;
-        }
-      }
-      if (!known) errors.push_back(arg + ": unknown option (try --help)");
-    } else if (!cli.mission_file) {
-      cli.mission_file = arg;
-    } else if (!cli.alias) {
-      cli.alias = arg;  // pAntler passes `<mission> <alias>`; the DB has no use for it
-    } else {
-      errors.push_back(arg + ": unexpected extra argument");
-    }
-  }
+CommandLine parse_command_line(const std::vector<std::string>& args) {
+  const moos::SwitchValues v = moos::parse_switches(args, switch_table());
+  CommandLine cli;
+  cli.help = v.has("--help");
+  cli.version = v.has("--version");
+  cli.port = optional_cast<int>(v.integer("--moos_port"));
+  cli.community = v.text("--moos_community");
+  cli.time_warp = v.number("--moos_time_warp");
+  cli.client_timeout_s = v.number("--moos_timeout");
+  cli.bind_address = v.text("--bind");
+  cli.port_file = v.text("--port-file");
+  cli.log_file = v.text("--log");
+  cli.max_packet_bytes = v.whole("--max-packet-bytes");
+  cli.max_output_bytes = v.whole("--max-output-bytes");
+  cli.banner_timeout_s = v.number("--banner-timeout");
+  cli.handshake_timeout_s = v.number("--handshake-timeout");
+  cli.notes = v.notes;
+  cli.errors = v.errors;
+  // pAntler passes `<mission> <alias>`; the DB has no use for the alias.
+  if (!v.free.empty()) cli.mission_file = v.free[0];
+  if (v.free.size() > 1) cli.alias = v.free[1];
+  for (std::size_t i = 2; i < v.free.size(); ++i)
+    cli.errors.push_back(v.free[i] + ": unexpected extra argument");
   return cli;
 }
 
@@ -240,18 +213,20 @@ ServerOptions resolve_options(const CommandLine& cli, const std::string& mission
       if (v->empty()) bad("Community", *v, "empty community name");
       else options.community = *v;
     }
-    if (auto v = mission_global("ServerPort")) {
-      if (auto port = parse_port(*v)) options.port = *port;
-      else bad("ServerPort", *v, "not a port number (0-65535)");
-    }
-    if (auto v = mission_global("MOOSTimeWarp")) {
-      if (auto warp = moos::parse_time_warp(*v)) options.time_warp = *warp;
-      else bad("MOOSTimeWarp", *v, "time warp must be a number in (0, 400]");
-    }
-    if (auto v = mission_global("ClientTimeout")) {
-      if (auto timeout = parse_non_negative(*v)) options.client_timeout_s = *timeout;
-      else bad("ClientTimeout", *v, "timeout must be a number of seconds >= 0");
-    }
+    // The globals obey the rules of the switches that override them.
+    auto checked = [&](std::string_view key, const char* switch_name) -> std::optional<std::string> {
+      const std::optional<std::string> v = mission_global(key);
+      if (!v) return std::nullopt;
+      const moos::SwitchRule& rule = rule_named(switch_name);
+      if (moos::accepts(rule, *v)) return v;
+      bad(key, *v, rule.problem);
+      return std::nullopt;
+    };
+    if (auto v = checked("ServerPort", "--moos_port"))
+      options.port = static_cast<int>(base::parse_integer(*v, moos::kAnyListenPort, moos::kMaxPort)
+                                          .value_or(kDefaultPort));
+    if (auto v = checked("MOOSTimeWarp", "--moos_time_warp")) options.time_warp = *base::parse_number(*v);
+    if (auto v = checked("ClientTimeout", "--moos_timeout")) options.client_timeout_s = base::parse_number(*v);
     for (const auto& ignored : ignored_globals()) {
       if (mission_global(ignored.name))
         notes->push_back(mission_name + ": " + std::string(ignored.name) + " ignored: " +

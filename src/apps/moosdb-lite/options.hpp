@@ -4,9 +4,13 @@
 // (style practice 5: the parser and --help read the same rows).
 //
 // Contract:
-// - parse_command_line() never exits and never prints: it returns what it understood, the
-//   errors (each naming the argument and why) and notes (real-MOOSDB switches we accept
-//   and ignore).
+// - parse_command_line() reads the arguments with libmoos's switch table parser
+//   (moos::parse_switches, switch_table()); it never exits and never prints: it returns what it
+//   understood, the errors (each naming the argument and why) and notes (real-MOOSDB switches
+//   we accept and ignore). A port is one the server can listen on (moos::kListenPortRange: 0
+//   lets the OS pick), a whole number.
+// - The mission globals obey the rules of the switches that override them (ServerPort:
+//   --moos_port, MOOSTimeWarp: --moos_time_warp, ClientTimeout: --moos_timeout, 0 = never).
 // - resolve_options() merges, in increasing priority: built-in defaults, mission globals
 //   (Community, ServerPort, MOOSTimeWarp, ClientTimeout), command-line switches. Every bad
 //   value is an error naming where it came from (switch, or mission file and variable).
@@ -18,6 +22,8 @@
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "moos/command_line.hpp"
 
 namespace moosdb_lite {
 
@@ -34,6 +40,9 @@ struct OptionDoc {
 const std::vector<OptionDoc>& option_docs();
 /// Mission-file globals that moosdb-lite reads, with meaning and default.
 const std::vector<OptionDoc>& mission_global_docs();
+
+/// The switches of moosdb-lite, with the reference MOOSDB's that it accepts and ignores.
+const moos::SwitchTable& switch_table();
 
 /// What the command line says; unset fields were not given.
 struct CommandLine {

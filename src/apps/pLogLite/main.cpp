@@ -1,16 +1,18 @@
 // pLogLite: a logger writing pLogger's .alog format (issue 5; docs/missions.md). main reads the
 // command line, prints an information text or runs the app until SIGINT or SIGTERM (exit codes:
-// mission_app::run_main).
+// moos::launch).
 
 #include <memory>
 
 #include "LogLite.hpp"
 #include "LogLite_Info.hpp"
-#include "mission_app.hpp"
+#include "moos/launch.hpp"
 
 int main(int argc, char** argv) {
   using namespace plog_lite;
-  const mission_app::InfoTexts texts{help_text, example_text, interface_text, version_text};
-  return mission_app::run_main(argc, argv, kAppName, texts,
-                               [] { return std::make_unique<LogLite>(); });
+  moos::AppLaunch app;
+  app.app_name = kAppName;
+  app.texts = {help_text, example_text, interface_text, version_text};
+  app.make_app = [] { return std::make_unique<LogLite>(); };
+  return moos::launch(argc, argv, app);
 }

@@ -2,7 +2,8 @@
 #include <gtest/gtest.h>
 
 #include "HazardReplay_Info.hpp"
-#include "replay.hpp"
+#include "args.hpp"
+#include "doc_tables.hpp"
 
 namespace hazard_replay {
 namespace {
@@ -45,6 +46,8 @@ TEST(ReplayArgs, BadArgumentsAreNamed) {
       {{"m.moos", "in.alog", "--output="}, "'--output='"},
       {{"m.moos", "in.alog", "--verbose"}, "unknown option '--verbose'"},
       {{"m.moos", "in.alog", "--seed"}, "unknown option '--seed'"},
+      {{"m.moos", "in.alog", "--seed=abc"}, "--seed needs a whole number in [0, 2^64): '--seed=abc'"},
+      {{"m.moos", "in.alog", "--help=yes"}, "unknown option '--help=yes'"},
   };
   for (const Case& c : cases) {
     const ParsedArgs p = parse_args(c.args);
@@ -59,8 +62,20 @@ TEST(ReplayArgs, HelpNeedsNoFiles) {
     ASSERT_TRUE(p.options);
     EXPECT_TRUE(p.options->help);
   }
+  // --help wins over a problem beside it (settled with moosdb-lite, moos-cli, gen_hazards).
+  const ParsedArgs bad_and_help = parse_args({"--seed=x", "-h"});
+  ASSERT_TRUE(bad_and_help.options) << bad_and_help.error;
+  EXPECT_TRUE(bad_and_help.options->help);
   EXPECT_NE(help_text().find(usage_line()), std::string::npos);
   EXPECT_NE(help_text().find("--until=T"), std::string::npos);
+}
+
+TEST(ReplayArgs, TheDocsSwitchTableIsTheSwitchTable) {
+  const auto rows = test_support::doc_table(
+      std::string(HAZARD_SOURCE_DIR) + "/docs/configuration.md", "Running offline: hazard_replay");
+  ASSERT_FALSE(rows.empty()) << "docs/configuration.md: no switch table for hazard_replay";
+  EXPECT_EQ(test_support::switches_in_first_column(rows),
+            test_support::switches_of(switch_table(), false));
 }
 
 }  // namespace

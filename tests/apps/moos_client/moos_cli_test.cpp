@@ -1,8 +1,11 @@
 // moos-cli option parsing, poke value typing and watch line formatting (no processes).
 #include <gtest/gtest.h>
 
+#include <set>
+
 #include "MoosCli_Info.hpp"
 #include "moos/alog.hpp"
+#include "doc_tables.hpp"
 #include "moos_cli.hpp"
 
 namespace moos_cli {
@@ -50,6 +53,26 @@ TEST(MoosCliOptions, UsageErrorsNameTheProblem) {
   EXPECT_EQ(error, "watch needs at least one variable or pattern");
   const auto help = parse_options({"poke", "--help"}, &error);
   ASSERT_TRUE(help.has_value());
+  EXPECT_EQ(help->command, Command::kHelp);
+}
+
+TEST(MoosCliOptions, EachSwitchProblemNamesSwitchAndValue) {
+  std::string error;
+  EXPECT_FALSE(parse_options({"poke", "--host=", "A=1"}, &error));
+  EXPECT_EQ(error, "--host= needs a host");
+  EXPECT_FALSE(parse_options({"watch", "A", "--count=0", "--timeout=-1"}, &error));
+  EXPECT_EQ(error, "bad count: --count=0");  // the first problem
+  EXPECT_FALSE(parse_options({"watch", "--timeout", "A"}, &error));
+  EXPECT_EQ(error, "unknown option for watch: --timeout");
+  EXPECT_FALSE(parse_options({"poke", "--moos_time_warp=401", "A=1"}, &error));
+  EXPECT_EQ(error, "bad time warp: --moos_time_warp=401");
+}
+
+TEST(MoosCliOptions, HelpWinsOverAProblemBesideIt) {
+  // Settled with moosdb-lite and gen_hazards (docs/differences.md): --help anywhere wins.
+  std::string error;
+  const auto help = parse_options({"poke", "--port=0", "--help"}, &error);
+  ASSERT_TRUE(help.has_value()) << error;
   EXPECT_EQ(help->command, Command::kHelp);
 }
 
@@ -110,6 +133,24 @@ TEST(MoosCliInfo, HelpDocumentsEveryOptionAndExitCode) {
   for (int code : {kExitOk, kExitUsage, kExitWatchTimeout, kExitNoConnection, kExitRefused,
                    kExitNotWritten})
     EXPECT_NE(help.find(std::to_string(code) + " "), std::string::npos) << code;
+}
+
+TEST(MoosCliOptions, TheDocsSwitchTableIsTheSwitchTables) {
+  const auto rows = test_support::doc_table(std::string(HAZARD_SOURCE_DIR) + "/docs/moos.md",
+                                            "`moos-cli`");
+  ASSERT_FALSE(rows.empty()) << "docs/moos.md: no table under '### `moos-cli`'";
+  const auto poke = test_support::switches_of(switch_table(Command::kPoke), false);
+  const auto watch = test_support::switches_of(switch_table(Command::kWatch), false);
+  std::set<std::string> both = poke;
+  both.insert(watch.begin(), watch.end());
+  EXPECT_EQ(test_support::switches_in_first_column(rows), both);
+  for (const auto& row : rows) {  // the Commands column
+    ASSERT_GE(row.size(), 2u);
+    for (const std::string& name : test_support::switches_named(row[0])) {
+      EXPECT_EQ(poke.count(name) == 1, row[1] != "watch") << name;
+      EXPECT_EQ(watch.count(name) == 1, row[1] != "poke") << name;
+    }
+  }
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "MoosDBLite_Info.hpp"
+#include "doc_tables.hpp"
 #include "options.hpp"
 
 namespace moosdb_lite {
@@ -143,6 +144,53 @@ TEST(Info, HelpListsEveryOptionOfTheTable) {
   }
   for (const auto& row : mission_global_docs()) EXPECT_NE(help.find(row.name), std::string::npos);
   EXPECT_EQ(version_text().rfind("moosdb-lite ", 0), 0u);
+}
+
+TEST(Info, TheDocsSwitchTableIsTheSwitchTable) {
+  const auto rows = test_support::doc_table(std::string(HAZARD_SOURCE_DIR) + "/docs/moos.md",
+                                            "Command line");
+  ASSERT_FALSE(rows.empty()) << "docs/moos.md: no table under '### Command line'";
+  EXPECT_EQ(test_support::switches_in_first_column(rows),
+            test_support::switches_of(switch_table(), false));
+}
+
+TEST(Info, TheDocsMissionGlobalsTableIsTheCodes) {
+  const auto rows = test_support::doc_table(std::string(HAZARD_SOURCE_DIR) + "/docs/moos.md",
+                                            "Mission globals read");
+  ASSERT_FALSE(rows.empty()) << "docs/moos.md: no table under '### Mission globals read'";
+  std::vector<std::string> in_doc;
+  for (const auto& row : rows) in_doc.push_back(row.front());
+  std::vector<std::string> in_code;
+  for (const auto& row : mission_global_docs()) in_code.push_back("`" + row.name + "`");
+  EXPECT_EQ(in_doc, in_code);
+}
+
+TEST(Info, HelpNamesEverySwitchOfTheTable) {
+  std::string names;
+  for (const auto& row : option_docs()) names += " " + row.name + " ";
+  for (const std::string& name : test_support::switches_of(switch_table(), true)) {
+    const bool named = names.find(" " + name + "=") != std::string::npos ||
+                       names.find(" " + name + " ") != std::string::npos ||
+                       names.find(" " + name + ",") != std::string::npos;
+    EXPECT_TRUE(named) << name << " is not in option_docs()";
+  }
+}
+
+TEST(Options, PortsAreWholeNumbersAServerCanListenOn) {
+  EXPECT_EQ(parse_command_line({"--moos_port=0"}).port, 0);
+  EXPECT_EQ(parse_command_line({"--moos_port=65535"}).port, 65535);
+  const CommandLine cli = parse_command_line({"--moos_port=9000.0", "--moos_port=65536"});
+  EXPECT_EQ(cli.errors, (std::vector<std::string>{"--moos_port=9000.0: not a port number (0-65535)",
+                                                  "--moos_port=65536: not a port number (0-65535)"}));
+  const std::map<std::string, std::string> globals = {{"ServerPort", "9000.0"}};
+  Resolved r;
+  MissionGlobalLookup lookup = [&globals](std::string_view key) -> std::optional<std::string> {
+    const auto it = globals.find(std::string(key));
+    if (it == globals.end()) return std::nullopt;
+    return it->second;
+  };
+  r.options = resolve_options(parse_command_line({}), "m.moos", lookup, &r.errors, &r.notes);
+  EXPECT_EQ(r.errors, (std::vector<std::string>{"m.moos: ServerPort = 9000.0: not a port number (0-65535)"}));
 }
 
 }  // namespace

@@ -16,12 +16,12 @@ moos::CommandLine cl(std::vector<std::string> args) {
 }
 
 TEST(MissionAppLaunch, FirstInformationSwitchDecides_Spec2) {
-  EXPECT_EQ(decide_launch(cl({"m.moos"})), LaunchAction::kRun);
-  EXPECT_EQ(decide_launch(cl({})), LaunchAction::kHelp);  // no mission file: the help
-  EXPECT_EQ(decide_launch(cl({"m.moos", "-e", "--help"})), LaunchAction::kExample);
-  EXPECT_EQ(decide_launch(cl({"--interface", "-v"})), LaunchAction::kInterface);
-  EXPECT_EQ(decide_launch(cl({"-version"})), LaunchAction::kVersion);
-  EXPECT_EQ(decide_launch(cl({"m.moos", "-help"})), LaunchAction::kHelp);
+  EXPECT_EQ(moos::decide_launch(cl({"m.moos"})), moos::LaunchAction::kRun);
+  EXPECT_EQ(moos::decide_launch(cl({})), moos::LaunchAction::kHelp);  // no mission file: the help
+  EXPECT_EQ(moos::decide_launch(cl({"m.moos", "-e", "--help"})), moos::LaunchAction::kExample);
+  EXPECT_EQ(moos::decide_launch(cl({"--interface", "-v"})), moos::LaunchAction::kInterface);
+  EXPECT_EQ(moos::decide_launch(cl({"-version"})), moos::LaunchAction::kVersion);
+  EXPECT_EQ(moos::decide_launch(cl({"m.moos", "-help"})), moos::LaunchAction::kHelp);
 }
 
 TEST(MissionAppText, ParameterLinesAlignAndCommentOutWhatHasNoValue_Practice5) {

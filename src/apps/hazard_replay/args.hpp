@@ -1,0 +1,30 @@
+#pragma once
+// hazard_replay's command line, read with libmoos's switch table (moos::parse_switches).
+//
+// Contract: `CONFIG.moos INPUT.alog` and the switches of switch_table(); --help or -h anywhere
+// wins over every problem beside it (as in moosdb-lite, moos-cli and gen_hazards). Otherwise the
+// first problem in argument order is the error, naming the argument: a refused value
+// ("--seed needs a whole number in [0, 2^64): '--seed=x'"), an unknown switch or one without
+// its value ("unknown option '--seed'"), then missing or extra files.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "moos/command_line.hpp"
+#include "replay.hpp"
+
+namespace hazard_replay {
+
+/// The switches of hazard_replay.
+const moos::SwitchTable& switch_table();
+
+struct ParsedArgs {
+  std::optional<Options> options;
+  std::string error;  ///< names the offending argument
+};
+
+/// Arguments after the program name.
+ParsedArgs parse_args(const std::vector<std::string>& args);
+
+}  // namespace hazard_replay
