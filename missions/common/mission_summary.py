@@ -16,9 +16,11 @@ and the ground truth (the hazard file), and writes summary.json:
                                             classifications (and how many were right), the
                                             size of the last HAZARDSET_REPORT, hand-overs sent
 
-and prints the score table. Standard library only. Bad lines are skipped and counted; a missing
-evaluation is shown as "-" (the table says which vehicle has none). Exit status 0, or 1 when the
-log or the hazard file cannot be read.
+and prints the score table. Standard library only; the files are read by tools/mission_files
+(the rules of the C++ readers: a value that is not a finite number, `nan` included, is not a
+number; such a field of an evaluation stays text and shows as "-"). Bad lines are skipped and
+counted; a missing evaluation is shown as "-" (the table says which vehicle has none). Exit
+status 0, or 1 when the log or the hazard file cannot be read.
 """
 
 import argparse

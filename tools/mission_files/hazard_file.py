@@ -95,15 +95,18 @@ class ObjectReader:
             if to_lower(value) in KNOWN_SHAPES:
                 self.fields["shape"] = to_lower(value)
             else:
-                self.warnings.append(field_value(key, value) + " is not a known shape; hint ignored")
+                self.warnings.append(field_value(key, value) +
+                                     " is not a known shape; hint ignored")
         elif key == "width":
             w = parse_number(value)
             if w is not None and w >= 0.0:
                 self.fields["width"] = w
             else:
-                self.warnings.append(field_value(key, value) + " is not a number >= 0; hint ignored")
+                self.warnings.append(field_value(key, value) +
+                                     " is not a number >= 0; hint ignored")
         else:
-            self.warnings.append("unknown key '%s' (value '%s') ignored" % (raw_key, excerpt(value)))
+            self.warnings.append("unknown key '%s' (value '%s') ignored"
+                                 % (raw_key, excerpt(value)))
 
     def check_aspect_window(self):
         lo, hi = self.fields.get("aspect_min"), self.fields.get("aspect_max")

@@ -218,7 +218,8 @@ def report_positions(values, with_type):
 
 
 def read_scores(path, run):
-    """summary.json (None when unreadable); its evaluations fill in vehicles the log has none for."""
+    """summary.json (None when unreadable); its evaluations fill in the vehicles that the log
+    has none for."""
     try:
         data = read_summary(path)
     except (OSError, ValueError) as e:

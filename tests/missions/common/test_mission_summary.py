@@ -116,14 +116,17 @@ with tempfile.TemporaryDirectory() as d:
         s = None
         check(False, "summary.json with nan values is strict JSON: %s" % e)
     if s is not None:
-        check(s["truth"] == {"hazards": 1, "benign": 2}, "an object at x=nan is not truth: %r" % s["truth"])
-        check(s["vehicles"]["archie"]["setting"] == {"width": None, "pd": None, "pfa": 0.5, "pclass": 0.8},
-              "nan and inf settings are missing: %r" % s["vehicles"]["archie"]["setting"])
+        check(s["truth"] == {"hazards": 1, "benign": 2},
+              "an object at x=nan is not truth: %r" % s["truth"])
+        setting = s["vehicles"]["archie"]["setting"]
+        check(setting == {"width": None, "pd": None, "pfa": 0.5, "pclass": 0.8},
+              "nan and inf settings are missing: %r" % setting)
         e = s["evals"][0]
         check(e["norm_score"] == "nan" and e["false_alarms"] == "inf" and e["correct_hazards"] == 1,
               "non-numbers in an evaluation stay text: %r" % e)
         check(s["score"] is None, "a nan score is no score: %r" % s["score"])
-    check("Mission score (archie's report): - / 100" in r.stdout, "nan score shown as -: %s" % r.stdout)
+    check("Mission score (archie's report): - / 100" in r.stdout,
+          "nan score shown as -: %s" % r.stdout)
     check("archie   -/-/0.5/0.8" in r.stdout, "nan setting shown as -: %s" % r.stdout)
 
 if failures:

@@ -10,7 +10,8 @@ import sys
 import tempfile
 import unittest
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "tools"))
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "..", "..", "tools"))   # the package under test
 from mission_files.alog import AlogHeader, read_alog  # noqa: E402
 
 # Lines as format_alog_line writes them: time %.3f padded to 10, variable to 20, source to 16.

@@ -10,7 +10,8 @@ import sys
 import tempfile
 import unittest
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "tools"))
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "..", "..", "tools"))   # the package under test
 from mission_files.hazard_file import parse_hazard_text, read_hazard_file  # noqa: E402
 
 DOC_EXAMPLE = """// gen_hazards --polygon=-150,-75:-150,-400:400,-400:400,-75 --objects=5,hazard

@@ -8,7 +8,8 @@ import sys
 import tempfile
 import unittest
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "tools"))
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "..", "..", "tools"))   # the package under test
 from mission_files.messages import hazard_handover, hazardset_report  # noqa: E402
 from mission_files.run_files import read_cpu, read_summary, summary_evals  # noqa: E402
 

@@ -8,7 +8,8 @@ import os
 import sys
 import unittest
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "tools"))
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "..", "..", "tools"))   # the package under test
 from mission_files.text import (  # noqa: E402
     excerpt, json_number, key_values, parse_bool, parse_number, parse_points, split_key_values,
     to_lower, trim)

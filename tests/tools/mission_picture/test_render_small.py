@@ -123,6 +123,20 @@ class RenderRobustness(unittest.TestCase):
         self.assertIn("run.alog:6: HAZARDSET_EVAL without vname", err)
         self.assertTrue(svg.rstrip().endswith("</svg>"))
 
+    def test_nan_is_not_a_number_in_the_log_or_the_hazard_file(self):
+        log = ("1 NODE_REPORT sim NAME=ann,X=nan,Y=0,SPD=1,HDG=0\n"
+               "nan VIEW_CIRCLE src x=1,y=1\n"
+               "2 VIEW_CIRCLE src x=inf,y=1\n")
+        hazards = HAZARDS + "hazard = x=nan,y=1,label=n,type=hazard\n"
+        result, svg, _ = run_tool(self.dir, log, hazards, ("--no-png",))
+        self.assertEqual(result.returncode, 0, result.stderr.decode())
+        err = result.stderr.decode()
+        self.assertIn("run.alog:1: NODE_REPORT without NAME, X and Y skipped", err)
+        self.assertIn("run.alog:2: malformed line", err)
+        self.assertIn("run.alog:3: VIEW_CIRCLE without x and y skipped", err)
+        self.assertIn("hazards.txt:10: field 'x' value 'nan' is not a number; line rejected", err)
+        self.assertEqual(count(svg, r'class="marker '), 7)   # the file's seven good objects
+
     def test_summary_json_supplies_the_scores(self):
         summary = os.path.join(self.dir, "summary.json")
         with open(summary, "w") as f:
