@@ -12,16 +12,13 @@ Speed: a reader asks for the variables it uses (`wanted`); the time of any other
 converted, so a large log costs one split per line.
 """
 
-import collections
 import re
 
 from .text import parse_number
 
-ENTRY_FIELDS = re.compile(r"[ \t]*([^ \t]+)[ \t]+([^ \t]+)[ \t]+([^ \t]+)[ \t]*(.*)", re.S)
+# TIME VARIABLE SOURCE VALUE, separated by blanks and tabs only.
+ANY_ENTRY = re.compile(r"[ \t]*([^ \t]+)[ \t]+([^ \t]+)[ \t]+([^ \t]+)[ \t]*(.*)", re.S)
 BLANKS = " \t"
-
-AlogEntry = collections.namedtuple("AlogEntry", "time_s variable source value line_no")
-AlogEntry.__doc__ = "One posting of the log; line_no counts from 1."
 
 
 class AlogHeader:
@@ -42,7 +39,8 @@ class AlogHeader:
 
 
 def read_alog(path, wanted=None, on_malformed=None, header=None):
-    """The entries of the log at `path`, in file order, as an iterator of AlogEntry.
+    """The entries of the log at `path`, in file order, as an iterator of tuples
+    (time_s, variable, source, value, line_no), line_no counting from 1.
 
     wanted(variable) -> bool selects the entries (None: all); on_malformed(line_no, reason) is
     called for each malformed line (a short line always, a bad time only on a wanted variable);
@@ -55,23 +53,25 @@ def read_alog(path, wanted=None, on_malformed=None, header=None):
 def _entries(stream, wanted, on_malformed, header):
     with stream:
         for line_no, line in enumerate(stream, 1):
-            if line.endswith("\n"):
+            line = line.rstrip("\n")
+            if line[-1:] == "\r":
                 line = line[:-1]
-            if line.endswith("\r"):
-                line = line[:-1]
-            start = line.lstrip(BLANKS)
-            if not start:
-                continue
-            if start.startswith("%%"):
-                if header is not None:
-                    header.read(start)
-                continue
-            fields = ENTRY_FIELDS.match(line)
-            if fields is None:
-                if on_malformed:
-                    on_malformed(line_no, "expected TIME VARIABLE SOURCE VALUE")
-                continue
-            time_text, variable, source, value = fields.groups()
+            if line.isascii() and line.isprintable():
+                # Printable ASCII has no blank but the space: str.split splits as the C++
+                # reader, at C speed (the other lines take the pattern).
+                fields = line.split(None, 3)
+                if len(fields) < 3 or fields[0].startswith("%%"):
+                    _unusual_line(line, line_no, on_malformed, header)
+                    continue
+                if len(fields) == 3:
+                    fields.append("")
+            else:
+                match = ANY_ENTRY.match(line)
+                if match is None or match.group(1).startswith("%%"):
+                    _unusual_line(line, line_no, on_malformed, header)
+                    continue
+                fields = match.groups()
+            time_text, variable, source, value = fields
             if wanted is not None and not wanted(variable):
                 continue
             time_s = parse_number(time_text)
@@ -79,4 +79,17 @@ def _entries(stream, wanted, on_malformed, header):
                 if on_malformed:
                     on_malformed(line_no, "time '%s' is not a finite number" % time_text)
                 continue
-            yield AlogEntry(time_s, variable, source, value, line_no)
+            yield time_s, variable, source, value, line_no   # a plain tuple: built at C speed
+
+
+def _unusual_line(line, line_no, on_malformed, header):
+    """A blank line, a header line (read into header) or a line without a SOURCE."""
+    start = line.lstrip(BLANKS)
+    if not start:
+        return
+    if start.startswith("%%"):
+        if header is not None:
+            header.read(start)
+        return
+    if on_malformed:
+        on_malformed(line_no, "expected TIME VARIABLE SOURCE VALUE")

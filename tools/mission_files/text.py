@@ -31,13 +31,17 @@ def to_lower(text):
 
 def parse_number(text):
     """A finite float for a number of the grammar above, else None (never raises)."""
-    if text is None:
+    try:
+        value = float(text)   # reads every number of the grammar, and more (below)
+    except (TypeError, ValueError):
         return None
-    text = text.strip(TRIMMED)
-    if NUMBER.fullmatch(text) is None:
+    if not math.isfinite(value):
         return None
-    value = float(text)
-    return value if math.isfinite(value) else None
+    # On printable ASCII without '_', float() reads the grammar and only the words nan and
+    # inf, refused above; other text (other blanks, digits of other scripts) takes the pattern.
+    if text.isascii() and text.isprintable() and "_" not in text:
+        return value
+    return value if NUMBER.fullmatch(text.strip(TRIMMED)) else None
 
 
 def json_number(text):
@@ -67,19 +71,33 @@ def excerpt(text, max_chars=EXCERPT_CHARS):
 
 def split_outside_braces(text, separator=","):
     """Pieces of text split at `separator`, except inside {...} (an unmatched '}' is ignored)."""
+    pieces = text.split(separator)   # at C speed; pieces inside braces are joined back
     if "{" not in text:
-        return text.split(separator)   # the common case, at C speed
-    pieces, start, depth = [], 0, 0
-    for i, c in enumerate(text):
+        return pieces
+    parts, pending, depth = [], None, 0
+    for piece in pieces:
+        pending = piece if pending is None else pending + separator + piece
+        depth = brace_depth_after(piece, depth)
+        if depth == 0:
+            parts.append(pending)
+            pending = None
+    if pending is not None:
+        parts.append(pending)
+    return parts
+
+
+def brace_depth_after(piece, depth):
+    """The brace depth after reading piece from `depth`; a '}' at depth 0 is ignored."""
+    if "}" not in piece:
+        return depth + piece.count("{")
+    if "{" not in piece:
+        return max(0, depth - piece.count("}"))
+    for c in piece:
         if c == "{":
             depth += 1
         elif c == "}" and depth > 0:
             depth -= 1
-        elif c == separator and depth == 0:
-            pieces.append(text[start:i])
-            start = i + 1
-    pieces.append(text[start:])
-    return pieces
+    return depth
 
 
 def split_key_values(text, separator=",", respect_braces=False):
@@ -100,15 +118,23 @@ def key_values(text):
     """`a=1, B={x,y}` -> {'a': '1', 'b': '{x,y}'}: keys in lower case, braces respected, pieces
     without '=' left out, the later of a repeated key kept."""
     out = {}
-    for piece in split_outside_braces(text):   # split_key_values, inlined: the hot path
-        key, equals, value = piece.partition("=")
-        if equals:
-            out[to_lower(key.strip(TRIMMED))] = value.strip(TRIMMED)
+    if text.isascii() and text.isprintable():
+        # The hot path (every drawn posting): the only blank is the space, so str.strip and
+        # str.lower are base::trim and base::to_lower, at C speed.
+        for piece in split_outside_braces(text):
+            key, equals, value = piece.partition("=")
+            if equals:
+                out[key.strip().lower()] = value.strip()
+        return out
+    for key, value, has_equals in split_key_values(text, respect_braces=True):
+        if has_equals:
+            out[to_lower(key)] = value
     return out
 
 
 def parse_point_list(body):
-    """`x1,y1:x2,y2` -> [(x, y), ...], or None when a vertex is not two numbers."""
+    """`x1,y1:x2,y2` -> [(x, y), ...] (more coordinates of a vertex are ignored), or None when
+    a vertex is not two numbers."""
     points = []
     for vertex in body.split(":"):
         coords = vertex.split(",")

@@ -2,6 +2,7 @@
 summary.json, read through tools/mission_files. Input problems are warnings on stderr
 with their place, never a stop."""
 
+import re
 import sys
 
 from mission_files.alog import AlogHeader, read_alog
@@ -169,15 +170,15 @@ def warn_malformed(path, n):
     warn("%s:%d: malformed line skipped (expected TIME VARIABLE SOURCE VALUE)" % (path, n))
 
 
-def wanted(variable):
-    return variable in HANDLERS or variable.startswith(CONFIG_ACK_PREFIX)
+# The variables read: a pattern's C-level match, as it runs once per log line.
+WANTED = re.compile("|".join(re.escape(v) for v in HANDLERS) + "|" + CONFIG_ACK_PREFIX + ".*")
 
 
 def read_log(path, run):
     """Stream the log once; only the variables drawn are parsed (mission_files.alog)."""
     header = AlogHeader()
     try:
-        entries = read_alog(path, wanted, lambda n, _why: warn_malformed(path, n), header)
+        entries = read_alog(path, WANTED.fullmatch, lambda n, _why: warn_malformed(path, n), header)
     except OSError as e:
         warn("cannot read log %s: %s" % (path, e))
         return

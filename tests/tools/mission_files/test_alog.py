@@ -47,14 +47,14 @@ class ReadAlog(unittest.TestCase):
                               header))
 
     def test_entries_as_the_cpp_parser_reads_them(self):
-        entries = {e.variable: e for e in self.read()}
+        entries = {e[1]: e for e in self.read()}
         self.assertEqual(sorted(entries), ["DEPLOY_ALL", "EMPTY_VALUE", "LAST", "NOTE", "TABBED"])
         note = entries["NOTE"]
-        self.assertEqual((note.time_s, note.source, note.value, note.line_no),
+        self.assertEqual((note[0], note[2], note[3], note[4]),
                          (2.5, "pLogLite", "a value  with  blanks ", 6))
-        self.assertEqual(entries["TABBED"].value, "x=1,\ty=2")
-        self.assertEqual(entries["EMPTY_VALUE"].value, "")
-        self.assertEqual(entries["LAST"].value, "=")
+        self.assertEqual(entries["TABBED"][3], "x=1,\ty=2")
+        self.assertEqual(entries["EMPTY_VALUE"][3], "")
+        self.assertEqual(entries["LAST"][3], "=")
 
     def test_nan_and_inf_times_and_short_lines_are_malformed(self):
         self.read()
@@ -68,7 +68,7 @@ class ReadAlog(unittest.TestCase):
 
     def test_unwanted_variables_are_skipped_before_their_time_is_read(self):
         entries = self.read(wanted=lambda v: v == "DEPLOY_ALL")
-        self.assertEqual([e.variable for e in entries], ["DEPLOY_ALL"])
+        self.assertEqual([e[1] for e in entries], ["DEPLOY_ALL"])
         self.assertEqual([n for n, _why in self.malformed], [10])   # only the short line
 
     def test_header(self):
@@ -83,7 +83,7 @@ class ReadAlog(unittest.TestCase):
     def test_bytes_that_are_not_utf8_are_replaced(self):
         with open(self.path, "wb") as f:
             f.write(b"1.0 VAR src caf\xe9\n")
-        self.assertEqual(self.read()[0].value, "caf\ufffd")
+        self.assertEqual(self.read()[0][3], "caf\ufffd")
 
 
 if __name__ == "__main__":
