@@ -16,98 +16,29 @@ and the ground truth (the hazard file), and writes summary.json:
                                             classifications (and how many were right), the
                                             size of the last HAZARDSET_REPORT, hand-overs sent
 
-and prints the score table. Standard library only. Bad lines are skipped and counted; a missing
-evaluation is shown as "-" (the table says which vehicle has none). Exit status 0, or 1 when the
-log or the hazard file cannot be read.
+and prints the score table. Standard library only; the files are read by tools/mission_files
+(the rules of the C++ readers: a value that is not a finite number, `nan` included, is not a
+number; such a field of an evaluation stays text and shows as "-"). Bad lines are skipped and
+counted; a missing evaluation is shown as "-" (the table says which vehicle has none). Exit
+status 0, or 1 when the log or the hazard file cannot be read.
 """
 
 import argparse
 import json
+import os
 import sys
 
-
-def split_fields(text):
-    """`a=1,b=2` -> dict; commas inside {...} do not split (MOOS habit)."""
-    fields, depth, start = {}, 0, 0
-    parts = []
-    for i, c in enumerate(text):
-        if c == '{':
-            depth += 1
-        elif c == '}':
-            depth = max(0, depth - 1)
-        elif c == ',' and depth == 0:
-            parts.append(text[start:i])
-            start = i + 1
-    parts.append(text[start:])
-    for part in parts:
-        if '=' in part:
-            key, value = part.split('=', 1)
-            fields[key.strip().lower()] = value.strip()
-    return fields
-
-
-def number(text):
-    """An int or float for a numeric text, else None."""
-    if text is None:
-        return None
-    for kind in (int, float):
-        try:
-            return kind(text)
-        except ValueError:
-            pass
-    return None
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+from mission_files.alog import read_alog  # noqa: E402  (tools/mission_files)
+from mission_files.hazard_file import read_hazard_file  # noqa: E402
+from mission_files.messages import hazard_handover, hazardset_report  # noqa: E402
+from mission_files.run_files import read_cpu  # noqa: E402
+from mission_files.text import json_number, key_values  # noqa: E402
 
 
 def read_truth(path):
-    truth = {}
-    with open(path, encoding='utf-8', errors='replace') as f:
-        for line in f:
-            line = line.split('//', 1)[0].strip()
-            if '=' not in line:
-                continue
-            key, value = line.split('=', 1)
-            if key.strip().lower() != 'hazard':
-                continue
-            fields = split_fields(value)
-            if 'label' in fields and 'type' in fields:
-                truth[fields['label']] = fields['type'].lower()
-    return truth
-
-
-def read_alog(path):
-    """Yields (time, variable, source, value) for every well-formed line."""
-    bad = 0
-    with open(path, encoding='utf-8', errors='replace') as f:
-        for line in f:
-            if line.startswith('%%') or not line.strip():
-                continue
-            parts = line.rstrip('\n').split(None, 3)
-            if len(parts) < 3:
-                bad += 1
-                continue
-            try:
-                t = float(parts[0])
-            except ValueError:
-                bad += 1
-                continue
-            yield t, parts[1], parts[2], parts[3] if len(parts) > 3 else ''
-    if bad:
-        print('mission_summary: %d malformed log lines skipped' % bad, file=sys.stderr)
-
-
-def read_cpu(path):
-    """[{name, cpu_user_s, cpu_system_s}] from the launcher's cpu.txt ([] if unreadable)."""
-    out = []
-    try:
-        with open(path, encoding='utf-8') as f:
-            for line in f:
-                parts = line.split()
-                if len(parts) == 3 and number(parts[1]) is not None and number(parts[2]) is not None:
-                    out.append({'name': parts[0], 'cpu_user_s': number(parts[1]),
-                                'cpu_system_s': number(parts[2])})
-    except OSError:
-        pass
-    return out
+    """{label: "hazard" or "benign"} of the objects the sensor loads from the hazard file."""
+    return {o['label']: o['type'] for o in read_hazard_file(path).objects}
 
 
 def vehicle_record(vehicles, name):
@@ -120,16 +51,18 @@ def vehicle_record(vehicles, name):
 def summarise(alog, truth, final):
     vehicles, evals = {}, {}
     deploy_s, end_s = None, None
-    for t, var, _source, value in read_alog(alog):
+    malformed = []
+    entries = read_alog(alog, on_malformed=lambda line_no, _why: malformed.append(line_no))
+    for t, var, _source, value, _line_no in entries:
         if var == 'DEPLOY_ALL' and deploy_s is None:
             deploy_s = t
         elif var == 'UHZ_CONFIG_ACK':
-            f = split_fields(value)
+            f = key_values(value)
             if 'vname' in f:
                 vehicle_record(vehicles, f['vname'])['setting'] = {
-                    k: number(f.get(k)) for k in ('width', 'pd', 'pfa', 'pclass')}
+                    k: json_number(f.get(k)) for k in ('width', 'pd', 'pfa', 'pclass')}
         elif var == 'UHZ_DETECTION_REPORT':
-            f = split_fields(value)
+            f = key_values(value)
             if 'vname' in f:
                 v = vehicle_record(vehicles, f['vname'])
                 v['detections'] += 1
@@ -139,35 +72,40 @@ def summarise(alog, truth, final):
                 elif kind == 'benign':
                     v['benign_detections'] += 1
         elif var == 'UHZ_HAZARD_REPORT':
-            f = split_fields(value)
+            f = key_values(value)
             if 'vname' in f:
                 v = vehicle_record(vehicles, f['vname'])
                 v['classifications'] += 1
                 if truth.get(f.get('label')) == f.get('type', '').lower():
                     v['correct_classifications'] += 1
         elif var == 'HAZARDSET_REPORT':
-            parts = [p for p in value.split('#') if p]
-            source = next((p.split('=', 1)[1] for p in parts if p.startswith('source=')), None)
+            source, labels = hazardset_report(value)
             if source:
-                vehicle_record(vehicles, source)['reported'] = sum(
-                    1 for p in parts if 'label=' in p)
+                vehicle_record(vehicles, source)['reported'] = len(labels)
         elif var == 'HAZARD_HANDOVER':
-            source = value.split('#', 1)[0]
-            if source.startswith('source='):
-                vehicle_record(vehicles, source[len('source='):])['handovers_sent'] += 1
+            source = hazard_handover(value)[0].get('source')
+            if source:
+                vehicle_record(vehicles, source)['handovers_sent'] += 1
         elif var == 'HAZARDSET_EVAL':
-            f = split_fields(value)
+            f = key_values(value)
             if 'vname' in f:
-                record = {k: (number(v) if number(v) is not None else v) for k, v in f.items()}
+                # A field that is not a number (`nan` included) stays text: summary.json is
+                # strict JSON, and the table shows "-" for it.
+                record = {k: (json_number(v) if json_number(v) is not None else v)
+                          for k, v in f.items()}
                 evals[f['vname']] = record
                 if f['vname'] in final:
                     end_s = t
+    if malformed:
+        print('mission_summary: %d malformed log lines skipped' % len(malformed), file=sys.stderr)
     sim_s = (end_s - deploy_s) if (end_s is not None and deploy_s is not None) else None
     return vehicles, evals, sim_s
 
 
 def fmt(value, spec='%g'):
-    return '-' if value is None else spec % value
+    """A number in `spec`; "-" for a missing value or one that is not a number."""
+    numeric = isinstance(value, (int, float)) and not isinstance(value, bool)
+    return spec % value if numeric else '-'
 
 
 def table(summary):
@@ -214,6 +152,7 @@ def main(argv):
         return 1
     last_final = a.final[-1] if a.final else None
     score = evals.get(last_final, {}).get('norm_score') if last_final else None
+    score = None if isinstance(score, str) else score
     summary = {
         'title': a.title, 'mission': a.mission, 'seed': a.seed, 'warp': a.warp,
         'moosdb': a.moosdb, 'sim_seconds': sim_s, 'real_seconds': a.real_seconds,

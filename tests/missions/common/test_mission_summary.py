@@ -2,7 +2,9 @@
 """missions/common/mission_summary.py on a synthetic run: summary.json's fields (counts split by
 ground truth, the acknowledged setting, the latest evaluation per vehicle as numbers, simulated
 time from DEPLOY_ALL to the final vehicle's evaluation, CPU per process), the printed score
-table, malformed lines skipped, and a clean failure for a missing log.
+table, malformed lines skipped, and a clean failure for a missing log; `nan` is not a number
+(the base grammar, include/base/text.hpp): not a time, not a setting, not a score, and
+summary.json stays strict JSON.
 
 Usage: test_mission_summary.py PATH/TO/mission_summary.py
 """
@@ -83,6 +85,49 @@ with tempfile.TemporaryDirectory() as d:
     missing = subprocess.run([sys.executable, SCRIPT, "--alog", os.path.join(d, "none.alog"),
                               "--hazards", hazards, "--out", out], capture_output=True, text=True)
     check(missing.returncode == 1 and "none.alog" in missing.stderr, "a missing log: exit 1, named")
+
+NAN_ALOG = """%% LOG FILE:       nan.alog
+5.000      DEPLOY_ALL           launch-1         true
+nan        DEPLOY_ALL           launch-1         true
+6.000      UHZ_CONFIG_ACK       uFldHazardSensor vname=archie,width=nan,pd=inf,pfa=0.5,pclass=0.8
+20.100     HAZARDSET_EVAL       uFldHazardMetric vname=archie,norm_score=nan,missed_hazards=0,correct_hazards=1,false_alarms=inf
+"""
+
+
+def strict_json(path):
+    """The JSON at path, failing on NaN and Infinity (not JSON, though Python writes them)."""
+    def refuse(word):
+        raise ValueError("not JSON: " + word)
+    with open(path) as f:
+        return json.load(f, parse_constant=refuse)
+
+
+with tempfile.TemporaryDirectory() as d:
+    alog, hazards, out = (os.path.join(d, n) for n in ("nan.alog", "h.txt", "s.json"))
+    open(alog, "w").write(NAN_ALOG)
+    open(hazards, "w").write(HAZARDS + "hazard = x=nan,y=1,label=n1,type=hazard\n")
+    r = subprocess.run([sys.executable, SCRIPT, "--alog", alog, "--hazards", hazards, "--out", out,
+                        "--final", "archie"], capture_output=True, text=True)
+    check(r.returncode == 0, "nan run: exit 0: %s" % r.stderr)
+    check("1 malformed log lines skipped" in r.stderr, "a time of nan is malformed: %r" % r.stderr)
+    try:
+        s = strict_json(out)
+    except ValueError as e:
+        s = None
+        check(False, "summary.json with nan values is strict JSON: %s" % e)
+    if s is not None:
+        check(s["truth"] == {"hazards": 1, "benign": 2},
+              "an object at x=nan is not truth: %r" % s["truth"])
+        setting = s["vehicles"]["archie"]["setting"]
+        check(setting == {"width": None, "pd": None, "pfa": 0.5, "pclass": 0.8},
+              "nan and inf settings are missing: %r" % setting)
+        e = s["evals"][0]
+        check(e["norm_score"] == "nan" and e["false_alarms"] == "inf" and e["correct_hazards"] == 1,
+              "non-numbers in an evaluation stay text: %r" % e)
+        check(s["score"] is None, "a nan score is no score: %r" % s["score"])
+    check("Mission score (archie's report): - / 100" in r.stdout,
+          "nan score shown as -: %s" % r.stdout)
+    check("archie   -/-/0.5/0.8" in r.stdout, "nan setting shown as -: %s" % r.stdout)
 
 if failures:
     print("FAILED:\n  " + "\n  ".join(failures))
