@@ -6,6 +6,7 @@
 // Public calls only touch the shared state under `mutex_` and write one byte into the self-pipe
 // to wake the thread. The thread never calls user code while holding `mutex_`.
 // Lock order: mutex_ (this client) before the Comms base's book lock (replay_messages()).
+// The receiving half (packets to the inbox, the skew) is in tcp_client_receive.cpp.
 
 #include "moos/tcp_client.hpp"
 
@@ -31,20 +32,11 @@ namespace moos {
 
 namespace {
 
-/// What a message costs the inbox, in bytes: its strings plus a fixed part for the rest.
-std::size_t inbox_cost(const Message& msg) {
-  constexpr std::size_t kFixedPart = sizeof(Message);
-  return kFixedPart + msg.key.size() + msg.sval.size() + msg.source.size() +
-         msg.source_aux.size() + msg.community.size();
-}
-
 /// Bytes read per recv call, and recv calls per wake-up (1 MiB) before sending gets a turn.
 constexpr std::size_t kReadChunkBytes = 64 * 1024;
 constexpr int kMaxReadChunksPerWake = 16;
 /// The hostname token of WELCOME's source aux (spec 1.6).
 constexpr std::string_view kHostnameToken = "hostname";
-/// Skew filter weight of the previous value (spec 4.4).
-constexpr double kSkewMemory = 0.9;
 constexpr double kMsPerSecond = 1000.0;
 /// A longest poll wait, so a missed wake-up can never stall the thread for long.
 constexpr double kMaxPollWait_real_s = 0.5;
@@ -564,59 +556,6 @@ bool TcpClient::process_buffered() {
     }
     handle_packet(std::move(messages));
   }
-}
-
-void TcpClient::handle_packet(std::vector<Message> messages) {
-  if (messages.empty()) return;
-  auto begin = messages.begin();
-  if (begin->type == msg_type::kTiming) {  // consumed by the comms layer (spec 4.3)
-    refine_skew(*begin);
-    ++begin;
-  }
-  bool added = false;
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    for (auto it = begin; it != messages.end(); ++it) {
-      if (it->type == msg_type::kNull || it->type == msg_type::kTiming) continue;
-      inbox_bytes_ += inbox_cost(*it);
-      inbox_.push_back(std::move(*it));
-      added = true;
-    }
-    enforce_inbox_bounds();
-  }
-  if (added) fire_on_mail();
-}
-
-void TcpClient::enforce_inbox_bounds() {
-  if (inbox_.size() <= options_.max_inbox_messages && inbox_bytes_ <= options_.max_inbox_bytes)
-    return;
-  const std::size_t keep_messages = std::max<std::size_t>(1, options_.max_inbox_messages / 4 * 3);
-  const std::size_t keep_bytes = options_.max_inbox_bytes / 4 * 3;
-  std::size_t drop = 0;
-  while (drop < inbox_.size() &&
-         (inbox_.size() - drop > keep_messages || inbox_bytes_ > keep_bytes)) {
-    inbox_bytes_ -= inbox_cost(inbox_[drop]);
-    ++drop;
-  }
-  inbox_.erase(inbox_.begin(), inbox_.begin() + static_cast<std::ptrdiff_t>(drop));
-  count_mail_dropped(drop);
-}
-
-void TcpClient::refine_skew(const Message& echo) {
-  bool async = false;
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    async = server_async_;
-  }
-  if (async) server_delay_s_ = std::max(0.0, echo.dval2);
-  if (!time_correction_) return;
-  // Spec 4.4: measured = Ts - (Tq + Tr) / 2; exponential filter unless the skew is exactly 0.
-  const double tq = echo.time;
-  const double ts = echo.dval;
-  const double tr = local_time();
-  const double measured = ts - (tq + tr) / 2.0;
-  const double current = skew_s_.load();
-  skew_s_ = current == 0.0 ? measured : kSkewMemory * current + (1.0 - kSkewMemory) * measured;
 }
 
 }  // namespace moos

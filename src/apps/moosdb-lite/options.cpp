@@ -26,12 +26,21 @@ constexpr const char* kOneMode =
 constexpr const char* kNoDns = "no DNS lookups are made";
 constexpr const char* kNoWebServer = "the web server is not implemented";
 constexpr const char* kNoDelay = "TCP_NODELAY is always set";
+constexpr const char* kNoSuicide = "suicide monitoring is not implemented (stop moosdb-lite with a signal)";
+constexpr const char* kNoBoost = "moosdb-lite runs at normal priority";
 /// Seconds of silence before a client is dropped: 0 means never (ClientTimeout, --moos_timeout).
 constexpr moos::Range kClientTimeoutRange_s = moos::kNonNegative;
 
 bool is_ipv4_literal(const std::string& text) {
   in_addr addr{};
   return inet_pton(AF_INET, text.c_str(), &addr) == 1;
+}
+
+// The reference MOOSDB prints its version with --moos_print_version (MOOSDB --help).
+moos::SwitchRule version_row() {
+  moos::SwitchRule r = moos::switch_rule("--version", moos::SwitchKind::kFlag, "");
+  r.aliases = {"--moos_print_version"};
+  return r;
 }
 
 moos::SwitchRule bind_row() {
@@ -94,10 +103,13 @@ const std::vector<OptionDoc>& option_docs() {
                                  base::format_g(kDefaultBannerTimeout_s) + ")"},
       {"--handshake-timeout=S", "seconds to send the identification after the banner (default " +
                                     base::format_g(kDefaultHandshakeTimeout_s) + ")"},
+      {"--moos_file=FILE", "mission file, as the first free argument"},
       {"--help, -h", "print this help and exit"},
-      {"--version", "print the version and exit"},
-      {"--response= -s --single_threaded -d --dns --tcpnodelay --audit_port= --event_log= "
-       "--webserver_port=",
+      {"--version, --moos_print_version", "print the version and exit"},
+      {"--response= -s --single_threaded -d --dns -b --moos_boost --tcpnodelay --audit_port= "
+       "--event_log= --webserver_port= --warning_latency= --print_heart_beat --moos_no_colour "
+       "--moos_suicide_channel= --moos_suicide_port= --moos_suicide_phrase= "
+       "--moos_suicide_disable --moos_suicide_print",
        "reference MOOSDB switches: accepted and ignored, with a note"},
   };
   return table;
@@ -139,8 +151,9 @@ const moos::SwitchTable& switch_table() {
                     moos::kPositive),
         switch_rule("--handshake-timeout", SwitchKind::kNumber, "expected seconds > 0",
                     moos::kPositive),
+        switch_rule("--moos_file", SwitchKind::kText, kEmptyFileName),
         moos::help_switch_rule(),
-        switch_rule("--version", SwitchKind::kFlag, ""),
+        version_row(),
         // Switches of the reference MOOSDB (spec 5.11) that moosdb-lite accepts and ignores.
         switch_rule("--response", SwitchKind::kIgnored,
                     "per-client response delays are not implemented"),
@@ -153,6 +166,16 @@ const moos::SwitchTable& switch_table() {
         switch_rule("--event_log", SwitchKind::kIgnored,
                     "the event log is not implemented; see --log"),
         switch_rule("--webserver_port", SwitchKind::kIgnored, kNoWebServer),
+        switch_rule("-b", SwitchKind::kIgnored, kNoBoost),
+        switch_rule("--moos_boost", SwitchKind::kIgnored, kNoBoost),
+        switch_rule("--warning_latency", SwitchKind::kIgnored, "latency warnings are not implemented"),
+        switch_rule("--print_heart_beat", SwitchKind::kIgnored, "no heartbeat is printed"),
+        switch_rule("--moos_no_colour", SwitchKind::kIgnored, "moosdb-lite prints no colour"),
+        switch_rule("--moos_suicide_channel", SwitchKind::kIgnored, kNoSuicide),
+        switch_rule("--moos_suicide_port", SwitchKind::kIgnored, kNoSuicide),
+        switch_rule("--moos_suicide_phrase", SwitchKind::kIgnored, kNoSuicide),
+        switch_rule("--moos_suicide_disable", SwitchKind::kIgnored, kNoSuicide),
+        switch_rule("--moos_suicide_print", SwitchKind::kIgnored, kNoSuicide),
     };
     t.bad_value = [](const std::string& arg, const moos::SwitchRule& r) {
       return arg + ": " + r.problem;
@@ -184,7 +207,9 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
   cli.handshake_timeout_s = v.number("--handshake-timeout");
   cli.notes = v.notes;
   cli.errors = v.errors;
-  // pAntler passes `<mission> <alias>`; the DB has no use for the alias.
+  // pAntler passes `<mission> <alias>`; the DB has no use for the alias. The reference MOOSDB
+  // also takes the mission as --moos_file; a free argument wins.
+  cli.mission_file = v.text("--moos_file");
   if (!v.free.empty()) cli.mission_file = v.free[0];
   if (v.free.size() > 1) cli.alias = v.free[1];
   for (std::size_t i = 2; i < v.free.size(); ++i)

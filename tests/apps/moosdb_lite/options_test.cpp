@@ -130,6 +130,31 @@ TEST(Options, BadSwitchesAreErrorsNamingTheArgument) {
   EXPECT_EQ(cli.alias, "alias");
 }
 
+TEST(Options, EverySwitchOfTheReferenceMoosdbHelpWorksOrIsIgnoredWithANote_Issue12) {
+  // MOOSDB --help (core-moos), switch by switch.
+  const std::vector<std::string> ignored = {
+      "--moos_suicide_channel=127.0.0.1", "--moos_suicide_port=9020", "--moos_suicide_phrase=x",
+      "--moos_suicide_disable", "--moos_suicide_print", "--moos_no_colour", "-d", "--dns", "-s",
+      "--single_threaded", "-b", "--moos_boost", "--response=x_app:20,*_instrument:0",
+      "--warning_latency=50", "--tcpnodelay", "--audit_port=9020", "--event_log=e.txt",
+      "--print_heart_beat", "--webserver_port=9080"};
+  std::vector<std::string> args = ignored;
+  args.insert(args.end(), {"--moos_file=m.moos", "--moos_port=9001", "--moos_time_warp=10",
+                           "--moos_community=shore", "--moos_timeout=4"});
+  const CommandLine cli = parse_command_line(args);
+  EXPECT_EQ(cli.errors, std::vector<std::string>{});
+  EXPECT_EQ(cli.notes.size(), ignored.size());
+  for (std::size_t i = 0; i < ignored.size() && i < cli.notes.size(); ++i)
+    EXPECT_EQ(cli.notes[i].rfind(ignored[i] + " ignored: ", 0), 0u) << cli.notes[i];
+  EXPECT_EQ(cli.mission_file, "m.moos");
+  EXPECT_EQ(cli.port, 9001);
+  EXPECT_EQ(cli.time_warp, 10.0);
+  EXPECT_EQ(cli.community, "shore");
+  EXPECT_EQ(cli.client_timeout_s, 4.0);
+  EXPECT_TRUE(parse_command_line({"--moos_print_version"}).version);
+  EXPECT_EQ(parse_command_line({"first.moos", "--moos_file=second.moos"}).mission_file, "first.moos");
+}
+
 TEST(Options, HelpAndVersionFlags) {
   EXPECT_TRUE(parse_command_line({"--help"}).help);
   EXPECT_TRUE(parse_command_line({"-h"}).help);
