@@ -143,7 +143,7 @@ int run(const Options& options, std::ostream& out, std::ostream& err) {
   // Hazard files are named relative to the mission file.
   // LatOrigin/LongOrigin place LAT/LON-only node reports and lat/lon hazard lines (geodesy).
   hazard::Driver driver(app_support::make_sensor_engine(
-      block->lines, mission->directory(), hazard::mission_origin(*mission), options.seed,
+      block->lines, mission->directory(), app_support::mission_origin(*mission), options.seed,
       app_support::operating_system_seed));
   const double tick_hz = driver.engine().config().app_tick_hz;
   const hazard::SeedChoice& seed = driver.engine().seed();

@@ -36,7 +36,7 @@ HazardSensor::HazardSensor(HazardSensorOptions options)
 
 bool HazardSensor::on_start_up() {
   driver_.emplace(app_support::make_sensor_engine(config_lines(), settings().mission_directory,
-                                                  hazard::mission_origin(settings()),
+                                                  app_support::mission_origin(settings()),
                                                   std::nullopt, options_.os_seed));
   for (const hazard::InterfaceVariable& v : hazard::Engine::subscriptions()) {
     register_variable(std::string(v.name));
