@@ -18,9 +18,10 @@
 // Scale: a sensing vehicle queries the spatial grid for its swath's bounding box only; per-
 // (vehicle, object) state exists only for objects that vehicle has had in its swath.
 // Rejected alternative: evaluating every object per vehicle per iteration (the original, spec 17).
-// Layout: one file per rule, each named after it: engine.cpp (the vehicles and step's table of
-// contents), interface.cpp, width_choice.cpp (settings), sensing.cpp, detection.cpp,
-// classification.cpp, visuals.cpp, invariants.cpp.
+// Layout: one file per rule, each named after it: engine.cpp (the vehicles, start-up and step's
+// table of contents), settings.cpp (the width choice, who holds a width, configuration requests,
+// the options summary), sensing.cpp, detection.cpp, classification.cpp, visuals.cpp,
+// interface.cpp, invariants.cpp.
 
 #include <cstdint>
 #include <functional>
