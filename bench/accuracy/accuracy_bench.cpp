@@ -37,6 +37,7 @@
 
 #include "hazard/driver.hpp"
 #include "hazard/geodesy.hpp"
+#include "scenario/config_text.hpp"
 #include "base/text.hpp"
 
 namespace {
@@ -200,20 +201,7 @@ const Method kMethods[] = {{"sampling", ""},
                            {"sweep", "swath_sweep = true\n"}};
 
 std::vector<hazard::ConfigEntry> entries(const std::string& text) {
-  std::vector<hazard::ConfigEntry> out;
-  std::size_t start = 0;
-  int line = 0;
-  while (start < text.size()) {
-    const auto end = text.find('\n', start);
-    const std::string l = text.substr(start, end == std::string::npos ? end : end - start);
-    start = end == std::string::npos ? text.size() : end + 1;
-    ++line;
-    const auto eq = l.find('=');
-    if (eq == std::string::npos) continue;
-    out.push_back({std::string(base::trim(l.substr(0, eq))),
-                   std::string(base::trim(l.substr(eq + 1))), "bench.moos", line});
-  }
-  return out;
+  return hazard::config_entries(text, "bench.moos");
 }
 
 struct SensingResult {

@@ -14,6 +14,7 @@
 #include "hazard/driver.hpp"
 #include "hazard/engine.hpp"
 #include "hazard/messages/node_report.hpp"
+#include "scenario/config_text.hpp"
 #include "base/text.hpp"
 
 namespace hazard::testing {
@@ -21,18 +22,7 @@ namespace hazard::testing {
 /// "key = value" lines (one per line, `//` comments and blank lines skipped) as config entries
 /// of file "test.moos".
 inline std::vector<ConfigEntry> entries(std::string_view block) {
-  std::vector<ConfigEntry> out;
-  int line = 0;
-  for (std::string_view raw : base::split_trimmed(block, '\n')) {
-    ++line;
-    std::string_view text = raw.substr(0, raw.find("//"));
-    text = base::trim(text);
-    const auto eq = text.find('=');
-    if (text.empty() || eq == std::string_view::npos) continue;
-    out.push_back({std::string(base::trim(text.substr(0, eq))), std::string(base::trim(text.substr(eq + 1))),
-                   "test.moos", line});
-  }
-  return out;
+  return config_entries(block, "test.moos");
 }
 
 /// Loads a block; `files` maps hazard_file paths to their text.
