@@ -34,6 +34,8 @@ std::vector<std::string> Engine::invariant_violations() const {
     }
     if (v.setting) {
       const SensorSetting& s = *v.setting;
+      // Every setting comes from a configuration or sensor request, which starts the hold.
+      check(v.last_width_claim_s.has_value(), who + "a setting without a width claim");
       check(s.option < config_.options.size(), who + "option index");
       if (s.option < config_.options.size()) {
         check(s.width_m == config_.options.option(s.option).width_m, who + "width of option");
