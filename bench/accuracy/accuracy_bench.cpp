@@ -231,7 +231,7 @@ SensingResult sense(const Track& track, const std::vector<Object>& objects,
             [&](const std::string&) { return field; }),
         hazard::SeedChoice{1, hazard::SeedSource::kCommandLine});
     std::vector<int> events(objects.size(), 0);
-    driver.engine().set_decision_observer([&](const hazard::Decision& d) {
+    driver.set_decision_observer([&](const hazard::Decision& d) {
       events[static_cast<std::size_t>(std::stoi(std::string(d.label.substr(1))))] += 1;
     });
     driver.start(0);

@@ -18,8 +18,10 @@
 // Pure like the engine: no I/O, no clock, no sockets.
 
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <string_view>
+#include <utility>
 
 #include "hazard/config.hpp"
 #include "hazard/engine.hpp"
@@ -59,9 +61,12 @@ class Driver {
 
   /// The last time given to the engine; nullopt before the first call.
   std::optional<double> last_time_s() const { return last_time_s_; }
+  /// The engine, to inspect (its mail handlers are the driver's alone).
   const Engine& engine() const { return engine_; }
-  /// For observers (Engine::set_decision_observer); mail and time go through the driver.
-  Engine& engine() { return engine_; }
+  /// Engine::set_decision_observer.
+  void set_decision_observer(std::function<void(const Decision&)> observer) {
+    engine_.set_decision_observer(std::move(observer));
+  }
 
  private:
   /// `now_s` raised to the last time given, and recorded as the new last time.

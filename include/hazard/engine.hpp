@@ -85,15 +85,6 @@ class Engine {
   /// One iteration at `now_s`.
   Outputs step(double now_s);
 
-  // Mail, one handler per message, already parsed (Driver::deliver parses and dispatches).
-  void handle_node_report(const NodeReport& report, double now_s, Outputs& out);
-  void handle_sensor_request(const SensorRequest& request, double now_s);
-  void handle_config_request(const ConfigRequest& request, double now_s, Outputs& out);
-  void handle_classify_request(const ClassifyRequest& request, double now_s, Outputs& out);
-  void handle_sensor_clear(const SensorClear& request, Outputs& out);
-  /// A viewer connected: the object markers again (only with the hazard_markers effect).
-  void handle_viewer_connect(Outputs& out) const;
-
   static const std::vector<InterfaceVariable>& subscriptions();
   static const std::vector<InterfaceVariable>& publications();
 
@@ -122,6 +113,17 @@ class Engine {
   }
 
  private:
+  // Mail, one handler per message, already parsed: Driver::deliver, the one entry point for
+  // mail, clamps its time, parses and dispatches (driver.hpp).
+  friend class Driver;
+  void handle_node_report(const NodeReport& report, double now_s, Outputs& out);
+  void handle_sensor_request(const SensorRequest& request, double now_s);
+  void handle_config_request(const ConfigRequest& request, double now_s, Outputs& out);
+  void handle_classify_request(const ClassifyRequest& request, double now_s, Outputs& out);
+  void handle_sensor_clear(const SensorClear& request, Outputs& out);
+  /// A viewer connected: the object markers again (only with the hazard_markers effect).
+  void handle_viewer_connect(Outputs& out) const;
+
   void clear_queue(std::string_view vname, Outputs& out);
   void post_object_visuals(Outputs& out) const;
 

@@ -24,7 +24,7 @@ ReplayRun replay(const Scenario& s, double tick_hz, std::uint64_t seed = 2024) {
   hazard::Driver driver(load_configuration(s.config, [](const std::string&) { return std::nullopt; }),
                 SeedChoice{seed, SeedSource::kRandomSeed});
   ReplayRun run;
-  driver.engine().set_decision_observer(
+  driver.set_decision_observer(
       [&](const Decision& d) { run.tuples.push_back(testing::decision_tuple(d)); });
   driver.start(0);
   play_mail(driver, s.mail, tick_hz, s.end_time_s, {}, [&](const Outputs& out) {

@@ -51,7 +51,7 @@ SceneRun run(const Scene& scene, const std::string& switch_line) {
                                    [](const std::string&) { return std::nullopt; }, scene.origin),
                 SeedChoice{77, SeedSource::kCommandLine});
   SceneRun r;
-  driver.engine().set_decision_observer(
+  driver.set_decision_observer(
       [&](const Decision& d) { r.decisions.push_back(testing::decision_tuple(d)); });
   r.text = serialise(driver.start(0).outputs);
   constexpr double kTick_hz = 4.0;

@@ -58,7 +58,7 @@ TEST(NumericsField, AMillionObjectsOnOneSpotAreEachSensedOncePerPass) {
   at(1300, -675, 4);
   EXPECT_TRUE(v.inside.empty());
   std::uint32_t max_pass = 0, second_passes = 0;
-  driver.engine().set_decision_observer([&](const Decision& d) {
+  driver.set_decision_observer([&](const Decision& d) {
     max_pass = std::max(max_pass, d.pass);
     second_passes += d.pass == 2;
   });

@@ -148,7 +148,7 @@ class Driver {
   }
 
   hazard::Driver driver;
-  Engine& engine;  ///< the driver's, for inspection and observers
+  const Engine& engine;  ///< the driver's, for inspection
   double now;
   Outputs all;
 };

@@ -191,7 +191,7 @@ TEST(SensingTrack, TurningSegmentsMissOrAddOnlyObjectsWithinTheStatedBound) {
 
 struct Decisions {
   std::vector<std::string> tuples;  // vehicle label pass outcome
-  void attach(Engine& e) {
+  void attach(hazard::Driver& e) {
     e.set_decision_observer([this](const Decision& d) {
       tuples.push_back(std::string(d.vehicle) + " " + std::string(d.label) + " " +
                        std::to_string(d.pass) + " " + (d.outcome ? "1" : "0"));
@@ -264,7 +264,7 @@ std::vector<std::string> replay_mower(const Mower& m, const std::string& mode, d
   }
   hazard::Driver driver(testing::setup_from(block), SeedChoice{3, SeedSource::kCommandLine});
   Decisions r;
-  r.attach(driver.engine());
+  r.attach(driver);
   driver.start(0);
   driver.deliver(Mail{"UHZ_CONFIG_REQUEST", "vname=v,width=10,pd=0.8", 0});
   play_mail(driver, m.mail, hz, m.end_s + 1);
@@ -374,7 +374,7 @@ TEST(SensingTrackEngine, SweepingTheReferenceSurveyFindsWhatSamplingFinds_Style1
     hazard::Driver driver(load_configuration(config, [](const std::string&) { return std::nullopt; }),
                   SeedChoice{2024, SeedSource::kRandomSeed});
     Decisions r;
-    r.attach(driver.engine());
+    r.attach(driver);
     driver.start(0);
     play_mail(driver, s.mail, 4.0, s.end_time_s);
     std::sort(r.tuples.begin(), r.tuples.end());
