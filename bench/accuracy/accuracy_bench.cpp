@@ -403,7 +403,8 @@ MonteCarloScene monte_carlo_scene(double pd) {
   for (int k = 0; k * 0.25 <= kMonteCarloEnd_s; ++k) {
     const double t = k * 0.25;
     if (k % 400 == 0) s.mail.push_back({t, {"UHZ_SENSOR_REQUEST", "vname=v"}});
-    s.mail.push_back({t, {"NODE_REPORT", "NAME=v,X=" + fmt(-20 + 1.5 * t, 2) + ",Y=0,SPD=1.5,HDG=90"}});
+    const std::string pose = "NAME=v,X=" + fmt(-20 + 1.5 * t, 2) + ",Y=0,SPD=1.5,HDG=90";
+    s.mail.push_back({t, {"NODE_REPORT", pose}});
   }
   return s;
 }

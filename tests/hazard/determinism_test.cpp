@@ -21,8 +21,9 @@ struct ReplayRun {
 // Replays a scenario the way hazard_replay does: mail stamped at or before an iteration's time
 // is delivered before it; iterations at `tick_hz`.
 ReplayRun replay(const Scenario& s, double tick_hz, std::uint64_t seed = 2024) {
-  hazard::Driver driver(load_configuration(s.config, [](const std::string&) { return std::nullopt; }),
-                SeedChoice{seed, SeedSource::kRandomSeed});
+  hazard::Driver driver(
+      load_configuration(s.config, [](const std::string&) { return std::nullopt; }),
+      SeedChoice{seed, SeedSource::kRandomSeed});
   ReplayRun run;
   driver.set_decision_observer(
       [&](const Decision& d) { run.tuples.push_back(testing::decision_tuple(d)); });

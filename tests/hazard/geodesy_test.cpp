@@ -137,8 +137,9 @@ TEST(Geodesy, LatLonOnlyNodeReportIsPlacedAroundTheMissionOrigin) {
   driver.start(0);
   double lat, lon;
   geodesic_point(120.0, 30.0, lat, lon);
-  const Outputs out = driver.deliver(Mail{
-      "NODE_REPORT", "NAME=v,LAT=" + base::fmt(lat, 10) + ",LON=" + base::fmt(lon, 10) + ",SPD=1,HDG=10", 0}).outputs;
+  const std::string report =
+      "NAME=v,LAT=" + base::fmt(lat, 10) + ",LON=" + base::fmt(lon, 10) + ",SPD=1,HDG=10";
+  const Outputs out = driver.deliver(Mail{"NODE_REPORT", report, 0}).outputs;
   EXPECT_TRUE(out.run_warnings.empty());
   const glm::dvec2 expected = LocalProjection(kOrigin, GeodesyMode::kEnu).to_local(
       *base::parse_number(base::fmt(lat, 10)), *base::parse_number(base::fmt(lon, 10)));
@@ -158,7 +159,8 @@ TEST(Geodesy, XAndYWinOverLatAndLon_Spec6) {
 TEST(Geodesy, BadLatitudeOrLongitudeIsAWarningNamingTheField) {
   hazard::Driver driver(with_origin(quiet_block(), origin_of(kOrigin.lat_deg, kOrigin.lon_deg)),
                 SeedChoice{1, SeedSource::kCommandLine});
-  Outputs out = driver.deliver(Mail{"NODE_REPORT", "NAME=v,LAT=95,LON=-70,SPD=1,HDG=10", 0}).outputs;
+  Outputs out =
+      driver.deliver(Mail{"NODE_REPORT", "NAME=v,LAT=95,LON=-70,SPD=1,HDG=10", 0}).outputs;
   EXPECT_TRUE(contains(out.run_warnings, "field 'LAT' value '95' is outside [-90, 90]"));
   out = driver.deliver(Mail{"NODE_REPORT", "NAME=v,LAT=42,LON=400,SPD=1,HDG=10", 0}).outputs;
   EXPECT_TRUE(contains(out.run_warnings, "field 'LON' value '400' is outside [-180, 360]"));
@@ -178,7 +180,8 @@ TEST(Geodesy, WithoutAUsableOriginLatLonOnlyInputIsRejectedWithTheReason_T9) {
        "the mission's LatOrigin is given without LongOrigin"},
   };
   for (const auto& [origin, reason] : cases) {
-    hazard::Driver driver(with_origin(quiet_block(), origin), SeedChoice{1, SeedSource::kCommandLine});
+    hazard::Driver driver(with_origin(quiet_block(), origin),
+                          SeedChoice{1, SeedSource::kCommandLine});
     EXPECT_FALSE(driver.engine().effects().geodesy) << reason;
     const Outputs out = driver.deliver(Mail{"NODE_REPORT", report, 0}).outputs;
     ASSERT_EQ(out.run_warnings.size(), 1u) << reason;

@@ -371,8 +371,9 @@ TEST(SensingTrackEngine, SweepingTheReferenceSurveyFindsWhatSamplingFinds_Style1
   for (int sweep = 0; sweep < 2; ++sweep) {
     std::vector<ConfigEntry> config = s.config;
     if (sweep) config.push_back({"swath_sweep", "true", "scenario.moos", 99});
-    hazard::Driver driver(load_configuration(config, [](const std::string&) { return std::nullopt; }),
-                  SeedChoice{2024, SeedSource::kRandomSeed});
+    hazard::Driver driver(
+        load_configuration(config, [](const std::string&) { return std::nullopt; }),
+        SeedChoice{2024, SeedSource::kRandomSeed});
     Decisions r;
     r.attach(driver);
     driver.start(0);

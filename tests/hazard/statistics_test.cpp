@@ -49,7 +49,8 @@ TEST(Statistics, DetectionRatesMatchTheModel_Manual3_1_6_1_7_1_D5) {
   std::map<char, int> detected;
   for (int pass = 0; pass < kPasses; ++pass) {
     for (const double x : {0.0, 1000.0}) {  // over the field, then away
-      driver.deliver(Mail{"NODE_REPORT", testing::node_report("v", x, 0, 90), static_cast<double>(pass)});
+      const double t = pass;
+      driver.deliver(Mail{"NODE_REPORT", testing::node_report("v", x, 0, 90), t});
       const Outputs out = driver.step(pass).outputs;
       for (const auto& r : testing::values_of(out, "UHZ_DETECTION_REPORT_V")) {
         ++detected[label_of(r)[0]];
@@ -81,7 +82,8 @@ TEST(Statistics, ClassificationRatesMatchTheModel_Manual3_2_6_2_7_2) {
   std::string field = category_field(50, {{'h', "type=hazard"}, {'b', "type=benign"}});
   field += category_field(160, {{'r', "type=benign,hr=0.3"}});
   field += category_field(100, {{'a', "type=hazard," + kAspect}});
-  hazard::Driver driver(testing::setup_from(kBlock + field), SeedChoice{77, SeedSource::kCommandLine});
+  hazard::Driver driver(testing::setup_from(kBlock + field),
+                        SeedChoice{77, SeedSource::kCommandLine});
   std::vector<std::string> names;
   for (int i = 0; i < kVehicles; ++i) names.push_back("v" + std::to_string(i));
   double t = 0;

@@ -35,9 +35,9 @@ struct Scenario {
 /// The survey with node reports at `node_report_hz` (poses on the same straight tracks).
 Scenario reference_survey(double node_report_hz);
 
-/// Plays `mail` (sorted by time) through `driver` in the caller's loop of engine.hpp: iterations at
-/// now = k / `tick_hz` (> 0), k = 0, 1, ..., while now <= `end_s`, each after the mail stamped at
-/// or before it, every piece delivered at its own time. `on_mail` and `on_step` (either may be
+/// Plays `mail` (sorted by time) through `driver` in the caller's loop of engine.hpp:
+/// iterations at now = k / `tick_hz` (> 0), k = 0, 1, ..., while now <= `end_s`, each after the
+/// mail stamped at or before it, every piece delivered at its own time. `on_mail` and `on_step` (either may be
 /// empty) receive the outputs of each delivery and each step call.
 void play_mail(Driver& driver, const std::vector<TimedMail>& mail, double tick_hz, double end_s,
                const std::function<void(const Outputs&)>& on_mail = {},
