@@ -16,9 +16,10 @@
 //     geodesic distance s and azimuth a from the origin belongs at (s sin a, s cos a): geodesic
 //     polar coordinates, which AzimuthalEquidistant keeps by construction), the largest error
 //     of a 100 m distance measured there (what a swath sees), and the time per conversion.
-// (c) Monte Carlo through hazard_replay. A survey passing 400 hazards once each at pd 0.8 is
-//     replayed with seeds 1..N (hazard_replay's own run()); the pooled detection rate's 95%
-//     Wilson interval and its width against N, and the wall time to get it.
+// (c) Monte Carlo through the engine's driver (hazard_replay's loop: mail before the iteration
+//     of its time, iterations at AppTick 4). A survey passing 400 hazards once each at pd 0.8 is
+//     replayed with seeds 1..N; the pooled detection rate's 95% Wilson interval and its width
+//     against N, and the wall time to get it. Everything stays in memory (no files).
 //
 //   build/<dir>/bench/accuracy/accuracy_bench [--csv DIR]       (bench/reproduce.sh runs it)
 #include <GeographicLib/Geodesic.hpp>
@@ -29,19 +30,15 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <random>
-#include <sstream>
 #include <string>
-#include <unistd.h>
 #include <vector>
 
-#include "hazard/engine.hpp"
+#include "hazard/driver.hpp"
 #include "hazard/geodesy.hpp"
+#include "scenario/config_text.hpp"
 #include "base/text.hpp"
-#include "moos/alog.hpp"
-#include "replay.hpp"
 
 namespace {
 
@@ -204,20 +201,7 @@ const Method kMethods[] = {{"sampling", ""},
                            {"sweep", "swath_sweep = true\n"}};
 
 std::vector<hazard::ConfigEntry> entries(const std::string& text) {
-  std::vector<hazard::ConfigEntry> out;
-  std::size_t start = 0;
-  int line = 0;
-  while (start < text.size()) {
-    const auto end = text.find('\n', start);
-    const std::string l = text.substr(start, end == std::string::npos ? end : end - start);
-    start = end == std::string::npos ? text.size() : end + 1;
-    ++line;
-    const auto eq = l.find('=');
-    if (eq == std::string::npos) continue;
-    out.push_back({std::string(base::trim(l.substr(0, eq))),
-                   std::string(base::trim(l.substr(eq + 1))), "bench.moos", line});
-  }
-  return out;
+  return hazard::config_entries(text, "bench.moos");
 }
 
 struct SensingResult {
@@ -239,7 +223,7 @@ SensingResult sense(const Track& track, const std::vector<Object>& objects,
   }
   SensingResult r;
   {
-    hazard::Engine engine(
+    hazard::Driver driver(
         hazard::load_configuration(
             entries(std::string("hazard_file = field\nsensor_config = width=25, exp=4, "
                                 "pclass=0.85\nshow_swath = false\nshow_hazards = false\n"
@@ -247,20 +231,20 @@ SensingResult sense(const Track& track, const std::vector<Object>& objects,
             [&](const std::string&) { return field; }),
         hazard::SeedChoice{1, hazard::SeedSource::kCommandLine});
     std::vector<int> events(objects.size(), 0);
-    engine.set_decision_observer([&](const hazard::Decision& d) {
+    driver.set_decision_observer([&](const hazard::Decision& d) {
       events[static_cast<std::size_t>(std::stoi(std::string(d.label.substr(1))))] += 1;
     });
-    engine.start(0);
+    driver.start(0);
     std::size_t next = 0;
     long iterations = 0;
     const auto t0 = Clock::now();
     for (long j = 0; j * kTick_s <= track.t3 + kTick_s; ++j, ++iterations) {
       const double now = j * kTick_s;
-      if (j % 400 == 0) engine.on_mail("UHZ_SENSOR_REQUEST", "vname=v", now);
+      if (j % 400 == 0) driver.deliver(hazard::Mail{"UHZ_SENSOR_REQUEST", "vname=v", now});
       for (; next < mail.size() && mail[next].first <= now; ++next) {
-        engine.on_mail("NODE_REPORT", mail[next].second, mail[next].first);
+        driver.deliver(hazard::Mail{"NODE_REPORT", mail[next].second, mail[next].first});
       }
-      engine.step(now);
+      driver.step(now);
     }
     r.us_per_update = seconds_since(t0) * 1e6 / iterations;
     r.missed = r.duplicated = 0;
@@ -390,62 +374,71 @@ void part_b() {
   std::printf("\n");
 }
 
-// ============================== (c) Monte Carlo through hazard_replay ============================
+// ============================== (c) Monte Carlo through the driver ===============================
 
 constexpr int kMaxSeeds = 512;
 constexpr double kPd = 0.8;  // exactly 8000 of the 10000 die values
+constexpr double kMonteCarloTick_hz = 4.0;
+constexpr double kMonteCarloEnd_s = 700.0;
 
-void write(const fs::path& path, const std::string& text) {
-  std::ofstream(path, std::ios::binary) << text;
+// The block, the field and the input of a run, in memory.
+struct MonteCarloScene {
+  std::string field;
+  std::vector<hazard::ConfigEntry> config;
+  std::vector<std::pair<double, std::pair<std::string, std::string>>> mail;  // (t, (var, value))
+};
+
+MonteCarloScene monte_carlo_scene(double pd) {
+  MonteCarloScene s;
+  for (int i = 0; i < 100; ++i) {
+    for (double y : {-15.0, -5.0, 5.0, 15.0}) {
+      s.field += "hazard = x=" + fmt(10.0 * i) + ",y=" + fmt(y) + ",label=h" + std::to_string(i) +
+                 "_" + fmt(y) + ",type=hazard\n";
+    }
+  }
+  s.config = entries("AppTick = 4\nhazard_file = h.txt\nsensor_config = width=25, exp=4, "
+                     "pclass=0.85\nshow_hazards = false\nshow_swath = false\n"
+                     "show_detections = 0\n");
+  s.mail.push_back({0.0, {"UHZ_CONFIG_REQUEST", "vname=v,width=25,pd=" + fmt(pd)}});
+  for (int k = 0; k * 0.25 <= kMonteCarloEnd_s; ++k) {
+    const double t = k * 0.25;
+    if (k % 400 == 0) s.mail.push_back({t, {"UHZ_SENSOR_REQUEST", "vname=v"}});
+    const std::string pose = "NAME=v,X=" + fmt(-20 + 1.5 * t, 2) + ",Y=0,SPD=1.5,HDG=90";
+    s.mail.push_back({t, {"NODE_REPORT", pose}});
+  }
+  return s;
+}
+
+// Detection reports of one run with `seed`: mail before the iteration of its time (hazard_replay's
+// loop), iterations at 4 Hz from the first mail to the last.
+int detections(const MonteCarloScene& s, int seed) {
+  hazard::Driver driver(
+      hazard::load_configuration(s.config, [&](const std::string&) { return s.field; }),
+      hazard::SeedChoice{static_cast<std::uint64_t>(seed), hazard::SeedSource::kCommandLine});
+  int n = 0;
+  auto count = [&](const hazard::TimedOutputs& out) {
+    for (const auto& p : out.outputs.postings) n += p.variable == "UHZ_DETECTION_REPORT";
+  };
+  const double start_s = s.mail.front().first, end_s = s.mail.back().first;
+  count(driver.start(start_s));
+  std::size_t next = 0;
+  for (long k = 0; start_s + static_cast<double>(k) / kMonteCarloTick_hz <= end_s; ++k) {
+    const double now_s = start_s + static_cast<double>(k) / kMonteCarloTick_hz;
+    for (; next < s.mail.size() && s.mail[next].first <= now_s; ++next) {
+      const auto& [t, m] = s.mail[next];
+      count(driver.deliver(hazard::Mail{m.first, m.second, t}));
+    }
+    count(driver.step(now_s));
+  }
+  return n;
 }
 
 void part_c(std::FILE* csv) {
-  const fs::path dir = fs::temp_directory_path() / ("hazard_accuracy_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  std::string field;
-  for (int i = 0; i < 100; ++i) {
-    for (double y : {-15.0, -5.0, 5.0, 15.0}) {
-      field += "hazard = x=" + fmt(10.0 * i) + ",y=" + fmt(y) + ",label=h" + std::to_string(i) +
-               "_" + fmt(y) + ",type=hazard\n";
-    }
-  }
-  write(dir / "h.txt", field);
-  write(dir / "m.moos", "ProcessConfig = uFldHazardSensor\n{\n  AppTick = 4\n  hazard_file = h.txt\n"
-                        "  sensor_config = width=25, exp=4, pclass=0.85\n  show_hazards = false\n"
-                        "  show_swath = false\n  show_detections = 0\n}\n");
-  auto input = [](double pd) {
-    std::string text = moos::alog_header("in.alog", 0.0);
-    text += moos::format_alog_line({0.0, "UHZ_CONFIG_REQUEST", "test", "vname=v,width=25,pd=" + fmt(pd)});
-    for (int k = 0; k * 0.25 <= 700; ++k) {
-      const double t = k * 0.25;
-      if (k % 400 == 0) text += moos::format_alog_line({t, "UHZ_SENSOR_REQUEST", "test", "vname=v"});
-      text += moos::format_alog_line(
-          {t, "NODE_REPORT", "test", "NAME=v,X=" + fmt(-20 + 1.5 * t, 2) + ",Y=0,SPD=1.5,HDG=90"});
-    }
-    return text;
-  };
-  write(dir / "in.alog", input(kPd));
-  write(dir / "all.alog", input(1.0));
-  auto detections = [&](const char* log, int seed) {
-    hazard_replay::Options o;
-    o.config_path = (dir / "m.moos").string();
-    o.input_path = (dir / log).string();
-    o.seed = static_cast<std::uint64_t>(seed);
-    std::ostringstream out, err;
-    hazard_replay::run(o, out, err);
-    std::istringstream lines(out.str());
-    std::string line;
-    int n = 0;
-    while (std::getline(lines, line)) {
-      const moos::AlogParse p = moos::parse_alog_line(line);
-      n += p.kind == moos::AlogLineKind::kEntry && p.entry.variable == "UHZ_DETECTION_REPORT";
-    }
-    return n;
-  };
-  const int chances_per_run = detections("all.alog", 1);  // pd = 1: every pass is a detection
+  const MonteCarloScene at_pd = monte_carlo_scene(kPd);
+  const int chances_per_run = detections(monte_carlo_scene(1.0), 1);  // pd = 1: every pass detects
   if (chances_per_run != 400) std::fprintf(stderr, "expected 400 passes, got %d\n", chances_per_run);
 
-  std::printf("## (c) Monte Carlo through hazard_replay\n\n");
+  std::printf("## (c) Monte Carlo through the engine's driver\n\n");
   std::printf("%d hazards passed once per run at pd %s (true rate %s); pooled detection rate, "
               "95%% Wilson interval, its width, and the wall time of the replays so far\n\n",
               chances_per_run, fmt(kPd).c_str(), fmt(kPd).c_str());
@@ -455,7 +448,7 @@ void part_c(std::FILE* csv) {
   double wall_s = 0.0;
   for (int seed = 1; seed <= kMaxSeeds; ++seed) {
     const auto t0 = Clock::now();
-    detected += detections("in.alog", seed);
+    detected += detections(at_pd, seed);
     wall_s += seconds_since(t0);
     if ((seed & (seed - 1)) != 0) continue;  // report at powers of two
     const double n = static_cast<double>(seed) * chances_per_run, p = detected / n;
@@ -467,8 +460,6 @@ void part_c(std::FILE* csv) {
     if (csv) std::fprintf(csv, "%d,%.6f,%.6f,%.4f\n", seed, p, 2 * half, wall_s);
   }
   std::printf("\n");
-  std::error_code ignored;
-  fs::remove_all(dir, ignored);
 }
 
 }  // namespace

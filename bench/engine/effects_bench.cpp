@@ -25,8 +25,8 @@
 #include <vector>
 
 #include "hazard/dice.hpp"
-#include "hazard/engine.hpp"
-#include "hazard/reference_scenario.hpp"
+#include "hazard/driver.hpp"
+#include "scenario/reference_scenario.hpp"
 #include "base/text.hpp"
 
 // ---- counting allocator (this program only) -----------------------------------------------------
@@ -154,24 +154,28 @@ Measured measure_once(const Scene& s, const std::string& text,
   const std::size_t before = g_live_bytes;
   hazard::MissionOrigin origin;
   if (s.lat_lon) origin = {kLatOrigin, kLonOrigin, std::string("42.358436"), std::string("-71.087448")};
-  auto engine = std::make_unique<hazard::Engine>(
+  auto driver = std::make_unique<hazard::Driver>(
       hazard::load_configuration(block(s), [&](const std::string&) { return text; }, origin),
       hazard::SeedChoice{1, hazard::SeedSource::kCommandLine});
-  engine->start(0);
+  driver->start(0);
   const std::size_t built = g_live_bytes;
-  for (int v = 0; v < kVehicles; ++v) engine->on_mail("UHZ_SENSOR_REQUEST", "vname=v" + std::to_string(v), 0);
+  for (int v = 0; v < kVehicles; ++v) {
+    driver->deliver(hazard::Mail{"UHZ_SENSOR_REQUEST", "vname=v" + std::to_string(v), 0});
+  }
   std::size_t postings = 0;
   const auto t0 = Clock::now();
   for (int k = 0; k < kIterations; ++k) {
     const double now = (k + 1) * kTick_s;
-    for (const std::string& report : mail[k]) postings += engine->on_mail("NODE_REPORT", report, now).postings.size();
-    postings += engine->step(now).postings.size();
+    for (const std::string& report : mail[k]) {
+      postings += driver->deliver(hazard::Mail{"NODE_REPORT", report, now}).outputs.postings.size();
+    }
+    postings += driver->step(now).outputs.postings.size();
   }
   const double us = std::chrono::duration<double, std::micro>(Clock::now() - t0).count();
   m.us_per_update = us / (kIterations * kVehicles);
   m.bytes_per_object = static_cast<double>(built - before) / kObjects;
   m.bytes_per_vehicle = static_cast<double>(g_live_bytes - built) / kVehicles;
-  for (auto name : engine->effects().active_names()) {
+  for (auto name : driver->engine().effects().active_names()) {
     m.effects += (m.effects.empty() ? "" : ", ") + std::string(name);
   }
   if (postings == 0) std::fprintf(stderr, "%s: no postings\n", s.name);

@@ -11,9 +11,9 @@
 #include <memory>
 #include <string>
 
-#include "hazard/engine.hpp"
+#include "hazard/driver.hpp"
 #include "hazard/messages/node_report.hpp"
-#include "hazard/reference_scenario.hpp"
+#include "scenario/reference_scenario.hpp"
 
 namespace {
 
@@ -22,7 +22,7 @@ constexpr double kTick_s = 0.25;      // AppTick 4
 constexpr double kSpeed_mps = 1.5;
 
 struct Scene {
-  std::unique_ptr<hazard::Engine> engine;
+  std::unique_ptr<hazard::Driver> driver;
   double half_extent_m = 0.0;
 };
 
@@ -46,13 +46,14 @@ Scene make_scene(int objects, int vehicles) {
   };
   const std::string& text = field_text(objects);
   Scene s;
-  s.engine = std::make_unique<hazard::Engine>(
+  s.driver = std::make_unique<hazard::Driver>(
       hazard::load_configuration(config, [&](const std::string&) { return text; }),
       hazard::SeedChoice{1, hazard::SeedSource::kCommandLine});
   s.half_extent_m = std::ceil(std::sqrt(static_cast<double>(objects))) * kSpacing_m / 2.0;
-  s.engine->start(0);
+  s.driver->start(0);
   for (int v = 0; v < vehicles; ++v) {
-    s.engine->on_mail("UHZ_SENSOR_REQUEST", "vname=v" + std::to_string(v), 0);
+    const std::string vname = "vname=v" + std::to_string(v);
+    s.driver->deliver(hazard::Mail{"UHZ_SENSOR_REQUEST", vname, 0});
   }
   return s;
 }
@@ -78,10 +79,12 @@ void BM_EngineIteration(benchmark::State& state) {
       r.y_m = -scene.half_extent_m + (v + 1) * lane_spacing_m;
       r.speed_mps = kSpeed_mps;
       r.heading_deg = 90;
-      scene.engine->on_mail("NODE_REPORT", hazard::format_node_report(r), now);
-      if (k % 2000 == 0) scene.engine->on_mail("UHZ_SENSOR_REQUEST", "vname=" + names[v], now);
+      scene.driver->deliver(hazard::Mail{"NODE_REPORT", hazard::format_node_report(r), now});
+      if (k % 2000 == 0) {
+        scene.driver->deliver(hazard::Mail{"UHZ_SENSOR_REQUEST", "vname=" + names[v], now});
+      }
     }
-    const hazard::Outputs out = scene.engine->step(now);
+    const hazard::Outputs out = scene.driver->step(now).outputs;
     postings += out.postings.size();
     benchmark::DoNotOptimize(out);
   }
@@ -101,10 +104,10 @@ BENCHMARK(BM_EngineIteration)
 void BM_ReferenceSurveyReplay(benchmark::State& state) {
   const hazard::Scenario s = hazard::reference_survey(2.0);
   for (auto _ : state) {
-    hazard::Engine engine(
+    hazard::Driver driver(
         hazard::load_configuration(s.config, [](const std::string&) { return std::nullopt; }),
         hazard::SeedChoice{2024, hazard::SeedSource::kRandomSeed});
-    hazard::play_mail(engine, s.mail, 4.0, s.end_time_s, {},
+    hazard::play_mail(driver, s.mail, 4.0, s.end_time_s, {},
                       [](const hazard::Outputs& out) { benchmark::DoNotOptimize(out); });
   }
 }

@@ -1,6 +1,7 @@
 #pragma once
-// Configuration: the one parameter table (style practice 5) and the loader that turns the
-// `ProcessConfig = uFldHazardSensor` block into typed values.
+// Configuration: the one parameter table (style practice 5) and the loader that turns a list of
+// configuration entries (key, value, where written) into typed values. Where the entries come
+// from (a MOOS mission file's ProcessConfig block, read by libmoos) is the program's business.
 //
 // Contract: every parameter is described once in parameter_table() (name, aliases, kind, unit,
 // default, allowed range, help); the defaults of EngineConfig, the parser, the docs table
@@ -145,9 +146,9 @@ struct EngineSetup {
   GeoPlacement placement;
 };
 
-/// The mission file's LatOrigin and LongOrigin globals, as the program read them
-/// (moos::MissionFile::global_double for the number; global for the text, to name a value that
-/// is not a number). All empty: the mission gives no origin.
+/// The mission's LatOrigin and LongOrigin globals, as the program read them (the number, and the
+/// text to name a value that is not a number; app_support::mission_origin reads them from a
+/// mission file). All empty: the mission gives no origin.
 struct MissionOrigin {
   std::optional<double> lat_deg;
   std::optional<double> lon_deg;
@@ -157,14 +158,6 @@ struct MissionOrigin {
 
 /// Reads a hazard file by the path written in the configuration; nullopt if it cannot be read.
 using HazardFileReader = std::function<std::optional<std::string>(const std::string& path)>;
-
-/// The MissionOrigin of a mission file: any `mission` with global_double(key) and global(key)
-/// (moos::MissionFile), read by the program (libhazard reads no files).
-template <class Mission>
-MissionOrigin mission_origin(const Mission& mission) {
-  return MissionOrigin{mission.global_double("LatOrigin"), mission.global_double("LongOrigin"),
-                       mission.global("LatOrigin"), mission.global("LongOrigin")};
-}
 
 EngineSetup load_configuration(const std::vector<ConfigEntry>& entries,
                                const HazardFileReader& read);

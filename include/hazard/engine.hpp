@@ -3,9 +3,10 @@
 //
 // Contract: pure and deterministic. Time comes in as `now_s` (seconds, any origin, non-
 // decreasing); randomness comes only from Dice keyed by (seed, vehicle, object, pass, purpose);
-// every output is returned as an Outputs value. One entry point for mail (on_mail) serves the
-// app and hazard_replay alike, so the two cannot differ. Mail stamped at or before an
-// iteration's time must be delivered before step() for that time (the caller's loop).
+// every output is returned as an Outputs value. Programs feed it through hazard::Driver
+// (driver.hpp), which owns the time clamp and the dispatch of mail by variable name to the
+// handlers below, so the app, hazard_replay and the benchmarks cannot differ. Mail stamped at
+// or before an iteration's time must be delivered before step() for that time (the caller's loop).
 // step(now) runs three phases in order: post the options summary when due; sense (per active
 // vehicle in name order: automatic default setting, gates, swath, entry events, detection dice);
 // release classification answers (per vehicle in name order, rate-limited).
@@ -17,6 +18,10 @@
 // Scale: a sensing vehicle queries the spatial grid for its swath's bounding box only; per-
 // (vehicle, object) state exists only for objects that vehicle has had in its swath.
 // Rejected alternative: evaluating every object per vehicle per iteration (the original, spec 17).
+// Layout: one file per rule, each named after it: engine.cpp (the vehicles, start-up and step's
+// table of contents), settings.cpp (the width choice, who holds a width, configuration requests,
+// the options summary), sensing.cpp, detection.cpp, classification.cpp, visuals.cpp,
+// interface.cpp, invariants.cpp.
 
 #include <cstdint>
 #include <functional>
@@ -32,6 +37,8 @@
 #include "hazard/messages/classify_request.hpp"
 #include "hazard/messages/config_request.hpp"
 #include "hazard/messages/node_report.hpp"
+#include "hazard/messages/sensor_clear.hpp"
+#include "hazard/messages/sensor_request.hpp"
 #include "hazard/outputs.hpp"
 #include "hazard/swath.hpp"
 #include "hazard/vehicle_state.hpp"
@@ -40,10 +47,12 @@ namespace hazard {
 
 /// A sensor request keeps the sensor on this long (spec 8.1, D12).
 inline constexpr double kSensorActiveWindow_s = 600.0;
+/// A vehicle holds its width (counts against the option's `max`) from its accepted
+/// configuration request until this long passes with no configuration or sensor request from
+/// it (rulings "Width choice", amended by issue 13).
+inline constexpr double kWidthHoldWindow_s = 600.0;
 /// Default pd of a vehicle that never chose one (manual 4.2, D4).
 inline constexpr double kDefaultPd = 0.9;
-/// Longest mail value handled; longer values are refused with a warning (bad-input guard).
-inline constexpr std::size_t kMaxMailValueBytes = 64 * 1024;
 /// Node reports kept between two iterations when sub-stepping or sweeping; beyond this the
 /// oldest is dropped (a guard against reports arriving thousands of times per iteration).
 inline constexpr std::size_t kMaxTrackPoses = 4096;
@@ -73,9 +82,6 @@ class Engine {
   /// Start-up: the loader's config warnings and, if show_hazards, the object visuals.
   /// Records `now_s` as the start time (the report's relative times).
   Outputs start(double now_s);
-  /// One piece of mail. Unknown variables are ignored; malformed mail gives a run warning
-  /// naming the variable and the value, and changes nothing else.
-  Outputs on_mail(std::string_view variable, std::string_view value, double now_s);
   /// One iteration at `now_s`.
   Outputs step(double now_s);
 
@@ -107,11 +113,17 @@ class Engine {
   }
 
  private:
-  // Mail handlers, one per message type.
+  // Mail, one handler per message, already parsed: Driver::deliver, the one entry point for
+  // mail, clamps its time, parses and dispatches (driver.hpp).
+  friend class Driver;
   void handle_node_report(const NodeReport& report, double now_s, Outputs& out);
-  void handle_sensor_request(std::string_view vname, double now_s);
+  void handle_sensor_request(const SensorRequest& request, double now_s);
   void handle_config_request(const ConfigRequest& request, double now_s, Outputs& out);
   void handle_classify_request(const ClassifyRequest& request, double now_s, Outputs& out);
+  void handle_sensor_clear(const SensorClear& request, Outputs& out);
+  /// A viewer connected: the object markers again (only with the hazard_markers effect).
+  void handle_viewer_connect(Outputs& out) const;
+
   void clear_queue(std::string_view vname, Outputs& out);
   void post_object_visuals(Outputs& out) const;
 
@@ -122,6 +134,7 @@ class Engine {
                                  Outputs& out) const;
   void record_width_setting(VehicleState& v, double now_s, bool opens_window);
   void set_option(VehicleState& v, OptionIndex option, double pd);
+  bool holds_width(const VehicleState& v, double now_s) const;
   bool option_full(OptionIndex option, VehicleId asking, double now_s) const;
   std::optional<OptionIndex> choose_option(double width_m, VehicleId asking, double now_s) const;
   void post_ack(const VehicleState& v, Outputs& out) const;

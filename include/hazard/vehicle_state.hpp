@@ -69,6 +69,9 @@ struct VehicleState {
 
   std::optional<Pose> pose;
   std::optional<double> last_sensor_request_s;
+  /// The last configuration or sensor request: the width is held for kWidthHoldWindow_s after
+  /// it (rulings "Width choice").
+  std::optional<double> last_width_claim_s;
   std::optional<SensorSetting> setting;
   /// Start of the min_reset_interval window: the last width change by request (never by the
   /// automatic default, D4).

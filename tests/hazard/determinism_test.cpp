@@ -5,7 +5,8 @@
 #include <algorithm>
 #include <set>
 
-#include "hazard/reference_scenario.hpp"
+#include "hazard/driver.hpp"
+#include "scenario/reference_scenario.hpp"
 #include "scenario.hpp"
 
 namespace hazard {
@@ -20,19 +21,20 @@ struct ReplayRun {
 // Replays a scenario the way hazard_replay does: mail stamped at or before an iteration's time
 // is delivered before it; iterations at `tick_hz`.
 ReplayRun replay(const Scenario& s, double tick_hz, std::uint64_t seed = 2024) {
-  Engine engine(load_configuration(s.config, [](const std::string&) { return std::nullopt; }),
-                SeedChoice{seed, SeedSource::kRandomSeed});
+  hazard::Driver driver(
+      load_configuration(s.config, [](const std::string&) { return std::nullopt; }),
+      SeedChoice{seed, SeedSource::kRandomSeed});
   ReplayRun run;
-  engine.set_decision_observer(
+  driver.set_decision_observer(
       [&](const Decision& d) { run.tuples.push_back(testing::decision_tuple(d)); });
-  engine.start(0);
-  play_mail(engine, s.mail, tick_hz, s.end_time_s, {}, [&](const Outputs& out) {
+  driver.start(0);
+  play_mail(driver, s.mail, tick_hz, s.end_time_s, {}, [&](const Outputs& out) {
     for (const auto& p : out.postings) {
       run.detections += p.variable == "UHZ_DETECTION_REPORT";
       run.answers += p.variable == "UHZ_HAZARD_REPORT";
     }
   });
-  const auto violations = engine.invariant_violations();
+  const auto violations = driver.engine().invariant_violations();
   EXPECT_TRUE(violations.empty()) << violations.front();
   std::sort(run.tuples.begin(), run.tuples.end());
   return run;

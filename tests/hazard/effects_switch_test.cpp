@@ -10,7 +10,8 @@
 #include <GeographicLib/LocalCartesian.hpp>
 
 #include "hazard/dice.hpp"
-#include "hazard/reference_scenario.hpp"
+#include "hazard/driver.hpp"
+#include "scenario/reference_scenario.hpp"
 #include "hazard/sensor_model.hpp"
 #include "scenario.hpp"
 
@@ -46,16 +47,16 @@ std::string serialise(const Outputs& o) {
 }
 
 SceneRun run(const Scene& scene, const std::string& switch_line) {
-  Engine engine(load_configuration(entries(scene.block + switch_line),
+  hazard::Driver driver(load_configuration(entries(scene.block + switch_line),
                                    [](const std::string&) { return std::nullopt; }, scene.origin),
                 SeedChoice{77, SeedSource::kCommandLine});
   SceneRun r;
-  engine.set_decision_observer(
+  driver.set_decision_observer(
       [&](const Decision& d) { r.decisions.push_back(testing::decision_tuple(d)); });
-  r.text = serialise(engine.start(0));
+  r.text = serialise(driver.start(0).outputs);
   constexpr double kTick_hz = 4.0;
   play_mail(
-      engine, scene.mail, kTick_hz, scene.end_s,
+      driver, scene.mail, kTick_hz, scene.end_s,
       [&](const Outputs& out) { r.text += serialise(out); },
       [&](const Outputs& out) {
         r.text += serialise(out);
@@ -63,7 +64,7 @@ SceneRun run(const Scene& scene, const std::string& switch_line) {
           if (p.variable == "UHZ_DETECTION_REPORT") r.detected.insert(testing::label_of(p.value));
         }
       });
-  EXPECT_TRUE(engine.invariant_violations().empty());
+  EXPECT_TRUE(driver.engine().invariant_violations().empty());
   return r;
 }
 

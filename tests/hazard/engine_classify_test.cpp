@@ -133,7 +133,7 @@ TEST(EngineClassify, CreditsSurviveInactivityAndWidthChanges_Rulings) {
 TEST(EngineClassify, SeveralCreditsForOneObjectAreUsedOldestFirst_Rulings) {
   Driver d(field_block("0"));
   std::vector<std::uint32_t> passes;
-  d.engine.set_decision_observer([&](const Decision& x) {
+  d.driver.set_decision_observer([&](const Decision& x) {
     if (x.purpose == DiePurpose::kClassification) passes.push_back(x.pass);
   });
   pass_over(d);
@@ -220,7 +220,7 @@ TEST(EngineClassify, ClearEmptiesQueueReturnsCreditsKeepsClock_D10) {
   for (const std::string how : {"UHZ_SENSOR_CLEAR", "UHZ_CLASSIFY_REQUEST"}) {
     Driver d(field_block("10"));
     std::vector<std::string> decided;
-    d.engine.set_decision_observer([&](const Decision& x) {
+    d.driver.set_decision_observer([&](const Decision& x) {
       if (x.purpose == DiePurpose::kClassification) {
         decided.push_back(std::string(x.label) + ":" + std::to_string(x.pass) + ":" +
                           (x.outcome ? "right" : "wrong"));

@@ -24,7 +24,7 @@ std::string sensing_block(std::string_view extra = {}) {
 struct Recorder {
   std::vector<Decision> decisions;
   std::vector<std::string> labels;  // vehicle:label:pass
-  void attach(Engine& e) {
+  void attach(hazard::Driver& e) {
     e.set_decision_observer([this](const Decision& d) {
       decisions.push_back(d);
       labels.push_back(std::string(d.vehicle) + ":" + std::string(d.label) + ":" +
@@ -36,7 +36,7 @@ struct Recorder {
 TEST(EngineSensing, NoSensingWithoutASensorRequest_D12) {
   Driver d(quiet_block("hazard = x=0,y=0,label=a,type=hazard\n"));
   Recorder r;
-  r.attach(d.engine);
+  r.attach(d.driver);
   d.pose("v", 0, 0);
   d.tick();
   EXPECT_TRUE(r.decisions.empty());
@@ -48,7 +48,7 @@ TEST(EngineSensing, NoSensingWithoutASensorRequest_D12) {
 TEST(EngineSensing, OneRequestKeepsTheSensorOnForSixHundredSeconds_D12) {
   Driver d(quiet_block("hazard = x=0,y=0,label=a,type=hazard\n"));
   Recorder r;
-  r.attach(d.engine);
+  r.attach(d.driver);
   d.sensor_on("v");
   d.pose("v", 100, 100);
   d.tick_at(1);
@@ -68,7 +68,7 @@ TEST(EngineSensing, OneRequestKeepsTheSensorOnForSixHundredSeconds_D12) {
 TEST(EngineSensing, EventsOnEntryOnlyAndPassesCount_Spec8_5) {
   Driver d(quiet_block("hazard = x=0,y=0,label=a,type=hazard\n"));
   Recorder r;
-  r.attach(d.engine);
+  r.attach(d.driver);
   d.sensor_on("v");
   d.pose("v", 0, -100);
   d.tick_at(1);
@@ -91,7 +91,7 @@ TEST(EngineSensing, SwathIsTotalLengthAlongAndWidthEachSide_D1_D2) {
       "hazard = x=0,y=4.9,label=in_front,type=hazard\n"
       "hazard = x=0,y=5.1,label=out_front,type=hazard\n"));
   Recorder r;
-  r.attach(d.engine);
+  r.attach(d.driver);
   d.sensor_on("v");
   d.pose("v", 0, 0, 0);
   d.tick();
@@ -104,7 +104,7 @@ TEST(EngineSensing, EventsOrderedByObjectLoadOrder) {
                        "hazard = x=-3,y=0,label=b,type=hazard\n"
                        "hazard = x=0,y=0,label=m,type=hazard\n"));
   Recorder r;
-  r.attach(d.engine);
+  r.attach(d.driver);
   d.sensor_on("v");
   d.pose("v", 0, 0);
   d.tick();
@@ -116,7 +116,7 @@ TEST(EngineSensing, SpeedGateFreezesStateAndTurnsSwathRed_Manual9_Rulings) {
                          "hazard = x=0,y=0,label=a,type=hazard\n"
                          "hazard = x=0,y=40,label=b,type=hazard\n"));
   Recorder r;
-  r.attach(d.engine);
+  r.attach(d.driver);
   d.sensor_on("v");
   d.pose("v", 0, 0, 0, 1.0);  // a inside, sensor on
   d.tick_at(1);
@@ -134,7 +134,7 @@ TEST(EngineSensing, SpeedGateFreezesStateAndTurnsSwathRed_Manual9_Rulings) {
 TEST(EngineSensing, ObjectInsideAcrossABlackoutStaysInTheSamePass_Rulings) {
   Driver d(sensing_block("max_vehicle_speed = 2\nhazard = x=0,y=0,label=a,type=hazard\n"));
   Recorder r;
-  r.attach(d.engine);
+  r.attach(d.driver);
   d.sensor_on("v");
   d.pose("v", 0, 0, 0, 1);
   d.tick_at(1);
@@ -150,7 +150,7 @@ TEST(EngineSensing, ObjectInsideAcrossABlackoutStaysInTheSamePass_Rulings) {
 TEST(EngineSensing, TurnRateBlackout_Manual8_D13) {
   Driver d(sensing_block("max_turn_rate = 1.5\nhazard = x=0,y=0,label=a,type=hazard\n"));
   Recorder r;
-  r.attach(d.engine);
+  r.attach(d.driver);
   d.sensor_on("v");
   d.pose("v", 0, -100, 0);
   d.tick_at(0.0);
@@ -169,7 +169,7 @@ TEST(EngineSensing, TurnRateBlackout_Manual8_D13) {
 TEST(EngineSensing, SlowTurnKeepsSensorOn_D13) {
   Driver d(sensing_block("max_turn_rate = 1.5\nhazard = x=0,y=0,label=a,type=hazard\n"));
   Recorder r;
-  r.attach(d.engine);
+  r.attach(d.driver);
   d.sensor_on("v");
   for (int i = 0; i <= 8; ++i) {
     d.now = i * 0.5;

@@ -170,6 +170,75 @@ TEST(EngineSettings, InactiveHoldersDoNotFillAWidth_D20) {
   EXPECT_EQ(d.vehicle("b").setting->width_m, 5);
 }
 
+// Issue 13 (rulings "Width choice", amended): a max=1 width is held from the moment it is
+// granted, before any sensor request, until kWidthHoldWindow_s pass with no configuration or
+// sensor request from its holder. `max_width` carries max=1; the vehicles only send node reports.
+struct HeldWidthRun {
+  double b_width_m = 0.0;          // B asks for max_width one second after A got it
+  double c_width_before_m = 0.0;   // C asks just before A's hold ends
+  double d_width_m = 0.0;          // D asks when it has ended
+};
+
+HeldWidthRun held_width_run(const std::string& max_width) {
+  std::string block;
+  for (const char* w : {"5", "10", "25"}) {
+    block += std::string("sensor_config = width=") + w + ", exp=4, pclass=0.8" +
+             (w == max_width ? ", max=1" : "") + "\n";
+  }
+  Driver d(block + "hazard = x=1000,y=1000,label=far,type=hazard\nshow_swath = false\n"
+                   "show_hazards = false\n");
+  HeldWidthRun r;
+  d.mail("UHZ_CONFIG_REQUEST", "vname=a,width=" + max_width + ",pd=0.9");
+  EXPECT_EQ(base::fmt(d.vehicle("a").setting->width_m), max_width);
+  auto node_reports_until = [&](double t_s) {  // the vehicles move; none asks for the sensor
+    for (; d.now < t_s; d.now += 1.0) {
+      for (const char* v : {"a", "b", "c", "d"}) d.pose(v, 0, d.now);
+      d.tick();
+    }
+    d.now = t_s;
+  };
+  node_reports_until(1.0);
+  d.mail("UHZ_CONFIG_REQUEST", "vname=b,width=" + max_width + ",pd=0.9");
+  r.b_width_m = d.vehicle("b").setting->width_m;
+  node_reports_until(kWidthHoldWindow_s - 1.0);
+  d.mail("UHZ_CONFIG_REQUEST", "vname=c,width=" + max_width + ",pd=0.9");
+  r.c_width_before_m = d.vehicle("c").setting->width_m;
+  node_reports_until(kWidthHoldWindow_s);  // 600 s with no configuration or sensor request from A
+  d.mail("UHZ_CONFIG_REQUEST", "vname=d,width=" + max_width + ",pd=0.9");
+  r.d_width_m = d.vehicle("d").setting->width_m;
+  EXPECT_FALSE(d.vehicle("a").last_sensor_request_s);  // A never asked for its sensor
+  return r;
+}
+
+TEST(EngineSettings, AGrantedMaxWidthIsHeldBeforeAnySensorRequest_Issue13) {
+  const HeldWidthRun r = held_width_run("25");
+  EXPECT_EQ(r.b_width_m, 10);        // the next lower free width
+  EXPECT_EQ(r.c_width_before_m, 10);
+  EXPECT_EQ(r.d_width_m, 25);  // A's hold ended: granted
+}
+
+TEST(EngineSettings, AHeldSmallestWidthGivesTheNextHigher_Issue13) {
+  const HeldWidthRun r = held_width_run("5");
+  EXPECT_EQ(r.b_width_m, 10);  // nothing lower is free: the next higher
+  EXPECT_EQ(r.c_width_before_m, 10);
+  EXPECT_EQ(r.d_width_m, 5);
+}
+
+TEST(EngineSettings, ConfigurationAndSensorRequestsRenewTheHold_Issue13) {
+  Driver d(kJakeOriginal + "min_reset_interval = 0\n");
+  d.mail("UHZ_CONFIG_REQUEST", "vname=a,width=5,pd=0.9");
+  d.now = 500;
+  d.mail("UHZ_CONFIG_REQUEST", "vname=a,pd=0.8");  // a pd-only request is a configuration request
+  d.now = 1000;
+  d.sensor_on("a");
+  d.now = 1599;  // 599 s after A's sensor request
+  d.mail("UHZ_CONFIG_REQUEST", "vname=b,width=5,pd=0.9");
+  EXPECT_EQ(d.vehicle("b").setting->width_m, 10);
+  d.now = 1600;
+  d.mail("UHZ_CONFIG_REQUEST", "vname=b,width=5,pd=0.9");
+  EXPECT_EQ(d.vehicle("b").setting->width_m, 5);
+}
+
 TEST(EngineSettings, EveryOptionFullKeepsSettingWithWarning_Rulings) {
   Driver d("sensor_config = width=5, exp=2, pclass=0.9, max=1\n"
            "sensor_config = width=10, exp=2, pclass=0.9, max=1\n"

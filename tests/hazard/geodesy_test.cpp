@@ -130,41 +130,43 @@ MissionOrigin origin_of(double lat, double lon) {
 }
 
 TEST(Geodesy, LatLonOnlyNodeReportIsPlacedAroundTheMissionOrigin) {
-  Engine engine(with_origin(quiet_block("hazard = x=0,y=0,label=a,type=hazard\n"),
+  hazard::Driver driver(with_origin(quiet_block("hazard = x=0,y=0,label=a,type=hazard\n"),
                             origin_of(kOrigin.lat_deg, kOrigin.lon_deg)),
                 SeedChoice{1, SeedSource::kCommandLine});
-  ASSERT_TRUE(engine.effects().geodesy);
-  engine.start(0);
+  ASSERT_TRUE(driver.engine().effects().geodesy);
+  driver.start(0);
   double lat, lon;
   geodesic_point(120.0, 30.0, lat, lon);
-  const Outputs out = engine.on_mail(
-      "NODE_REPORT", "NAME=v,LAT=" + base::fmt(lat, 10) + ",LON=" + base::fmt(lon, 10) + ",SPD=1,HDG=10", 0);
+  const std::string report =
+      "NAME=v,LAT=" + base::fmt(lat, 10) + ",LON=" + base::fmt(lon, 10) + ",SPD=1,HDG=10";
+  const Outputs out = driver.deliver(Mail{"NODE_REPORT", report, 0}).outputs;
   EXPECT_TRUE(out.run_warnings.empty());
   const glm::dvec2 expected = LocalProjection(kOrigin, GeodesyMode::kEnu).to_local(
       *base::parse_number(base::fmt(lat, 10)), *base::parse_number(base::fmt(lon, 10)));
-  const Pose& pose = *engine.vehicle(*engine.find_vehicle("v")).pose;
+  const Pose& pose = *driver.engine().vehicle(*driver.engine().find_vehicle("v")).pose;
   EXPECT_EQ(pose.position_m, expected);
   EXPECT_NEAR(pose.position_m.x, 60.0, 0.01);  // 120 m at azimuth 30
   EXPECT_NEAR(pose.position_m.y, 103.92, 0.01);
 }
 
 TEST(Geodesy, XAndYWinOverLatAndLon_Spec6) {
-  Engine engine(with_origin(quiet_block(), origin_of(kOrigin.lat_deg, kOrigin.lon_deg)),
+  hazard::Driver driver(with_origin(quiet_block(), origin_of(kOrigin.lat_deg, kOrigin.lon_deg)),
                 SeedChoice{1, SeedSource::kCommandLine});
-  engine.on_mail("NODE_REPORT", "NAME=v,X=10,Y=-5,LAT=43.8,LON=-70.3,SPD=1,HDG=10", 0);
-  EXPECT_EQ(engine.vehicle(0).pose->position_m, glm::dvec2(10, -5));
+  driver.deliver(Mail{"NODE_REPORT", "NAME=v,X=10,Y=-5,LAT=43.8,LON=-70.3,SPD=1,HDG=10", 0});
+  EXPECT_EQ(driver.engine().vehicle(0).pose->position_m, glm::dvec2(10, -5));
 }
 
 TEST(Geodesy, BadLatitudeOrLongitudeIsAWarningNamingTheField) {
-  Engine engine(with_origin(quiet_block(), origin_of(kOrigin.lat_deg, kOrigin.lon_deg)),
+  hazard::Driver driver(with_origin(quiet_block(), origin_of(kOrigin.lat_deg, kOrigin.lon_deg)),
                 SeedChoice{1, SeedSource::kCommandLine});
-  Outputs out = engine.on_mail("NODE_REPORT", "NAME=v,LAT=95,LON=-70,SPD=1,HDG=10", 0);
+  Outputs out =
+      driver.deliver(Mail{"NODE_REPORT", "NAME=v,LAT=95,LON=-70,SPD=1,HDG=10", 0}).outputs;
   EXPECT_TRUE(contains(out.run_warnings, "field 'LAT' value '95' is outside [-90, 90]"));
-  out = engine.on_mail("NODE_REPORT", "NAME=v,LAT=42,LON=400,SPD=1,HDG=10", 0);
+  out = driver.deliver(Mail{"NODE_REPORT", "NAME=v,LAT=42,LON=400,SPD=1,HDG=10", 0}).outputs;
   EXPECT_TRUE(contains(out.run_warnings, "field 'LON' value '400' is outside [-180, 360]"));
-  out = engine.on_mail("NODE_REPORT", "NAME=v,LAT=north,LON=-70,SPD=1,HDG=10", 0);
+  out = driver.deliver(Mail{"NODE_REPORT", "NAME=v,LAT=north,LON=-70,SPD=1,HDG=10", 0}).outputs;
   EXPECT_TRUE(contains(out.run_warnings, "field 'LAT' value 'north' is not a finite number"));
-  EXPECT_FALSE(engine.find_vehicle("v"));
+  EXPECT_FALSE(driver.engine().find_vehicle("v"));
 }
 
 TEST(Geodesy, WithoutAUsableOriginLatLonOnlyInputIsRejectedWithTheReason_T9) {
@@ -178,9 +180,10 @@ TEST(Geodesy, WithoutAUsableOriginLatLonOnlyInputIsRejectedWithTheReason_T9) {
        "the mission's LatOrigin is given without LongOrigin"},
   };
   for (const auto& [origin, reason] : cases) {
-    Engine engine(with_origin(quiet_block(), origin), SeedChoice{1, SeedSource::kCommandLine});
-    EXPECT_FALSE(engine.effects().geodesy) << reason;
-    const Outputs out = engine.on_mail("NODE_REPORT", report, 0);
+    hazard::Driver driver(with_origin(quiet_block(), origin),
+                          SeedChoice{1, SeedSource::kCommandLine});
+    EXPECT_FALSE(driver.engine().effects().geodesy) << reason;
+    const Outputs out = driver.deliver(Mail{"NODE_REPORT", report, 0}).outputs;
     ASSERT_EQ(out.run_warnings.size(), 1u) << reason;
     EXPECT_NE(out.run_warnings[0].find("LAT/LON without X/Y cannot be placed (" + reason + ")"),
               std::string::npos)
@@ -190,10 +193,10 @@ TEST(Geodesy, WithoutAUsableOriginLatLonOnlyInputIsRejectedWithTheReason_T9) {
   const EngineSetup bad = with_origin(quiet_block(), origin_of(95, -71));
   EXPECT_TRUE(contains(bad.config_warnings, "mission file: LatOrigin value '95' is outside"));
   // geodesy = off: the origin is known, and the report says why it is not used.
-  Engine off(with_origin(quiet_block("geodesy = off\n"), origin_of(42, -71)),
+  Driver off(with_origin(quiet_block("geodesy = off\n"), origin_of(42, -71)),
              SeedChoice{1, SeedSource::kCommandLine});
-  EXPECT_FALSE(off.effects().geodesy);
-  EXPECT_TRUE(contains(off.on_mail("NODE_REPORT", report, 0).run_warnings,
+  EXPECT_FALSE(off.engine().effects().geodesy);
+  EXPECT_TRUE(contains(off.deliver(Mail{"NODE_REPORT", report, 0}).outputs.run_warnings,
                        "cannot be placed (geodesy = off)"));
 }
 

@@ -27,19 +27,19 @@ TEST(NumericsField, AMillionObjectsOnOneSpotAreEachSensedOncePerPass) {
     o.type = i % 3 == 0 ? ObjectType::kHazard : ObjectType::kBenign;
     ASSERT_TRUE(setup.field.add(std::move(o)));
   }
-  Engine engine(std::move(setup), SeedChoice{7, SeedSource::kCommandLine});
-  EXPECT_EQ(engine.field().grid().cells_x() * engine.field().grid().cells_y(), 1);
-  engine.start(0);
-  engine.on_mail("UHZ_CONFIG_REQUEST", "vname=v,width=25,pd=0.05", 0);
-  engine.on_mail("UHZ_SENSOR_REQUEST", "vname=v", 0);
+  hazard::Driver driver(std::move(setup), SeedChoice{7, SeedSource::kCommandLine});
+  EXPECT_EQ(driver.engine().field().grid().cells_x() * driver.engine().field().grid().cells_y(), 1);
+  driver.start(0);
+  driver.deliver(Mail{"UHZ_CONFIG_REQUEST", "vname=v,width=25,pd=0.05", 0});
+  driver.deliver(Mail{"UHZ_SENSOR_REQUEST", "vname=v", 0});
   auto at = [&](double x, double y, double now) {
-    engine.on_mail("NODE_REPORT", testing::node_report("v", x, y), now);
-    return engine.step(now);
+    driver.deliver(Mail{"NODE_REPORT", testing::node_report("v", x, y), now});
+    return driver.step(now).outputs;
   };
   const Outputs first = at(1234.5, -670, 1);  // the spot is 8.25 m behind: inside (L/2 = 5)? no
-  EXPECT_EQ(engine.vehicle(0).inside.size(), 0u);
+  EXPECT_EQ(driver.engine().vehicle(0).inside.size(), 0u);
   const Outputs in = at(1234.5, -675, 2);  // 3.25 m behind, on the track: inside all of them
-  const VehicleState& v = engine.vehicle(0);
+  const VehicleState& v = driver.engine().vehicle(0);
   ASSERT_EQ(v.inside.size(), static_cast<std::size_t>(kObjects));
   EXPECT_EQ(v.counters.hazard_chances + v.counters.benign_chances, kObjects);
   // Hazards detect with pd = 0.05 (exactly 500 of the 10000 die values); benign objects with
@@ -58,14 +58,14 @@ TEST(NumericsField, AMillionObjectsOnOneSpotAreEachSensedOncePerPass) {
   at(1300, -675, 4);
   EXPECT_TRUE(v.inside.empty());
   std::uint32_t max_pass = 0, second_passes = 0;
-  engine.set_decision_observer([&](const Decision& d) {
+  driver.set_decision_observer([&](const Decision& d) {
     max_pass = std::max(max_pass, d.pass);
     second_passes += d.pass == 2;
   });
   at(1234.5, -675, 5);
   EXPECT_EQ(second_passes, static_cast<std::uint32_t>(kObjects));
   EXPECT_EQ(max_pass, 2u);
-  EXPECT_TRUE(engine.invariant_violations().empty());
+  EXPECT_TRUE(driver.engine().invariant_violations().empty());
   (void)first;
 }
 

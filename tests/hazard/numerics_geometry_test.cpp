@@ -157,7 +157,7 @@ SceneRun run_scene(glm::dvec2 shift, const std::string& extra) {
   }
   Driver d(block);
   SceneRun run;
-  d.engine.set_decision_observer([&](const Decision& dec) {
+  d.driver.set_decision_observer([&](const Decision& dec) {
     run.decisions.push_back(std::string(dec.label) + " " + std::to_string(dec.pass) + " " +
                             (dec.outcome ? "1" : "0"));
   });

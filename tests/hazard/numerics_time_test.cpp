@@ -49,13 +49,13 @@ struct DayCounts {
 };
 
 DayCounts run_day() {
-  Engine engine(setup_from(testing::quiet_block(
+  hazard::Driver driver(setup_from(testing::quiet_block(
                     "sensor_config = width=10, exp=2, pclass=0.9\n"
                     "hazard = x=0,y=0,label=a,type=hazard\n"
                     "max_turn_rate = 1.5\nmin_classify_interval = 30\nmin_reset_interval = 300\n"
                     "options_summary_interval = 10\nshow_swath = true\n")),
                 SeedChoice{5, SeedSource::kCommandLine});
-  engine.start(moos_time(0));
+  driver.start(moos_time(0));
   DayCounts c;
   double width_m = 0.0;
   for (long k = 0; k < kIterationsPerDay; ++k) {
@@ -63,25 +63,25 @@ DayCounts run_day() {
     // The vehicle hops on and off the object (an entry every other iteration), asks for the
     // other width every iteration, a classification every iteration, and the sensor every
     // 2000 iterations (666.7 s: on for 600 s, then off).
-    engine.on_mail("NODE_REPORT", node_report("v", k % 2 ? 100.0 : 0.0, 0.0, 90.0), now);
-    if (k % 2000 == 0) engine.on_mail("UHZ_SENSOR_REQUEST", "vname=v", now);
+    driver.deliver(Mail{"NODE_REPORT", node_report("v", k % 2 ? 100.0 : 0.0, 0.0, 90.0), now});
+    if (k % 2000 == 0) driver.deliver(Mail{"UHZ_SENSOR_REQUEST", "vname=v", now});
     const std::string other = width_m == 25.0 ? "10" : "25";
-    engine.on_mail("UHZ_CONFIG_REQUEST", "vname=v,pd=1,width=" + other, now);
-    engine.on_mail("UHZ_CLASSIFY_REQUEST", "vname=v,label=a", now);
-    const Outputs out = engine.step(now);
+    driver.deliver(Mail{"UHZ_CONFIG_REQUEST", "vname=v,pd=1,width=" + other, now});
+    driver.deliver(Mail{"UHZ_CLASSIFY_REQUEST", "vname=v,label=a", now});
+    const Outputs out = driver.step(now).outputs;
     for (const Posting& p : out.postings) {
       if (p.variable == "UHZ_HAZARD_REPORT") c.releases.push_back(k);
       if (p.variable == "UHZ_OPTIONS_SUMMARY") c.summaries.push_back(k);
       if (p.variable == "VIEW_POLYGON") ++c.sensing_per_period[k / 2000];
     }
-    const VehicleState& v = engine.vehicle(0);
+    const VehicleState& v = driver.engine().vehicle(0);
     if (v.setting && v.setting->width_m != width_m) {
       width_m = v.setting->width_m;
       c.width_changes.push_back(k);
     }
     if (k >= 5 && v.heading_history->size() != 6) ++c.wrong_turn_window;
   }
-  EXPECT_TRUE(engine.invariant_violations().empty());
+  EXPECT_TRUE(driver.engine().invariant_violations().empty());
   return c;
 }
 

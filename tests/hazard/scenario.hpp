@@ -1,6 +1,6 @@
 #pragma once
-// Test helpers shared by the engine suites: configuration blocks written as text, an engine
-// driver with a manual clock, and output filters. Header-only (one test executable).
+// Test helpers shared by the engine suites: configuration blocks written as text, the engine's
+// Driver with a manual clock, and output filters. Header-only (one test executable).
 
 #include <gtest/gtest.h>
 
@@ -11,8 +11,10 @@
 #include <vector>
 
 #include "hazard/config.hpp"
+#include "hazard/driver.hpp"
 #include "hazard/engine.hpp"
 #include "hazard/messages/node_report.hpp"
+#include "scenario/config_text.hpp"
 #include "base/text.hpp"
 
 namespace hazard::testing {
@@ -20,18 +22,7 @@ namespace hazard::testing {
 /// "key = value" lines (one per line, `//` comments and blank lines skipped) as config entries
 /// of file "test.moos".
 inline std::vector<ConfigEntry> entries(std::string_view block) {
-  std::vector<ConfigEntry> out;
-  int line = 0;
-  for (std::string_view raw : base::split_trimmed(block, '\n')) {
-    ++line;
-    std::string_view text = raw.substr(0, raw.find("//"));
-    text = base::trim(text);
-    const auto eq = text.find('=');
-    if (text.empty() || eq == std::string_view::npos) continue;
-    out.push_back({std::string(base::trim(text.substr(0, eq))), std::string(base::trim(text.substr(eq + 1))),
-                   "test.moos", line});
-  }
-  return out;
+  return config_entries(block, "test.moos");
 }
 
 /// Loads a block; `files` maps hazard_file paths to their text.
@@ -106,23 +97,26 @@ inline bool contains(const std::vector<std::string>& texts, std::string_view nee
   return false;
 }
 
-/// An engine with a manual clock; every output is also collected in `all`.
+/// A hazard::Driver with a manual clock; every output is also collected in `all`.
 class Driver {
  public:
   explicit Driver(std::string_view block, const std::map<std::string, std::string>& files = {},
                   std::uint64_t seed = 1, double start_s = 0.0)
-      : engine(setup_from(block, files), SeedChoice{seed, SeedSource::kCommandLine}),
+      : driver(setup_from(block, files), SeedChoice{seed, SeedSource::kCommandLine}),
+        engine(driver.engine()),
         now(start_s) {
-    append(all, engine.start(now));
+    append(all, driver.start(now).outputs);
   }
+  Driver(const Driver&) = delete;
+  Driver& operator=(const Driver&) = delete;
 
   Outputs mail(std::string_view variable, std::string_view value) {
-    Outputs out = engine.on_mail(variable, value, now);
+    Outputs out = driver.deliver(Mail{variable, value, now}).outputs;
     append(all, out);
     return out;
   }
   Outputs tick() {
-    Outputs out = engine.step(now);
+    Outputs out = driver.step(now).outputs;
     append(all, out);
     const auto violations = engine.invariant_violations();
     EXPECT_TRUE(violations.empty()) << violations.front();
@@ -153,7 +147,8 @@ class Driver {
     return engine.vehicle(*engine.find_vehicle(name));
   }
 
-  Engine engine;
+  hazard::Driver driver;
+  const Engine& engine;  ///< the driver's, for inspection
   double now;
   Outputs all;
 };

@@ -7,7 +7,8 @@
 #include <cmath>
 #include <random>
 
-#include "hazard/reference_scenario.hpp"
+#include "hazard/driver.hpp"
+#include "scenario/reference_scenario.hpp"
 #include "hazard/sensing_track.hpp"
 #include "scenario.hpp"
 
@@ -190,7 +191,7 @@ TEST(SensingTrack, TurningSegmentsMissOrAddOnlyObjectsWithinTheStatedBound) {
 
 struct Decisions {
   std::vector<std::string> tuples;  // vehicle label pass outcome
-  void attach(Engine& e) {
+  void attach(hazard::Driver& e) {
     e.set_decision_observer([this](const Decision& d) {
       tuples.push_back(std::string(d.vehicle) + " " + std::string(d.label) + " " +
                        std::to_string(d.pass) + " " + (d.outcome ? "1" : "0"));
@@ -261,13 +262,13 @@ std::vector<std::string> replay_mower(const Mower& m, const std::string& mode, d
     block += "hazard = x=" + base::fmt(x(rng), 2) + ",y=" + base::fmt(y(rng), 2) + ",label=o" +
              std::to_string(i) + ",type=hazard\n";
   }
-  Engine engine(testing::setup_from(block), SeedChoice{3, SeedSource::kCommandLine});
+  hazard::Driver driver(testing::setup_from(block), SeedChoice{3, SeedSource::kCommandLine});
   Decisions r;
-  r.attach(engine);
-  engine.start(0);
-  engine.on_mail("UHZ_CONFIG_REQUEST", "vname=v,width=10,pd=0.8", 0);
-  play_mail(engine, m.mail, hz, m.end_s + 1);
-  EXPECT_TRUE(engine.invariant_violations().empty());
+  r.attach(driver);
+  driver.start(0);
+  driver.deliver(Mail{"UHZ_CONFIG_REQUEST", "vname=v,width=10,pd=0.8", 0});
+  play_mail(driver, m.mail, hz, m.end_s + 1);
+  EXPECT_TRUE(driver.engine().invariant_violations().empty());
   std::sort(r.tuples.begin(), r.tuples.end());
   return r.tuples;
 }
@@ -370,12 +371,13 @@ TEST(SensingTrackEngine, SweepingTheReferenceSurveyFindsWhatSamplingFinds_Style1
   for (int sweep = 0; sweep < 2; ++sweep) {
     std::vector<ConfigEntry> config = s.config;
     if (sweep) config.push_back({"swath_sweep", "true", "scenario.moos", 99});
-    Engine engine(load_configuration(config, [](const std::string&) { return std::nullopt; }),
-                  SeedChoice{2024, SeedSource::kRandomSeed});
+    hazard::Driver driver(
+        load_configuration(config, [](const std::string&) { return std::nullopt; }),
+        SeedChoice{2024, SeedSource::kRandomSeed});
     Decisions r;
-    r.attach(engine);
-    engine.start(0);
-    play_mail(engine, s.mail, 4.0, s.end_time_s);
+    r.attach(driver);
+    driver.start(0);
+    play_mail(driver, s.mail, 4.0, s.end_time_s);
     std::sort(r.tuples.begin(), r.tuples.end());
     results[sweep] = r.tuples;
   }

@@ -43,14 +43,15 @@ TEST(Statistics, DetectionRatesMatchTheModel_Manual3_1_6_1_7_1_D5) {
       kPerCategory, {{'h', "type=hazard"}, {'b', "type=benign"}, {'r', "type=benign,hr=0.3"},
                      {'a', "type=benign," + kAspect}, {'g', "type=hazard," + kAspect}});
   EngineSetup setup = testing::setup_from(kBlock + field);
-  Engine engine(std::move(setup), SeedChoice{20240601, SeedSource::kCommandLine});
-  engine.on_mail("UHZ_SENSOR_REQUEST", "vname=v", 0);
-  engine.on_mail("UHZ_CONFIG_REQUEST", "vname=v,width=50,pd=0.8", 0);
+  hazard::Driver driver(std::move(setup), SeedChoice{20240601, SeedSource::kCommandLine});
+  driver.deliver(Mail{"UHZ_SENSOR_REQUEST", "vname=v", 0});
+  driver.deliver(Mail{"UHZ_CONFIG_REQUEST", "vname=v,width=50,pd=0.8", 0});
   std::map<char, int> detected;
   for (int pass = 0; pass < kPasses; ++pass) {
     for (const double x : {0.0, 1000.0}) {  // over the field, then away
-      engine.on_mail("NODE_REPORT", testing::node_report("v", x, 0, 90), pass);
-      const Outputs out = engine.step(pass);
+      const double t = pass;
+      driver.deliver(Mail{"NODE_REPORT", testing::node_report("v", x, 0, 90), t});
+      const Outputs out = driver.step(pass).outputs;
       for (const auto& r : testing::values_of(out, "UHZ_DETECTION_REPORT_V")) {
         ++detected[label_of(r)[0]];
       }
@@ -81,21 +82,22 @@ TEST(Statistics, ClassificationRatesMatchTheModel_Manual3_2_6_2_7_2) {
   std::string field = category_field(50, {{'h', "type=hazard"}, {'b', "type=benign"}});
   field += category_field(160, {{'r', "type=benign,hr=0.3"}});
   field += category_field(100, {{'a', "type=hazard," + kAspect}});
-  Engine engine(testing::setup_from(kBlock + field), SeedChoice{77, SeedSource::kCommandLine});
+  hazard::Driver driver(testing::setup_from(kBlock + field),
+                        SeedChoice{77, SeedSource::kCommandLine});
   std::vector<std::string> names;
   for (int i = 0; i < kVehicles; ++i) names.push_back("v" + std::to_string(i));
   double t = 0;
   for (const auto& v : names) {
-    engine.on_mail("UHZ_SENSOR_REQUEST", "vname=" + v, t);
-    engine.on_mail("UHZ_CONFIG_REQUEST", "vname=" + v + ",width=50,pd=1", t);
+    driver.deliver(Mail{"UHZ_SENSOR_REQUEST", "vname=" + v, t});
+    driver.deliver(Mail{"UHZ_CONFIG_REQUEST", "vname=" + v + ",width=50,pd=1", t});
   }
   std::map<std::string, std::vector<std::string>> credits;  // vehicle -> labels detected
   for (int pass = 0; pass < kPasses; ++pass) {
     for (const double x : {0.0, 1000.0}) {
       for (const auto& v : names) {
-        engine.on_mail("NODE_REPORT", testing::node_report(v, x, 0, 90), t);
+        driver.deliver(Mail{"NODE_REPORT", testing::node_report(v, x, 0, 90), t});
       }
-      const Outputs out = engine.step(t);
+      const Outputs out = driver.step(t).outputs;
       for (const auto& p : out.postings) {
         if (p.variable != "UHZ_DETECTION_REPORT") continue;  // vname=V,x=..,y=..,label=L
         credits[testing::report_field(p.value, "vname")].push_back(label_of(p.value));
@@ -107,12 +109,12 @@ TEST(Statistics, ClassificationRatesMatchTheModel_Manual3_2_6_2_7_2) {
   for (const auto& [v, labels] : credits) {
     most = std::max(most, labels.size());
     for (const auto& l : labels) {
-      engine.on_mail("UHZ_CLASSIFY_REQUEST", "vname=" + v + ",label=" + l, t);
+      driver.deliver(Mail{"UHZ_CLASSIFY_REQUEST", "vname=" + v + ",label=" + l, t});
     }
   }
   std::map<char, int> answers, correct;
   for (std::size_t i = 0; i < most + 1; ++i) {
-    const Outputs out = engine.step(t);
+    const Outputs out = driver.step(t).outputs;
     for (const auto& p : out.postings) {
       if (p.variable != "UHZ_HAZARD_REPORT") continue;
       const char letter = label_of(p.value)[0];

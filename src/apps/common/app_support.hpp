@@ -26,6 +26,15 @@ std::optional<std::string> read_text_file(const std::string& path);
 /// against `mission_directory` (the folder of the .moos file), as the original does.
 hazard::HazardFileReader mission_relative_reader(std::string mission_directory);
 
+/// The engine's MissionOrigin from a mission's LatOrigin/LongOrigin globals: any `mission` with
+/// global_double(key) and global(key) (moos::MissionFile, moos::AppSettings).
+template <class Mission>
+hazard::MissionOrigin mission_origin(const Mission& mission) {
+  return hazard::MissionOrigin{mission.global_double("LatOrigin"),
+                               mission.global_double("LongOrigin"), mission.global("LatOrigin"),
+                               mission.global("LongOrigin")};
+}
+
 /// A ProcessConfig block's lines as engine configuration entries (key, value, file, line).
 std::vector<hazard::ConfigEntry> to_config_entries(const std::vector<moos::ConfigLine>& lines);
 

@@ -7,6 +7,7 @@
 
 #include "app_support.hpp"
 #include "hazard/config.hpp"
+#include "hazard/driver.hpp"
 #include "hazard/engine.hpp"
 #include "base/text.hpp"
 #include "moos/alog.hpp"
@@ -54,7 +55,9 @@ class Writer {
   Writer(std::ostream& out, std::ostream& err, std::string source)
       : out_(out), err_(err), source_(std::move(source)) {}
 
-  void write(const hazard::Outputs& o, double time_s) {
+  void write(const hazard::TimedOutputs& timed) {
+    const hazard::Outputs& o = timed.outputs;
+    const double time_s = timed.time_s;
     for (const hazard::Posting& p : o.postings) {
       out_ << moos::format_alog_line({time_s, p.variable, source_, p.value});
     }
@@ -101,11 +104,11 @@ int run(const Options& options, std::ostream& out, std::ostream& err) {
 
   // Hazard files are named relative to the mission file.
   // LatOrigin/LongOrigin place LAT/LON-only node reports and lat/lon hazard lines (geodesy).
-  hazard::Engine engine = app_support::make_sensor_engine(
-      block->lines, mission->directory(), hazard::mission_origin(*mission), options.seed,
-      app_support::operating_system_seed);
-  const double tick_hz = engine.config().app_tick_hz;
-  const hazard::SeedChoice& seed = engine.seed();
+  hazard::Driver driver(app_support::make_sensor_engine(
+      block->lines, mission->directory(), app_support::mission_origin(*mission), options.seed,
+      app_support::operating_system_seed));
+  const double tick_hz = driver.engine().config().app_tick_hz;
+  const hazard::SeedChoice& seed = driver.engine().seed();
   err << "hazard_replay: seed " << seed.seed << " (" << hazard::seed_source_name(seed.source)
       << "), AppTick " << base::fmt(tick_hz) << " Hz\n";
 
@@ -124,20 +127,20 @@ int run(const Options& options, std::ostream& out, std::ostream& err) {
     err << "hazard_replay: '" << options.input_path << "' holds no input lines\n";
     return 0;
   }
-  writer.write(engine.start(start_s), start_s);
+  writer.write(driver.start(start_s));
 
   std::size_t next = 0;
   auto deliver_until = [&](double t) {
     for (; next < mail.size() && mail[next].time_s <= t; ++next) {
       const moos::AlogEntry& m = mail[next];
-      writer.write(engine.on_mail(m.variable, m.value, m.time_s), m.time_s);
+      writer.write(driver.deliver(hazard::Mail{m.variable, m.value, m.time_s}));
     }
   };
   for (long k = 0;; ++k) {
     const double now_s = start_s + static_cast<double>(k) / tick_hz;
     if (now_s > end_s) break;
     deliver_until(now_s);
-    writer.write(engine.step(now_s), now_s);
+    writer.write(driver.step(now_s));
   }
   deliver_until(end_s);
   out.flush();

@@ -2,8 +2,8 @@
 // hazard_replay: the options and the replay loop (the command line: args.hpp) (issue 2; rulings "hazard_replay
 // output", "Release timing", "Seeds").
 //
-// Contract: the loop delivers each input line at its time through Engine::on_mail, the same
-// entry point the app uses, and runs Engine::step at t0 + k / AppTick (k = 0, 1, ...) while
+// Contract: the loop delivers each input line at its time through hazard::Driver::deliver, the
+// same entry point the app uses, and runs Driver::step at t0 + k / AppTick (k = 0, 1, ...) while
 // that time is at or before the end (the last input, or --until); mail stamped at or before an
 // iteration's time is delivered before that iteration. Mail after the last iteration but not
 // after the end is still delivered (its postings are written), with no further iteration.

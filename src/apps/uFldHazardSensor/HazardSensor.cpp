@@ -1,6 +1,5 @@
 #include "HazardSensor.hpp"
 
-#include <algorithm>
 #include <ostream>
 
 #include "HazardSensor_Info.hpp"
@@ -36,39 +35,37 @@ HazardSensor::HazardSensor(HazardSensorOptions options)
 }
 
 bool HazardSensor::on_start_up() {
-  engine_.emplace(app_support::make_sensor_engine(config_lines(), settings().mission_directory,
-                                                  hazard::mission_origin(settings()),
+  driver_.emplace(app_support::make_sensor_engine(config_lines(), settings().mission_directory,
+                                                  app_support::mission_origin(settings()),
                                                   std::nullopt, options_.os_seed));
   for (const hazard::InterfaceVariable& v : hazard::Engine::subscriptions()) {
     register_variable(std::string(v.name));
   }
-  last_engine_time_s_ = cycle_time();
-  if (options_.verbose) *options_.verbose << moos::alog_header(app_name(), last_engine_time_s_);
-  publish(engine_->start(last_engine_time_s_), last_engine_time_s_);
+  if (options_.verbose) *options_.verbose << moos::alog_header(app_name(), cycle_time());
+  publish(driver_->start(cycle_time()));
   return true;
 }
 
 void HazardSensor::on_new_mail(const std::vector<moos::Message>& mail) {
   const double cycle_s = cycle_time();
   for (const moos::Message& m : mail) {
-    const double t = std::max(last_engine_time_s_, std::min(m.time, cycle_s));
-    last_engine_time_s_ = t;
-    publish(engine_->on_mail(m.key, mail_text(m), t), t);
+    const std::string text = mail_text(m);
+    publish(driver_->deliver(hazard::Mail{m.key, text, m.time}, cycle_s));
   }
 }
 
 void HazardSensor::iterate() {
-  const double now_s = std::max(last_engine_time_s_, cycle_time());
-  last_engine_time_s_ = now_s;
-  publish(engine_->step(now_s), now_s);
+  publish(driver_->step(cycle_time()));
 }
 
 std::string HazardSensor::build_report() {
-  if (!engine_) return {};
-  return hazard::format_report(hazard::collect_report_data(*engine_));
+  if (!driver_) return {};
+  return hazard::format_report(hazard::collect_report_data(driver_->engine()));
 }
 
-void HazardSensor::publish(const hazard::Outputs& out, double now_s) {
+void HazardSensor::publish(const hazard::TimedOutputs& timed) {
+  const hazard::Outputs& out = timed.outputs;
+  const double now_s = timed.time_s;
   for (const hazard::Posting& p : out.postings) {
     notify(p.variable, p.value);
     write_verbose(now_s, p.variable, p.value);

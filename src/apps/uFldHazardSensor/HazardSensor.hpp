@@ -12,11 +12,10 @@
 //   the operating system, else seed 1); the engine starts at the start-up time and its config
 //   warnings and object visuals are published; the engine's subscriptions are registered.
 //   Configuration problems never stop the app (D26).
-// - Mail: each message goes to Engine::on_mail with its own time stamp, clamped to
-//   [time given to the engine last, this cycle's time]: the engine needs non-decreasing times,
-//   and a foreign clock (skewed, unwarped) must not put mail in the future. Doubles are passed
-//   as text. Bad mail only yields a run warning (the engine's), never a stop.
-// - Iterate: Engine::step at this cycle's time (never earlier than the last mail time).
+// - Mail: each message goes to hazard::Driver::deliver with its own time stamp and this cycle's
+//   time (the driver clamps the one to the other and dispatches by variable name). Doubles are
+//   passed as text. Bad mail only yields a run warning (the driver's), never a stop.
+// - Iterate: Driver::step at this cycle's time (never earlier than the last mail time).
 // - Every engine output is published in order: postings with notify(), events, run warnings,
 //   retractions and config warnings to the AppCast. With a verbose stream, every posting and
 //   event (and warning) is also written there as an .alog line (time since start-up, variable,
@@ -33,6 +32,7 @@
 #include <string>
 #include <vector>
 
+#include "hazard/driver.hpp"
 #include "hazard/engine.hpp"
 #include "moos/app.hpp"
 
@@ -64,7 +64,7 @@ class HazardSensor final : public moos::MoosApp {
   explicit HazardSensor(HazardSensorOptions options = {});
 
   /// The engine; nullptr until start-up has run.
-  const hazard::Engine* engine() const { return engine_ ? &*engine_ : nullptr; }
+  const hazard::Engine* engine() const { return driver_ ? &driver_->engine() : nullptr; }
 
  protected:
   bool on_start_up() override;
@@ -73,12 +73,11 @@ class HazardSensor final : public moos::MoosApp {
   std::string build_report() override;
 
  private:
-  void publish(const hazard::Outputs& out, double now_s);
+  void publish(const hazard::TimedOutputs& out);
   void write_verbose(double now_s, const std::string& variable, const std::string& value) const;
 
   HazardSensorOptions options_;
-  std::optional<hazard::Engine> engine_;
-  double last_engine_time_s_ = 0.0;
+  std::optional<hazard::Driver> driver_;
 };
 
 }  // namespace ufld_hazard_sensor

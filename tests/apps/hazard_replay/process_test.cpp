@@ -4,7 +4,7 @@
 #include <set>
 
 #include "hazard/messages/node_report.hpp"
-#include "hazard/reference_scenario.hpp"
+#include "scenario/reference_scenario.hpp"
 #include "base/text.hpp"
 #include "replay_support.hpp"
 

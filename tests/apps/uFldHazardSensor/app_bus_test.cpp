@@ -10,6 +10,7 @@
 #include <set>
 
 #include "app_support.hpp"
+#include "hazard/driver.hpp"
 #include "hazard/config.hpp"
 #include "hazard/engine.hpp"
 #include "base/text.hpp"
@@ -414,8 +415,8 @@ TEST_F(SensorOnBus, PostsExactlyWhatTheEngineDecidesWhenDrivenTheSameWay) {
       app_support::to_config_entries(mission->block("uFldHazardSensor")->lines),
       [](const std::string&) { return std::optional<std::string>(); });
   const hazard::SeedChoice seed = hazard::resolve_seed(std::nullopt, setup.config, nullptr);
-  hazard::Engine reference(std::move(setup), seed);
-  std::vector<hazard::Posting> expected = reference.start(kT0).postings;
+  hazard::Driver reference(std::move(setup), seed);
+  std::vector<hazard::Posting> expected = reference.start(kT0).outputs.postings;
 
   struct Mail {
     std::string var, value;
@@ -433,11 +434,11 @@ TEST_F(SensorOnBus, PostsExactlyWhatTheEngineDecidesWhenDrivenTheSameWay) {
     }
     for (const Mail& m : mail) {
       post(m.var, m.value);
-      const auto out = reference.on_mail(m.var, m.value, t);
+      const auto out = reference.deliver(hazard::Mail{m.var, m.value, t}).outputs;
       expected.insert(expected.end(), out.postings.begin(), out.postings.end());
     }
     app->cycle();
-    const auto out = reference.step(t);
+    const auto out = reference.step(t).outputs;
     expected.insert(expected.end(), out.postings.begin(), out.postings.end());
   }
 

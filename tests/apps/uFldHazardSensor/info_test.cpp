@@ -10,6 +10,7 @@
 
 #include "HazardSensor_Info.hpp"
 #include "hazard/config.hpp"
+#include "hazard/driver.hpp"
 #include "hazard/engine.hpp"
 #include "hazard/messages/classify_request.hpp"
 #include "hazard/messages/config_ack.hpp"
@@ -186,16 +187,16 @@ TEST(Interface, EverySubscriptionExampleIsHandledByTheEngineWithoutAWarning) {
       {{"sensor_config", "width=25,exp=4,pclass=0.8", "m.moos", 1},
        {"hazard", "x=51,y=11.3,label=12,type=hazard", "m.moos", 2}},
       [](const std::string&) { return std::optional<std::string>(); });
-  hazard::Engine engine(std::move(setup), hazard::SeedChoice{});
-  engine.start(0.0);
+  hazard::Driver driver(std::move(setup), hazard::SeedChoice{});
+  driver.start(0.0);
   // archie detects object 12 for certain (pd 1), so the classify example finds its credit.
-  engine.on_mail("UHZ_CONFIG_REQUEST", "vname=archie,width=25,pd=1", 0.0);
-  engine.on_mail("UHZ_SENSOR_REQUEST", "vname=archie", 0.0);
-  engine.on_mail("NODE_REPORT", "NAME=archie,X=51,Y=11.3,SPD=1,HDG=90", 0.0);
-  ASSERT_EQ(engine.step(0.0).postings.size(), 5u);  // summary, swath, 2 detections, circle
+  driver.deliver(hazard::Mail{"UHZ_CONFIG_REQUEST", "vname=archie,width=25,pd=1", 0.0});
+  driver.deliver(hazard::Mail{"UHZ_SENSOR_REQUEST", "vname=archie", 0.0});
+  driver.deliver(hazard::Mail{"NODE_REPORT", "NAME=archie,X=51,Y=11.3,SPD=1,HDG=90", 0.0});
+  ASSERT_EQ(driver.step(0.0).outputs.postings.size(), 5u);  // summary, swath, 2 detections, circle
   double t = 0.0;
   for (const auto& v : hazard::Engine::subscriptions()) {
-    const auto out = engine.on_mail(v.name, v.example, t += 1.0);
+    const auto out = driver.deliver(hazard::Mail{v.name, v.example, t += 1.0}).outputs;
     EXPECT_TRUE(out.run_warnings.empty()) << v.name << ": " << out.run_warnings.front();
   }
 }

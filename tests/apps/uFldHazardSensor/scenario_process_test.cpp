@@ -2,13 +2,14 @@
 // track over known objects and sends the request messages; the payloads the app posts are
 // checked against values computed by hand below, and the same inputs replayed through
 // hazard_replay (same seed) give the same postings: the app adds nothing the engine did not
-// decide.
+// decide. Issue 13: a max=1 width is held from its grant, before any sensor request.
 #include <gtest/gtest.h>
 #include <signal.h>
 
 #include <map>
 
 #include "hazard/engine.hpp"
+#include "hazard/messages/config_ack.hpp"
 #include "base/text.hpp"
 #include "base/text.hpp"
 #include "sensor_process.hpp"
@@ -302,6 +303,59 @@ TEST_F(SensorProcess, SameInputsThroughHazardReplayGiveTheSamePostings_Issue4) {
   }
   EXPECT_GT(wrong, 0);
   EXPECT_EQ(comparable(replay(dir, log)), comparable(posted));
+}
+
+// ---- issue 13: a width limited by max=1 is held from the moment it is granted ----------------
+
+TEST_F(SensorProcess, AMaxWidthIsHeldFromItsGrantUntil600sWithoutARequest_Issue13) {
+  warp = 100.0;  // 600 MOOS seconds in 6 real ones
+  start("  sensor_config = width=10, exp=4, pclass=0.8\n"
+        "  sensor_config = width=25, exp=4, pclass=0.8, max=1\n"
+        "  sensor_config = width=50, exp=4, pclass=0.8\n"
+        "  hazard = x=1000,y=1000,label=far,type=hazard\n"
+        "  options_summary_interval = 1\n  show_hazards = false\n  show_swath = false\n");
+  ASSERT_TRUE(vehicle->register_variable("UHZ_CONFIG_ACK"));
+  // The width each vehicle is granted: its UHZ_CONFIG_ACK (mail of the app, with its MOOS time).
+  auto granted = [&](const std::string& vname) -> std::optional<moos::Message> {
+    const std::string prefix = "vname=" + vname + ",";
+    if (!wait_for([&](const moos::Message& m) {
+          return m.key == "UHZ_CONFIG_ACK" && m.sval.rfind(prefix, 0) == 0;
+        })) {
+      return std::nullopt;
+    }
+    return mail[seen - 1];
+  };
+  auto width_of = [](const moos::Message& ack) {
+    return hazard::parse_config_ack(ack.sval).value->width_m;
+  };
+  auto request_25 = [&](const std::string& vname) {
+    post("UHZ_CONFIG_REQUEST", "vname=" + vname + ",width=25,pd=0.9");
+  };
+
+  request_25("alpha");
+  const auto alpha = granted("alpha");
+  ASSERT_TRUE(alpha) << app->stderr_text();
+  EXPECT_EQ(width_of(*alpha), 25);
+  post("NODE_REPORT", "NAME=alpha,X=0,Y=0,SPD=1,HDG=0");  // alpha only ever sends node reports
+  request_25("bravo");
+  const auto bravo = granted("bravo");
+  ASSERT_TRUE(bravo);
+  EXPECT_EQ(width_of(*bravo), 10);  // 25 is held by alpha: the next lower free width
+  EXPECT_LT(bravo->time - alpha->time, hazard::kWidthHoldWindow_s / 2);
+
+  // Wait (alpha moving) until the app's clock is past 600 s after alpha's grant.
+  const double freed_s = alpha->time + hazard::kWidthHoldWindow_s + 1.0;
+  double y = 0.0;
+  auto alpha_moves_until_freed = [&](const moos::Message& m) {
+    if (m.key != "UHZ_OPTIONS_SUMMARY") return false;  // one a MOOS second
+    post("NODE_REPORT", "NAME=alpha,X=0,Y=" + base::fmt(++y) + ",SPD=1,HDG=0");
+    return m.time >= freed_s;
+  };
+  ASSERT_TRUE(wait_for(alpha_moves_until_freed, hazard::kWidthHoldWindow_s / warp + kPatience_s));
+  request_25("delta");
+  const auto delta = granted("delta");
+  ASSERT_TRUE(delta);
+  EXPECT_EQ(width_of(*delta), 25);  // alpha's hold has ended: granted
 }
 
 }  // namespace

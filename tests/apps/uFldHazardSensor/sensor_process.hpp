@@ -34,14 +34,14 @@ inline constexpr double kWarp = 20.0;
 /// Real seconds for anything that should happen at once (connect, an answer) on a loaded box.
 inline constexpr double kPatience_s = 10.0;
 
-/// The mission for a server on `port`: globals (`extra_globals` last), then `block` as
-/// uFldHazardSensor's block.
+/// The mission for a server on `port` at time warp `warp`: globals (`extra_globals` last), then
+/// `block` as uFldHazardSensor's block.
 inline std::string process_mission(int port, const std::string& block,
-                                   const std::string& extra_globals = {}) {
+                                   const std::string& extra_globals = {}, double warp = kWarp) {
   return "ServerHost   = 127.0.0.1\n"
          "ServerPort   = " + std::to_string(port) + "\n"
          "Community    = shoreside\n"
-         "MOOSTimeWarp = " + std::to_string(static_cast<int>(kWarp)) + "\n" + extra_globals +
+         "MOOSTimeWarp = " + std::to_string(static_cast<int>(warp)) + "\n" + extra_globals +
          "\n"
          "ProcessConfig = uFldHazardSensor\n"
          "{\n" + block + "}\n";
@@ -59,10 +59,11 @@ class SensorProcess : public ::testing::Test {
              const std::string& extra_globals = {}) {
     const std::vector<std::string> server_args = {
         "--log=" + (dir / "db.alog").string(),
-        "--moos_time_warp=" + std::to_string(static_cast<int>(kWarp)), "--moos_community=shoreside"};
+        "--moos_time_warp=" + std::to_string(static_cast<int>(warp)), "--moos_community=shoreside"};
     server.emplace(MOOSDB_LITE_PATH, server_args);
     ASSERT_TRUE(server->ok()) << "moosdb-lite did not start";
-    test_support::write_file(dir / "m.moos", process_mission(server->port(), block, extra_globals));
+    test_support::write_file(dir / "m.moos",
+                             process_mission(server->port(), block, extra_globals, warp));
     std::vector<std::string> args = {(dir / "m.moos").string()};
     args.insert(args.end(), app_args.begin(), app_args.end());
     app = Child::spawn(UFLD_HAZARD_SENSOR_PATH, args);
@@ -72,7 +73,7 @@ class SensorProcess : public ::testing::Test {
     o.host = "127.0.0.1";
     o.port = server->port();
     o.name = "vehicle_sim";
-    o.time_warp = kWarp;
+    o.time_warp = warp;
     vehicle = std::make_unique<moos::TcpClient>(o);
     ASSERT_TRUE(vehicle->start());
     ASSERT_TRUE(vehicle->wait_until_connected(kPatience_s));
@@ -138,6 +139,9 @@ class SensorProcess : public ::testing::Test {
     if (server) server->stop();
   }
 
+  /// The time warp of server, app and vehicle; a test may raise it before start() (a scenario
+  /// that spans MOOS minutes).
+  double warp = kWarp;
   test_support::ScratchDir dir{"uhz_process"};
   std::optional<MoosdbServer> server;
   std::optional<Child> app;

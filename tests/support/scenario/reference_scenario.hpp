@@ -1,12 +1,13 @@
 #pragma once
-// A fixed survey scenario shared by the tests, the benchmark and the demo (style practice 11).
+// A fixed survey scenario shared by the tests and the benchmarks (style practice 11). Test and
+// bench support, not production: the `scenario_support` library, outside src/.
 //
 // Two vehicles mow a 200-object field (hazards, benign objects with resemblance, aspect-sensitive
 // objects) along straight legs at 1.5 m/s: archie with the 10 m option on five legs, betty with
 // the 25 m option on two. Every object lies at least 5 m inside the swath's side edges, so which
 // objects a pass enters does not depend on how often poses are sampled. After the survey each
 // vehicle asks for a classification of every object (refusals included; some with priorities
-// and `top`). play_mail() replays such mail into an engine. No I/O.
+// and `top`). play_mail() replays such mail through a hazard::Driver. No I/O.
 
 #include <functional>
 #include <string>
@@ -17,7 +18,7 @@
 
 namespace hazard {
 
-class Engine;
+class Driver;
 
 struct TimedMail {
   double time_s = 0.0;
@@ -34,11 +35,11 @@ struct Scenario {
 /// The survey with node reports at `node_report_hz` (poses on the same straight tracks).
 Scenario reference_survey(double node_report_hz);
 
-/// Plays `mail` (sorted by time) into `engine` in the caller's loop of engine.hpp: iterations at
-/// now = k / `tick_hz` (> 0), k = 0, 1, ..., while now <= `end_s`, each after the mail stamped at
-/// or before it, every piece delivered at its own time. `on_mail` and `on_step` (either may be
-/// empty) receive the outputs of each on_mail and each step call.
-void play_mail(Engine& engine, const std::vector<TimedMail>& mail, double tick_hz, double end_s,
+/// Plays `mail` (sorted by time) through `driver` in the caller's loop of engine.hpp:
+/// iterations at now = k / `tick_hz` (> 0), k = 0, 1, ..., while now <= `end_s`, each after the
+/// mail stamped at or before it, every piece delivered at its own time. `on_mail` and `on_step` (either may be
+/// empty) receive the outputs of each delivery and each step call.
+void play_mail(Driver& driver, const std::vector<TimedMail>& mail, double tick_hz, double end_s,
                const std::function<void(const Outputs&)>& on_mail = {},
                const std::function<void(const Outputs&)>& on_step = {});
 

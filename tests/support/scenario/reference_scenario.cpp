@@ -1,10 +1,10 @@
-#include "hazard/reference_scenario.hpp"
+#include "scenario/reference_scenario.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 #include "hazard/dice.hpp"
-#include "hazard/engine.hpp"
+#include "hazard/driver.hpp"
 #include "hazard/messages/classify_request.hpp"
 #include "hazard/messages/config_request.hpp"
 #include "hazard/messages/node_report.hpp"
@@ -116,18 +116,19 @@ Scenario reference_survey(double node_report_hz) {
   return s;
 }
 
-void play_mail(Engine& engine, const std::vector<TimedMail>& mail, double tick_hz, double end_s,
+void play_mail(Driver& driver, const std::vector<TimedMail>& mail, double tick_hz, double end_s,
                const std::function<void(const Outputs&)>& on_mail,
                const std::function<void(const Outputs&)>& on_step) {
   std::size_t next = 0;
   for (long k = 0; static_cast<double>(k) / tick_hz <= end_s; ++k) {
     const double now_s = static_cast<double>(k) / tick_hz;
     for (; next < mail.size() && mail[next].time_s <= now_s; ++next) {
-      const Outputs out = engine.on_mail(mail[next].variable, mail[next].value, mail[next].time_s);
-      if (on_mail) on_mail(out);
+      const TimedMail& m = mail[next];
+      const TimedOutputs out = driver.deliver(Mail{m.variable, m.value, m.time_s});
+      if (on_mail) on_mail(out.outputs);
     }
-    const Outputs out = engine.step(now_s);
-    if (on_step) on_step(out);
+    const TimedOutputs out = driver.step(now_s);
+    if (on_step) on_step(out.outputs);
   }
 }
 

@@ -1,0 +1,127 @@
+// Classification (D7, D8, D10, D37): requests against detection credits, the queue, and the
+// rate-limited release of answers.
+#include <algorithm>
+#include <string>
+
+#include "hazard/engine.hpp"
+#include "hazard/messages/hazard_report.hpp"
+#include "hazard/sensor_model.hpp"
+#include "base/text.hpp"
+#include "hazard/time_rules.hpp"
+#include "visuals.hpp"
+
+namespace hazard {
+
+namespace {
+
+ObjectType flipped(ObjectType t) {
+  return t == ObjectType::kHazard ? ObjectType::kBenign : ObjectType::kHazard;
+}
+
+std::optional<double> latest(std::optional<double> a, std::optional<double> b) {
+  if (!a) return b;
+  if (!b) return a;
+  return std::max(*a, *b);
+}
+
+}  // namespace
+
+void Engine::handle_classify_request(const ClassifyRequest& r, double now_s, Outputs& out) {
+  if (r.action == ClassifyAction::kClear) return clear_queue(r.vname, out);
+  const auto id = find_vehicle(r.vname);
+  if (!id) {
+    out.run_warnings.push_back("Classify request from unknown vehicle " + r.vname +
+                               " (label " + r.label + "); refused");
+    return;
+  }
+  VehicleState& v = vehicles_[*id];
+  ++v.counters.classify_requests;
+  const auto object = field_.find(r.label);
+  if (!object) {
+    out.run_warnings.push_back(v.name + " classify request for unknown label: " + r.label);
+    return;
+  }
+  if (!v.setting) {
+    out.run_warnings.push_back("No sensor setting (no classifier) for " + v.name +
+                               "; classify request for " + r.label + " refused");
+    return;
+  }
+  const auto credits = v.credits.find(*object);
+  if (credits == v.credits.end() || credits->second.empty()) {
+    out.run_warnings.push_back("No detection credit for " + v.name + " and label " + r.label +
+                               " (one classification per detection); refused");
+    return;
+  }
+  const Credit credit = credits->second.front();
+  credits->second.pop_front();
+  if (credits->second.empty()) v.credits.erase(credits);
+
+  // Decided now, with the settings in force now (rulings "Credits").
+  const HazardObject& o = field_.object(*object);
+  const double pc = v.setting->pclass;
+  const double pc_resemblance = (effects_.resemblance && !o.is_hazard() && o.resemblance)
+                                    ? resemblance_classification_probability(pc, *o.resemblance)
+                                    : pc;
+  const double pc_aspect =
+      (effects_.aspect && o.has_aspect_triple())
+          ? aspect_classification_probability(pc_resemblance,
+                                              degradation(o, credit.heading_deg))
+          : pc_resemblance;
+  const double die = dice_.classification_v(v.name_hash, field_.label_hash(*object), credit.pass);
+  const bool correct = classification_correct(die, pc_aspect);
+  notify(v, *object, credit.pass, DiePurpose::kClassification, correct);
+  PendingAnswer answer;
+  answer.object = *object;
+  answer.reported = correct ? o.type : flipped(o.type);
+  answer.aspect_affected = !correct && classification_correct(die, pc_resemblance);
+  answer.credit = credit;
+  const bool top = r.action == ClassifyAction::kTop;
+  v.queue.push(answer, r.priority.value_or(kDefaultClassifyPriority), top);
+  if (top) v.last_top_s = now_s;
+  out.events.push_back("Classify request queued for " + v.name + ": label " + o.label +
+                       ", pass " + std::to_string(credit.pass) + ", pc " + base::fix(pc_aspect, 5) +
+                       ", die " + base::fix(die, 4));
+}
+
+void Engine::handle_sensor_clear(const SensorClear& r, Outputs& out) { clear_queue(r.vname, out); }
+
+void Engine::clear_queue(std::string_view vname, Outputs& out) {
+  const auto id = find_vehicle(vname);
+  if (!id) return;
+  VehicleState& v = vehicles_[*id];
+  const std::vector<PendingAnswer> cleared = v.queue.clear();
+  for (const PendingAnswer& a : cleared) {
+    // The credit goes back in pass order, so the same die is rolled again (rulings "Clear").
+    std::deque<Credit>& list = v.credits[a.object];
+    const auto pos = std::lower_bound(list.begin(), list.end(), a.credit.pass,
+                                      [](const Credit& c, std::uint32_t p) { return c.pass < p; });
+    list.insert(pos, a.credit);
+  }
+  out.events.push_back("Classify queue cleared for " + v.name + " (" +
+                       std::to_string(cleared.size()) + " entries)");
+}
+
+void Engine::release_classifications(double now_s, Outputs& out) {
+  for (VehicleId id : by_name_) {
+    VehicleState& v = vehicles_[id];
+    if (v.queue.empty()) continue;
+    const auto last = latest(v.last_release_s, v.last_top_s);
+    if (last && !elapsed_at_least(now_s, *last, config_.min_classify_interval_s)) continue;
+    const PendingAnswer answer = *v.queue.pop();
+    v.last_release_s = now_s;
+    ++v.counters.answers;
+    const HazardObject& o = field_.object(answer.object);
+    HazardReport report{std::nullopt, o.x_m, o.y_m, o.label, answer.reported,
+                        o.aspect_deg, o.aspect_min_deg, o.aspect_max_deg};
+    out.post("UHZ_HAZARD_REPORT" + v.variable_suffix, format_hazard_report(report));
+    report.vname = v.name;
+    out.post("UHZ_HAZARD_REPORT", format_hazard_report(report));
+    out.events.push_back("Hazard report sent to vehicle: " + v.name + " (label " + o.label + ")");
+    if (!effects_.detection_visuals) continue;
+    const ViewCircle c =
+        classification_circle(o, now_s, answer.reported, answer.aspect_affected);
+    out.post("VIEW_CIRCLE", format_view_circle(c));
+  }
+}
+
+}  // namespace hazard

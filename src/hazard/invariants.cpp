@@ -1,0 +1,50 @@
+// The engine's internal invariants (style practice 3), checked by the tests after each step.
+#include "hazard/engine.hpp"
+#include "hazard/sensor_model.hpp"
+
+namespace hazard {
+
+std::vector<std::string> Engine::invariant_violations() const {
+  std::vector<std::string> bad;
+  auto check = [&](bool ok, const std::string& what) {
+    if (!ok) bad.push_back(what);
+  };
+  check(by_name_.size() == vehicles_.size(), "name index size");
+  for (std::size_t i = 1; i < by_name_.size(); ++i) {
+    check(vehicles_[by_name_[i - 1]].name < vehicles_[by_name_[i]].name, "name order");
+  }
+  for (const VehicleState& v : vehicles_) {
+    const std::string who = v.name + ": ";
+    check(v.heading_history.has_value() == effects_.turn_blackout, who + "heading history");
+    check(v.track.empty() || track_mode(), who + "a track without sweeping or sub-stepping");
+    check(v.track.size() <= kMaxTrackPoses, who + "track longer than its bound");
+    for (std::size_t i = 0; i < v.inside.size(); ++i) {
+      check(v.inside[i] < field_.size(), who + "inside id out of range");
+      check(i == 0 || v.inside[i - 1] < v.inside[i], who + "inside list not sorted");
+      const auto pass = v.passes.find(v.inside[i]);
+      check(pass != v.passes.end() && pass->second >= 1, who + "inside object without a pass");
+    }
+    for (const auto& [id, list] : v.credits) {
+      const auto pass = v.passes.find(id);
+      check(!list.empty(), who + "empty credit list");
+      for (std::size_t i = 0; i < list.size(); ++i) {
+        check(pass != v.passes.end() && list[i].pass <= pass->second, who + "credit beyond passes");
+        check(i == 0 || list[i - 1].pass < list[i].pass, who + "credits not in pass order");
+      }
+    }
+    if (v.setting) {
+      const SensorSetting& s = *v.setting;
+      // Every setting comes from a configuration or sensor request, which starts the hold.
+      check(v.last_width_claim_s.has_value(), who + "a setting without a width claim");
+      check(s.option < config_.options.size(), who + "option index");
+      if (s.option < config_.options.size()) {
+        check(s.width_m == config_.options.option(s.option).width_m, who + "width of option");
+      }
+      check(s.pd >= 0.0 && s.pd <= 1.0, who + "pd range");
+      check(s.pfa == roc_false_alarm_probability(s.pd, s.exp), who + "pfa = pd^exp");
+    }
+  }
+  return bad;
+}
+
+}  // namespace hazard

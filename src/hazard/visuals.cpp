@@ -1,0 +1,127 @@
+// Visuals (spec 5.3, 5.4; rulings "Visuals", D19): object markers and aspect axes, the swath
+// polygon, and the detection and classification cue circles.
+#include "visuals.hpp"
+
+#include "hazard/engine.hpp"
+#include "hazard/messages/view_marker.hpp"
+#include "hazard/messages/view_polygon.hpp"
+#include "hazard/messages/view_seglist.hpp"
+#include "base/text.hpp"
+
+namespace hazard {
+
+namespace {
+
+// Visual constants of the original (spec 5.3, 5.4) and the rulings' colours (D19).
+constexpr double kCircleRadius_m = 10.0;
+constexpr int kDetectionCircleVertices = 12;
+constexpr int kClassificationCircleVertices = 5;  // drawn as a pentagon
+constexpr double kCircleEdgeSize = 1.0;
+constexpr double kCircleTransparency = 0.3;
+constexpr double kAffectedEdgeSize = 2.0;        // aspect-affected classification
+constexpr double kAffectedTransparency = 0.5;
+constexpr double kSwathEdgeSize = 0.0;
+constexpr double kMarkerFillWithoutHr = 0.5;     // benign marker fill: 1 - hr, hr absent -> 0.5
+constexpr double kSeglistPartialLength_m = 15.0; // aspect axis without a window
+constexpr double kSeglistBaseLength_m = 5.0;     // + 25 * (mean window / 90)
+constexpr double kSeglistWindowLength_m = 25.0;
+constexpr double kQuarterTurnDeg = 90.0;
+
+
+ViewCircle circle_at(const HazardObject& o, int vertices, double now_s) {
+  ViewCircle c;
+  c.x_m = o.x_m;
+  c.y_m = o.y_m;
+  c.radius_m = kCircleRadius_m;
+  c.vertices = vertices;
+  c.time_s = now_s;
+  c.edge_size = kCircleEdgeSize;
+  c.fill_transparency = kCircleTransparency;
+  return c;
+}
+
+glm::dvec2 project(glm::dvec2 from, double heading_deg, double distance_m) {
+  const SinCos sc = sin_cos_deg(heading_deg);
+  return {from.x + distance_m * sc.sin, from.y + distance_m * sc.cos};
+}
+
+}  // namespace
+
+ViewCircle detection_circle(const HazardObject& o, double now_s, std::optional<double> duration_s,
+                            bool changed_by_aspect) {
+  ViewCircle c = circle_at(o, kDetectionCircleVertices, now_s);
+  c.duration_s = duration_s;
+  // Pink when only the degraded ROC produced the detection (manual 7.3, D5).
+  c.edge_color = c.fill_color = changed_by_aspect ? "pink" : "white";
+  return c;
+}
+
+ViewCircle classification_circle(const HazardObject& o, double now_s, ObjectType reported,
+                                 bool aspect_affected) {
+  ViewCircle c = circle_at(o, kClassificationCircleVertices, now_s);
+  c.edge_color = c.fill_color = reported == ObjectType::kHazard ? "yellow" : "green";
+  if (aspect_affected) {
+    c.fill_color = "pink";
+    c.edge_size = kAffectedEdgeSize;
+    c.fill_transparency = kAffectedTransparency;
+  }
+  return c;
+}
+
+void Engine::handle_viewer_connect(Outputs& out) const {
+  if (effects_.hazard_markers) post_object_visuals(out);
+}
+
+void Engine::post_object_visuals(Outputs& out) const {
+  for (const HazardObject& o : field_.objects()) {
+    const bool hazard = o.is_hazard();
+    ViewMarker m;
+    m.x_m = o.x_m;
+    m.y_m = o.y_m;
+    m.width_m = o.marker_width_m.value_or(hazard ? config_.hazard_marker_width_m
+                                                 : config_.benign_marker_width_m);
+    m.primary_color = o.color.value_or(hazard ? config_.hazard_color : config_.benign_color);
+    m.shape = o.shape.value_or(hazard ? config_.hazard_shape : config_.benign_shape);
+    m.label = o.label;
+    if (!hazard) m.fill_transparency = 1.0 - o.resemblance.value_or(kMarkerFillWithoutHr);
+    out.post("VIEW_MARKER", format_view_marker(m));
+    if (!o.aspect_deg) continue;
+    // The aspect axis (spec 5.4; rulings "Visuals": every aspect, 0 included).
+    const double length_m =
+        (o.aspect_min_deg && o.aspect_max_deg)
+            ? kSeglistBaseLength_m + kSeglistWindowLength_m *
+                                         ((*o.aspect_min_deg + *o.aspect_max_deg) / 2.0) /
+                                         kQuarterTurnDeg
+            : kSeglistPartialLength_m;
+    const glm::dvec2 at{o.x_m, o.y_m};
+    ViewSeglist s;
+    s.points = {project(at, *o.aspect_deg, length_m), project(at, *o.aspect_deg + 180.0, length_m)};
+    s.edge_color = "gray70";
+    s.edge_size = 1.0;
+    out.post("VIEW_SEGLIST", format_view_seglist(s));
+  }
+}
+
+void Engine::post_swath(const VehicleState& v, const Swath& swath, bool on, Outputs& out) const {
+  const SensorSetting& s = *v.setting;
+  ViewPolygon p;
+  const auto corners = swath.corners();
+  p.points.assign(corners.begin(), corners.end());
+  p.label = "sensor_swath_" + v.name;
+  if (config_.show_pd && config_.show_pfa) {
+    p.msg = base::fix(s.pd, 2) + "/" + base::fix(s.pfa, 2);
+  } else if (config_.show_pd) {
+    p.msg = base::fix(s.pd, 2);
+  } else if (config_.show_pfa) {
+    p.msg = "pfa=" + base::fix(s.pfa, 2);
+  } else {
+    p.msg = "_null_";  // the original's "no label" word
+  }
+  p.edge_color = "green";
+  p.fill_color = on ? "white" : "red";
+  p.edge_size = kSwathEdgeSize;
+  p.fill_transparency = config_.swath_transparency;
+  out.post("VIEW_POLYGON", format_view_polygon(p));
+}
+
+}  // namespace hazard

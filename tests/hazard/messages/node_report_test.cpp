@@ -1,0 +1,69 @@
+// NODE_REPORT: parser and formatter (T9); round trips keep the pair in sync (style 10).
+#include <gtest/gtest.h>
+
+#include "hazard/messages/node_report.hpp"
+
+namespace hazard {
+namespace {
+
+TEST(NodeReportMessage, ValidReportOfT9) {
+  const auto p =
+      parse_node_report("NAME=archie,X=10,Y=-5,LAT=43.8,LON=-70.3,SPD=1.5,HDG=90,TIME=123");
+  ASSERT_TRUE(p) << p.error;
+  EXPECT_EQ(p.value->name, "archie");
+  EXPECT_EQ(p.value->x_m, 10);
+  EXPECT_EQ(p.value->y_m, -5);
+  EXPECT_EQ(p.value->speed_mps, 1.5);
+  EXPECT_EQ(p.value->heading_deg, 90);
+  EXPECT_EQ(p.value->lat_deg, 43.8);
+  EXPECT_EQ(p.value->time_s, 123);
+}
+
+TEST(NodeReportMessage, LatLonOnlyIsInvalid_T9) {
+  const auto p = parse_node_report("NAME=archie,LAT=43.8,LON=-70.3,SPD=1.5,HDG=90");
+  EXPECT_FALSE(p);
+  EXPECT_NE(p.error.find("LAT/LON"), std::string::npos);
+}
+
+TEST(NodeReportMessage, KeysAnyCaseAliasesBracesAndHeadingNormalised) {
+  const auto p = parse_node_report(
+      "name=b,x=1,y=2,speed=3,heading=-90,MODE={A,B},COLOR=red,LENGTH=4");
+  ASSERT_TRUE(p) << p.error;
+  EXPECT_EQ(p.value->speed_mps, 3);
+  EXPECT_EQ(p.value->heading_deg, 270);
+}
+
+TEST(NodeReportMessage, MalformedFieldsAreNamed) {
+  EXPECT_EQ(parse_node_report("X=1,Y=2,SPD=1,HDG=0").error, "missing field 'NAME'");
+  EXPECT_EQ(parse_node_report("NAME=a,Y=2,SPD=1,HDG=0").error, "missing field 'X'");
+  EXPECT_EQ(parse_node_report("NAME=a,X=1,Y=2,HDG=0").error, "missing field 'SPD'");
+  EXPECT_EQ(parse_node_report("NAME=a,X=1,Y=2,SPD=1").error, "missing field 'HDG'");
+  EXPECT_EQ(parse_node_report("NAME=a,X=nan,Y=2,SPD=1,HDG=0").error,
+            "field 'X' value 'nan' is not a finite number");
+  EXPECT_EQ(parse_node_report("NAME=a,X=1,Y=1e999,SPD=1,HDG=0").error,
+            "field 'Y' value '1e999' is not a finite number");
+  EXPECT_EQ(parse_node_report("NAME=a,X=1,Y=2,SPD=fast,HDG=0").error,
+            "field 'SPD' value 'fast' is not a finite number");
+}
+
+TEST(NodeReportMessage, RoundTrip) {
+  NodeReport r;
+  r.name = "betty";
+  r.x_m = -12.25;
+  r.y_m = 300.5;
+  r.speed_mps = 1.2;
+  r.heading_deg = 271.5;
+  r.lat_deg = 43.82537;
+  r.lon_deg = -70.33034;
+  r.time_s = 1234.5;
+  r.type = "kayak";
+  const std::string text = format_node_report(r);
+  EXPECT_EQ(text, "NAME=betty,X=-12.25,Y=300.5,SPD=1.2,HDG=271.5,LAT=43.82537,LON=-70.33034,"
+                  "TIME=1234.5,TYPE=kayak");
+  const auto back = parse_node_report(text);
+  ASSERT_TRUE(back);
+  EXPECT_EQ(format_node_report(*back.value), text);
+}
+
+}  // namespace
+}  // namespace hazard
