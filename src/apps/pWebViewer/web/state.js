@@ -1,0 +1,215 @@
+// The viewer's state and the ONE function that changes it: applyMail(state, mail). Live (SSE)
+// and replay (an .alog's mail) both feed mail objects through it in time order, then call
+// expire(state, t), so the state at MOOS time t is the same either way. pMarineViewer
+// semantics: a posting with the same label replaces the earlier one, active=false removes it,
+// duration=D expires it D MOOS seconds after its time (the `time` field, else the mail's time).
+import { parseFields, num, parsePoints, parseAppCast, appCastText } from './fields.js';
+
+/** VIEW_* variable -> object kind. */
+export const KIND_OF_VAR = {
+  VIEW_MARKER: 'marker', VIEW_POLYGON: 'polygon', VIEW_CIRCLE: 'circle',
+  VIEW_SEGLIST: 'seglist', VIEW_POINT: 'point',
+};
+export const KINDS = ['polygon', 'circle', 'seglist', 'marker', 'point'];
+const NODE_REPORT_VARS = new Set(['NODE_REPORT', 'NODE_REPORT_LOCAL']);
+/** uFldHazardMetric's verdict per report (spec 14.2): the score table's rows. */
+const SCORE_VAR = 'HAZARDSET_EVAL';
+/** Bounds: unlabelled postings per kind (a ring of the newest), default trail length. */
+export const MAX_UNLABELLED = 10000;
+export const DEFAULT_TRAIL_LENGTH = 200;
+const MAX_APPCASTS = 500;
+const MAX_VARS = 500;
+
+export function newState(options = {}) {
+  const kinds = {};
+  for (const k of KINDS) kinds[k] = new Map();
+  return {
+    time: 0, warp: 1, mode: options.mode || 'live', community: '',
+    trailLength: options.trailLength || DEFAULT_TRAIL_LENGTH,
+    vehicles: new Map(), kinds, unlabelledSeq: 0, unlabelledCount: {},
+    expiring: new Set(), nextExpiry: Infinity, appcasts: new Map(), scores: new Map(), vars: new Map(),
+    buttons: [], version: 0, mailCount: 0, rejected: 0,
+  };
+}
+
+/** Advances the state's clock (never backwards) and drops what has expired by then. */
+export function expire(state, time) {
+  if (Number.isFinite(time) && time > state.time) state.time = time;
+  // Scans only when the soonest expiry has come, so a mail costs O(1) between expiries.
+  if (state.time < state.nextExpiry) return;
+  let next = Infinity;
+  for (const obj of state.expiring) {
+    if (obj.expiry <= state.time) {
+      removeObject(state, state.kinds[obj.kind], obj.key);
+      state.version++;
+    } else {
+      next = Math.min(next, obj.expiry);
+    }
+  }
+  state.nextExpiry = next;
+}
+
+/** Applies one mail object {type:'mail', var, val, src, time} (other types are ignored). */
+export function applyMail(state, mail) {
+  if (!mail || mail.type !== 'mail' || typeof mail.var !== 'string') return;
+  state.mailCount++;
+  if (Number.isFinite(mail.time) && mail.time > state.time) state.time = mail.time;
+  const kind = KIND_OF_VAR[mail.var];
+  if (kind) applyView(state, kind, String(mail.val), mail.time);
+  else if (NODE_REPORT_VARS.has(mail.var)) applyNodeReport(state, String(mail.val), mail.time);
+  else if (mail.var === 'APPCAST') applyAppCast(state, String(mail.val), mail.time);
+  else {
+    if (mail.var === SCORE_VAR) applyScore(state, String(mail.val));
+    if (state.vars.size < MAX_VARS || state.vars.has(mail.var)) state.vars.set(mail.var, mail.val);
+  }
+  expire(state, mail.time);
+  state.version++;
+}
+
+function color(f, key) {
+  const v = f.get(key);
+  return v === undefined || v === '' ? undefined : v;
+}
+
+/** The drawable fields every VIEW_* object shares. */
+function commonFields(f) {
+  return {
+    label: f.get('label') || '', msg: f.get('msg') || '',
+    labelColor: color(f, 'label_color'), edgeColor: color(f, 'edge_color'),
+    vertexColor: color(f, 'vertex_color'), fillColor: color(f, 'fill_color'),
+    alpha: num(f, 'fill_transparency'), edgeSize: num(f, 'edge_size'),
+    vertexSize: num(f, 'vertex_size'),
+  };
+}
+
+function buildObject(kind, f) {
+  const o = commonFields(f);
+  o.kind = kind;
+  if (kind === 'polygon' || kind === 'seglist') {
+    o.pts = parsePoints(f.get('pts'));
+    if (!o.pts) return null;
+  } else {
+    o.x = num(f, 'x');
+    o.y = num(f, 'y');
+    if (o.x === undefined || o.y === undefined) return null;
+  }
+  if (kind === 'circle') {
+    o.radius = num(f, 'radius');
+    if (o.radius === undefined || o.radius < 0) return null;
+    o.vertices = Math.round(num(f, 'vertices') || 0);
+  } else if (kind === 'marker') {
+    o.shape = (f.get('type') || 'circle').toLowerCase();
+    o.width = Math.max(0, num(f, 'width') ?? 1);
+    o.scale = num(f, 'scale') ?? 1;
+    o.fillColor = color(f, 'primary_color') || color(f, 'color') || o.fillColor;
+    o.secondaryColor = color(f, 'secondary_color');
+  }
+  return o;
+}
+
+function applyView(state, kind, text, mailTime) {
+  const f = parseFields(text);
+  const map = state.kinds[kind];
+  const label = f.get('label') || '';
+  const active = (f.get('active') || 'true').toLowerCase();
+  if (active === 'false') {
+    if (label) removeObject(state, map, label);
+    return;
+  }
+  const obj = buildObject(kind, f);
+  if (!obj) { state.rejected++; return; }
+  if (label) {
+    obj.key = label;
+    removeObject(state, map, label);
+  } else {
+    obj.key = `_${kind}_${++state.unlabelledSeq}`;
+    obj.unlabelled = true;
+    trimUnlabelled(state, kind, map);
+  }
+  const duration = num(f, 'duration');
+  if (duration !== undefined && duration > 0) {
+    obj.expiry = (num(f, 'time') ?? mailTime ?? state.time) + duration;
+    state.expiring.add(obj);
+    state.nextExpiry = Math.min(state.nextExpiry, obj.expiry);
+  }
+  map.set(obj.key, obj);
+}
+
+function removeObject(state, map, key) {
+  const old = map.get(key);
+  if (!old) return;
+  map.delete(key);
+  state.expiring.delete(old);
+  if (old.unlabelled) state.unlabelledCount[old.kind]--;
+}
+
+/** Keeps at most MAX_UNLABELLED unlabelled objects per kind, dropping the oldest. */
+function trimUnlabelled(state, kind, map) {
+  const count = (state.unlabelledCount[kind] || 0) + 1;
+  state.unlabelledCount[kind] = count;
+  if (count <= MAX_UNLABELLED) return;
+  for (const [key, obj] of map) {  // Map iteration is insertion order: oldest first
+    if (obj.unlabelled) { removeObject(state, map, key); break; }
+  }
+}
+
+function applyNodeReport(state, text, mailTime) {
+  const f = parseFields(text);
+  const name = f.get('name');
+  const x = num(f, 'x');
+  const y = num(f, 'y');
+  if (!name || x === undefined || y === undefined) { state.rejected++; return; }
+  let v = state.vehicles.get(name);
+  if (!v) {
+    v = { name, trail: [] };
+    state.vehicles.set(name, v);
+  }
+  v.x = x; v.y = y;
+  v.hdg = num(f, 'hdg') ?? v.hdg ?? 0;
+  v.length = num(f, 'length') ?? v.length;
+  v.color = color(f, 'color') || v.color;
+  v.type = (f.get('type') || v.type || 'ship').toLowerCase();
+  v.time = mailTime;
+  v.trail.push(x, y);
+  const excess = v.trail.length - 2 * state.trailLength;
+  if (excess > 0) v.trail.splice(0, excess);
+}
+
+function applyAppCast(state, text, mailTime) {
+  const cast = parseAppCast(text);
+  if (!cast.proc) { state.rejected++; return; }
+  const key = `${cast.node}/${cast.proc}`;
+  if (!state.appcasts.has(key) && state.appcasts.size >= MAX_APPCASTS) return;
+  state.appcasts.set(key, { key, cast, text: appCastText(cast), time: mailTime });
+}
+
+const SCORE_COLUMNS = ['vname', 'total_score', 'norm_score', 'correct_hazards', 'missed_hazards',
+                       'false_alarms', 'total_objects', 'total_time', 'received_time'];
+export { SCORE_COLUMNS };
+
+function applyScore(state, text) {
+  const f = parseFields(text);
+  const vname = f.get('vname');
+  if (!vname) { state.rejected++; return; }
+  const row = {};
+  for (const c of SCORE_COLUMNS) row[c] = f.get(c) ?? '';
+  state.scores.set(vname, row);
+}
+
+/** The plain JSON summary of the contract's test hook window.viewerState(). */
+export function summary(state) {
+  const labels = (kind) => Array.from(state.kinds[kind].keys());
+  const vehicles = {};
+  for (const [name, v] of state.vehicles) {
+    vehicles[name] = { x: v.x, y: v.y, hdg: v.hdg, trail: v.trail.length / 2 };
+  }
+  const appcasts = {};
+  for (const [key, a] of state.appcasts) appcasts[key] = a.text;
+  return {
+    time: state.time, warp: state.warp, mode: state.mode, vehicles,
+    markers: labels('marker'), circles: labels('circle'), polygons: labels('polygon'),
+    seglists: labels('seglist'), points: labels('point'), appcasts,
+    score: state.scores.size ? Array.from(state.scores.values()) : null,
+    mail: state.mailCount, rejected: state.rejected,
+  };
+}
