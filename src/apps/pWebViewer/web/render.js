@@ -37,22 +37,35 @@ export function bbox(o) {
   return b;
 }
 
+// Skia rasterises one path of thousands of small overlapping contours far slower than the same
+// contours split over several paths, so a batch is drawn in chunks of CHUNK shapes.
+const CHUNK = 256;
+
 class Batches {
-  constructor() { this.map = new Map(); }
-  get(key, make) {
+  constructor() { this.map = new Map(); this.done = []; }
+  get(key, fill, stroke, lineWidth, alpha) {
     let b = this.map.get(key);
-    if (!b) { b = make(); b.path = new Path2D(); this.map.set(key, b); }
+    if (b && b.count >= CHUNK) { this.done.push(b); b = undefined; }
+    if (!b) {
+      b = { fill, stroke, lineWidth, alpha, path: new Path2D(), count: 0 };
+      this.map.set(key, b);
+    }
+    b.count++;
     return b;
   }
   draw(ctx) {
-    for (const b of this.map.values()) {
-      ctx.globalAlpha = b.alpha ?? 1;
-      if (b.fill) { ctx.fillStyle = b.fill; ctx.fill(b.path); }
-      if (b.stroke) { ctx.strokeStyle = b.stroke; ctx.lineWidth = b.lineWidth; ctx.stroke(b.path); }
-    }
+    for (const b of this.done) drawBatch(ctx, b);
+    for (const b of this.map.values()) drawBatch(ctx, b);
     ctx.globalAlpha = 1;
     this.map.clear();
+    this.done = [];
   }
+}
+
+function drawBatch(ctx, b) {
+  ctx.globalAlpha = b.alpha ?? 1;
+  if (b.fill) { ctx.fillStyle = b.fill; ctx.fill(b.path); }
+  if (b.stroke) { ctx.strokeStyle = b.stroke; ctx.lineWidth = b.lineWidth; ctx.stroke(b.path); }
 }
 
 /** The pixel layer: tiny objects written straight into an ImageData. */
@@ -96,6 +109,57 @@ function pixelWord(css, alpha) {
   return word;
 }
 
+/**
+ * Sprites: a marker or circle of a given style and pixel size is drawn once on a small canvas,
+ * then stamped with drawImage, which costs far less than rasterising its path again.
+ */
+const MAX_SPRITE_PX = 64;
+const MAX_SPRITES = 1000;
+const sprites = new Map();
+
+function sprite(key, sizePx, draw) {
+  let c = sprites.get(key);
+  if (!c) {
+    if (sprites.size >= MAX_SPRITES) sprites.clear();
+    c = document.createElement('canvas');
+    c.width = c.height = Math.ceil(sizePx) + 4;  // room for the edge's anti-aliasing
+    draw(c.getContext('2d'), c.width / 2);
+    sprites.set(key, c);
+  }
+  return c;
+}
+
+function markerSprite(st, shape, size) {
+  const px = Math.round(size);
+  return sprite(`m|${st.fillKey}|${st.edgeKey}|${shape}|${px}`, px, (g, mid) => {
+    const path = new Path2D();
+    addShape(path, shape, mid, mid, px);
+    if (st.fill) { g.globalAlpha = st.alpha; g.fillStyle = st.fill; g.fill(path); }
+    if (st.edge) { g.globalAlpha = 1; g.strokeStyle = st.edge; g.lineWidth = 1; g.stroke(path); }
+  });
+}
+
+function circleSprite(st, vertices, radiusPx) {
+  const r = Math.round(radiusPx);
+  return sprite(`c|${st.fillKey}|${st.edgeKey}|${st.vertexKey}|${vertices}|${r}`, 2 * r + 2 * (st.vertexSize || 0), (g, mid) => {
+    const pts = circlePoints({ x: mid, y: mid, radius: r, vertices });
+    const path = new Path2D();
+    for (let i = 0; i < pts.length; i += 2) (i ? path.lineTo : path.moveTo).call(path, pts[i], pts[i + 1]);
+    path.closePath();
+    if (st.fill) { g.globalAlpha = st.alpha; g.fillStyle = st.fill; g.fill(path); }
+    if (st.edge) { g.globalAlpha = 1; g.strokeStyle = st.edge; g.lineWidth = st.edgeWidth; g.stroke(path); }
+    if (st.vertex) {
+      g.fillStyle = st.vertex;
+      const vs = st.vertexSize;
+      for (let i = 0; i < pts.length; i += 2) g.fillRect(pts[i] - vs / 2, pts[i + 1] - vs / 2, vs, vs);
+    }
+  });
+}
+
+function stamp(ctx, image, sx, sy) {
+  ctx.drawImage(image, Math.round(sx - image.width / 2), Math.round(sy - image.height / 2));
+}
+
 function addShape(path, shape, sx, sy, size) {
   const r = size / 2;
   switch (shape) {
@@ -119,35 +183,51 @@ function addPolyline(path, v, pts, closed) {
   if (closed) path.closePath();
 }
 
-function addVertices(batches, v, o, pts) {
-  if (!(o.vertexSize > 0)) return;
-  const color = cssColor(o.vertexColor, 'red');
-  if (!color) return;
-  const b = batches.get(`v|${color}|${o.vertexSize}`, () => ({ fill: color }));
-  for (let i = 0; i < pts.length; i += 2) {
-    const s = o.vertexSize;
-    b.path.rect(toScreenX(v, pts[i]) - s / 2, toScreenY(v, pts[i + 1]) - s / 2, s, s);
+/**
+ * The resolved drawing style of an object, computed once (objects never change in place): CSS
+ * colours, batch keys and the pixel-layer word, so a frame does no string work per object.
+ */
+const DEFAULT_EDGE = { circle: 'white', polygon: 'white', seglist: 'yellow', marker: 'black' };
+function styleOf(o) {
+  if (o.style) return o.style;
+  const st = {};
+  const closed = o.kind === 'polygon' || o.kind === 'circle';
+  if (o.kind === 'marker') {
+    st.fill = cssColor(o.fillColor, 'red');
+    st.alpha = Math.max(0, Math.min(1, o.alpha ?? 1));
+  } else if (o.kind === 'point') {
+    st.fill = cssColor(o.vertexColor || o.fillColor, 'yellow');
+    st.alpha = 1;
+  } else if (closed) {
+    st.fill = cssColor(o.fillColor, undefined);
+    st.alpha = Math.max(0, Math.min(1, o.alpha ?? 0.1));
+    if (st.alpha === 0) st.fill = null;
   }
+  if (st.fill) st.fillKey = `f|${st.fill}|${st.alpha}`;
+  st.edgeWidth = o.kind === 'marker' ? 1 : o.edgeSize ?? 1;
+  st.edge = st.edgeWidth > 0 ? cssColor(o.edgeColor, DEFAULT_EDGE[o.kind]) : null;
+  if (st.edge) st.edgeKey = `e|${st.edge}|${st.edgeWidth}`;
+  st.vertexSize = o.kind === 'point' ? Math.max(2, o.vertexSize ?? 3) : o.vertexSize;
+  st.vertex = st.vertexSize > 0 && o.kind !== 'point' ? cssColor(o.vertexColor, 'red') : null;
+  if (st.vertex) st.vertexKey = `v|${st.vertex}|${st.vertexSize}`;
+  // Far out, a shape is a square of its fill (at least 0.3 opaque to stay visible), else edge.
+  const tiny = st.fill || st.edge;
+  if (tiny) st.tinyWord = pixelWord(tiny, st.fill && o.kind !== 'marker' ? Math.max(0.3, st.alpha) : st.alpha ?? 1);
+  o.style = st;
+  return st;
 }
 
-function addEdge(batches, v, o, pts, closed, defaultColor) {
-  const width = o.edgeSize ?? 1;
-  const color = cssColor(o.edgeColor, defaultColor);
-  if (!(width > 0) || !color) return;
-  addPolyline(batches.get(`e|${color}|${width}`, () => ({ stroke: color, lineWidth: width })).path,
-              v, pts, closed);
-}
-
-function addFill(batches, v, o, pts) {
-  const color = cssColor(o.fillColor, undefined);
-  if (!color || pts.length < 6) return;
-  const alpha = Math.max(0, Math.min(1, o.alpha ?? 0.1));
-  if (alpha === 0) return;
-  addPolyline(batches.get(`f|${color}|${alpha}`, () => ({ fill: color, alpha })).path, v, pts, true);
+function addVertices(batches, v, st, pts) {
+  const s = st.vertexSize;
+  const path = batches.get(st.vertexKey, st.vertex, null, 0, 1).path;
+  for (let i = 0; i < pts.length; i += 2) {
+    path.rect(toScreenX(v, pts[i]) - s / 2, toScreenY(v, pts[i + 1]) - s / 2, s, s);
+  }
 }
 
 function circlePoints(o) {
   if (o.circlePts) return o.circlePts;
+  // Screen-space callers (sprites) pass y down; the polygon is symmetric enough not to care.
   const n = o.vertices >= 3 ? o.vertices : 36;
   const pts = [];
   for (let i = 0; i < n; i++) {
@@ -180,14 +260,21 @@ export function render(ctx, state, v, layers, pixels) {
     for (const o of state.kinds[kind].values()) {
       if (!visible(bbox(o))) continue;
       drawn++;
-      if (kind === 'marker') addMarker(batches, pixels, v, o);
-      else if (kind === 'point') addPoint(batches, v, o);
+      const st = styleOf(o);
+      if (kind === 'marker') addMarker(ctx, batches, pixels, v, o, st);
+      else if (kind === 'point') addPoint(batches, v, o, st);
+      else if (isTiny(o.bbox, v)) addTiny(pixels, v, o.bbox, st);
+      else if (kind === 'circle' && o.radius * v.scale * 2 <= MAX_SPRITE_PX) {
+        stamp(ctx, circleSprite(st, o.vertices, o.radius * v.scale), toScreenX(v, o.x), toScreenY(v, o.y));
+      }
       else {
         const pts = kind === 'circle' ? circlePoints(o) : o.pts;
         const closed = kind !== 'seglist';
-        if (closed) addFill(batches, v, o, pts);
-        addEdge(batches, v, o, pts, closed, kind === 'seglist' ? 'yellow' : 'white');
-        addVertices(batches, v, o, pts);
+        if (closed && st.fill && pts.length >= 6) {
+          addPolyline(batches.get(st.fillKey, st.fill, null, 0, st.alpha).path, v, pts, true);
+        }
+        if (st.edge) addPolyline(batches.get(st.edgeKey, null, st.edge, st.edgeWidth, 1).path, v, pts, closed);
+        if (st.vertex) addVertices(batches, v, st, pts);
       }
       if (labels.length <= LABEL_LIMIT) {
         const text = shownText(o);
@@ -204,27 +291,37 @@ export function render(ctx, state, v, layers, pixels) {
   return drawn;
 }
 
-function addMarker(batches, pixels, v, o) {
-  const size = Math.max(MIN_MARKER_PX, o.width * o.scale * v.scale);
-  const fill = cssColor(o.fillColor, 'red');
-  const sx = toScreenX(v, o.x), sy = toScreenY(v, o.y);
-  const alpha = o.alpha ?? 1;
-  if (size < PIXEL_LAYER_PX) {
-    if (fill) pixels.square(sx, sy, Math.round(size), pixelWord(fill, alpha));
-    return;
-  }
-  if (fill) addShape(batches.get(`m|${fill}|${alpha}`, () => ({ fill, alpha })).path, o.shape, sx, sy, size);
-  const edge = cssColor(o.edgeColor, 'black');
-  if (edge) {
-    addShape(batches.get(`me|${edge}`, () => ({ stroke: edge, lineWidth: 1 })).path, o.shape, sx, sy, size);
-  }
+/** Shapes under TINY_PX on screen are a pixel-layer square: the view is too coarse to tell more. */
+const TINY_PX = 4;
+function isTiny(b, v) {
+  return (b.x1 - b.x0) * v.scale < TINY_PX && (b.y1 - b.y0) * v.scale < TINY_PX;
 }
 
-function addPoint(batches, v, o) {
-  const color = cssColor(o.vertexColor || o.fillColor, 'yellow');
-  if (!color) return;
-  const s = Math.max(2, o.vertexSize ?? 3);
-  batches.get(`p|${color}`, () => ({ fill: color })).path
+function addTiny(pixels, v, b, st) {
+  if (st.tinyWord === undefined) return;
+  const size = Math.max(1, Math.round(Math.max(b.x1 - b.x0, b.y1 - b.y0) * v.scale));
+  pixels.square(toScreenX(v, (b.x0 + b.x1) / 2), toScreenY(v, (b.y0 + b.y1) / 2), size, st.tinyWord);
+}
+
+function addMarker(ctx, batches, pixels, v, o, st) {
+  const size = Math.max(MIN_MARKER_PX, o.width * o.scale * v.scale);
+  const sx = toScreenX(v, o.x), sy = toScreenY(v, o.y);
+  if (size < PIXEL_LAYER_PX) {
+    if (st.fill) pixels.square(sx, sy, Math.round(size), st.tinyWord);
+    return;
+  }
+  if (size <= MAX_SPRITE_PX) {
+    stamp(ctx, markerSprite(st, o.shape, size), sx, sy);
+    return;
+  }
+  if (st.fill) addShape(batches.get(st.fillKey, st.fill, null, 0, st.alpha).path, o.shape, sx, sy, size);
+  if (st.edge) addShape(batches.get(st.edgeKey, null, st.edge, 1, 1).path, o.shape, sx, sy, size);
+}
+
+function addPoint(batches, v, o, st) {
+  if (!st.fill) return;
+  const s = st.vertexSize;
+  batches.get(st.fillKey, st.fill, null, 0, 1).path
     .rect(toScreenX(v, o.x) - s / 2, toScreenY(v, o.y) - s / 2, s, s);
 }
 

@@ -263,16 +263,21 @@ function frame(now) {
 }
 let lastDrawn = 0;
 
-/** While the user has not moved the view, keep everything in it (a cheap check first). */
+/**
+ * While the user has not moved the view, keep everything in it: fit as soon as there is
+ * content, then look again every 50 state changes (the content box walks every object).
+ */
 let fittedVersion = -1;
+let fitted = false;
 function fitIfOutside() {
-  if (state.version - fittedVersion < 50 && fittedVersion >= 0) return;
+  if (fitted && state.version - fittedVersion < 50 && state.version >= fittedVersion) return;
   fittedVersion = state.version;
   const b = contentBox();
   if (!b) return;
   const [x0, y1] = toWorld(view, 0, 0);
   const [x1, y0] = toWorld(view, view.w, view.h);
-  if (b.x0 < x0 || b.x1 > x1 || b.y0 < y0 || b.y1 > y1 || view.scale === 1) fit();
+  if (!fitted || b.x0 < x0 || b.x1 > x1 || b.y0 < y0 || b.y1 > y1) fit();
+  fitted = true;
 }
 
 // ---------------------------------------------------------------------------------- hooks
