@@ -65,6 +65,12 @@ bool HttpServer::start(const HttpOptions& options, std::string* error) {
   const std::size_t threads = options.max_clients + kSpareThreads;
   server_->new_task_queue = [threads] { return new httplib::ThreadPool(threads); };
   server_->set_write_timeout(kWriteTimeout_s, 0);
+  // SO_REUSEADDR only: httplib's default also sets SO_REUSEPORT, which would let a second
+  // viewer share the port silently instead of failing with "address in use".
+  server_->set_socket_options([](auto sock) {
+    int yes = 1;
+    ::setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+  });
   add_routes();
   port_ = options.port == 0 ? server_->bind_to_any_port(options.bind_address)
                             : (server_->bind_to_port(options.bind_address, options.port) ? options.port : -1);

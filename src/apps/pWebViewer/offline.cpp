@@ -100,13 +100,13 @@ int serve_replay(const std::string& log_path, OfflineSetup& s, std::ostream& out
 }  // namespace
 
 bool is_offline(const moos::CommandLine& command_line) {
-  return command_line.flag_value("replay") || command_line.flag_value("export");
+  return command_line.flag_value("--replay") || command_line.flag_value("--export");
 }
 
 int run_offline(const moos::CommandLine& cl, std::ostream& out, std::ostream& err) {
-  const auto replay = cl.flag_value("replay");
-  const auto exported = cl.flag_value("export");
-  const auto output = cl.flag_value("output");
+  const auto replay = cl.flag_value("--replay");
+  const auto exported = cl.flag_value("--export");
+  const auto output = cl.flag_value("--output");
   if (replay && exported) {
     err << kAppName << ": --replay and --export cannot be combined\n";
     return 2;
