@@ -87,7 +87,7 @@ def main():
     args = ap.parse_args()
     doc = replay_doc(field(args.objects, args.side, args.seed))
     with static_site(doc) as url, browser_page(1280, 800) as page:
-        page.goto(url + "?flush=1")
+        page.goto(url + "?replay=replay.json&flush=1")
         page.wait_for_function("window.viewerState && window.viewerState().replay !== undefined",
                                timeout=120000)
         page.evaluate("window.viewerSeek(1e12)")
@@ -101,8 +101,6 @@ def main():
                 window.viewerView({{cx: {args.side / 2}, cy: {args.side / 2},
                                    scale: v.w / ({args.side * fraction} * 1.05)}}); }})()""")
             page.evaluate("new Promise(r => requestAnimationFrame(() => requestAnimationFrame(r)))")
-            before = len(page.evaluate("window.viewerFrameStats()").draw_ms
-                         if False else page.evaluate("window.viewerFrameStats()")["draw_ms"])
             stats = pan(page, args.frames, 4)
             draw = stats["draw_ms"][-args.frames:]
             interval = stats["interval_ms"][-args.frames:]
@@ -110,7 +108,6 @@ def main():
                   f"draw+raster ms median {statistics.median(draw):.1f} p99 {percentile(draw, 0.99):.1f}; "
                   f"frame interval ms median {statistics.median(interval):.1f} "
                   f"p99 {percentile(interval, 0.99):.1f}")
-            del before
         if page.errors:
             print("page errors:", page.errors)
             return 1

@@ -17,7 +17,8 @@ export class Replay {
   }
 
   reset() {
-    this.state = newState({ mode: 'replay', trailLength: this.hello.trail_length });
+    this.state = newState({ mode: 'replay', trailLength: this.hello.trail_length,
+                           unlabelledRing: this.hello.unlabelled_ring });
     this.state.warp = this.hello.warp || 1;
     this.state.community = this.hello.community || '';
     this.state.time = this.start;

@@ -15,7 +15,7 @@ const NODE_REPORT_VARS = new Set(['NODE_REPORT', 'NODE_REPORT_LOCAL']);
 /** uFldHazardMetric's verdict per report (spec 14.2): the score table's rows. */
 const SCORE_VAR = 'HAZARDSET_EVAL';
 /** Bounds: unlabelled postings per kind (a ring of the newest), default trail length. */
-export const MAX_UNLABELLED = 10000;
+export const MAX_UNLABELLED = 2000;  // pWebViewer's unlabelled_ring default
 export const DEFAULT_TRAIL_LENGTH = 200;
 const MAX_APPCASTS = 500;
 const MAX_VARS = 500;
@@ -26,6 +26,7 @@ export function newState(options = {}) {
   return {
     time: 0, warp: 1, mode: options.mode || 'live', community: '',
     trailLength: options.trailLength || DEFAULT_TRAIL_LENGTH,
+    unlabelledRing: options.unlabelledRing || MAX_UNLABELLED,
     vehicles: new Map(), kinds, unlabelledSeq: 0, unlabelledCount: {},
     expiring: new Set(), nextExpiry: Infinity, appcasts: new Map(), scores: new Map(), vars: new Map(),
     buttons: [], version: 0, mailCount: 0, rejected: 0,
@@ -143,11 +144,11 @@ function removeObject(state, map, key) {
   if (old.unlabelled) state.unlabelledCount[old.kind]--;
 }
 
-/** Keeps at most MAX_UNLABELLED unlabelled objects per kind, dropping the oldest. */
+/** Keeps at most state.unlabelledRing unlabelled objects per kind, dropping the oldest. */
 function trimUnlabelled(state, kind, map) {
   const count = (state.unlabelledCount[kind] || 0) + 1;
   state.unlabelledCount[kind] = count;
-  if (count <= MAX_UNLABELLED) return;
+  if (count <= state.unlabelledRing) return;
   for (const [key, obj] of map) {  // Map iteration is insertion order: oldest first
     if (obj.unlabelled) { removeObject(state, map, key); break; }
   }

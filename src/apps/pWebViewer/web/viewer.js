@@ -49,9 +49,13 @@ function startLive() {
   source.onmessage = (event) => {
     let msg;
     try { msg = JSON.parse(event.data); } catch { return; }
-    if (msg.type === 'hello') {
+    if (msg.type === 'hello' && msg.mode === 'replay') {
+      source.close();
+      loadReplay('replay.json');
+    } else if (msg.type === 'hello') {
       // A (re)connection: the server sends its retained state again after the hello.
-      state = newState({ mode: 'live', trailLength: msg.trail_length });
+      state = newState({ mode: 'live', trailLength: msg.trail_length,
+                         unlabelledRing: msg.unlabelled_ring });
       state.community = msg.community || '';
       state.warp = msg.warp ?? 1;
       if (Number.isFinite(msg.time)) state.time = msg.time;
@@ -68,14 +72,20 @@ function startLive() {
   source.onopen = () => { $('mode').textContent = 'live'; };
 }
 
+/**
+ * Inlined replay (an exported HTML file), else ?replay=URL, else the server's /events: its hello
+ * says whether it is live or replaying a log (then the mail comes from replay.json).
+ */
 async function chooseSource() {
   if (window.VIEWER_REPLAY) return startReplay(window.VIEWER_REPLAY);
-  const url = params.get('replay') || 'replay.json';
-  try {
-    const reply = await fetch(url, { cache: 'no-store' });
-    if (reply.ok) return startReplay(await reply.json());
-  } catch { /* not in replay mode */ }
+  if (params.get('replay')) return loadReplay(params.get('replay'));
   startLive();
+}
+
+async function loadReplay(url) {
+  const reply = await fetch(url, { cache: 'no-store' });
+  if (!reply.ok) throw new Error(`${url}: HTTP ${reply.status}`);
+  startReplay(await reply.json());
 }
 
 function showButtons(buttons) {

@@ -85,7 +85,7 @@ def replay_doc(mails, time=0.0):
 
 def open_replay(page, base_url):
     """Loads the page in replay mode and waits until the replay is ready."""
-    page.goto(base_url)
+    page.goto(base_url + "?replay=replay.json")
     page.wait_for_function("window.viewerState && window.viewerState().replay !== undefined")
 
 
