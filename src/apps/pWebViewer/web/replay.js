@@ -1,6 +1,6 @@
 // Replay: the state at MOOS time t is every mail with time <= t applied in order through
 // applyMail, then expire(t). Moving forward applies the next mails; moving back rebuilds.
-import { newState, applyMail, expire } from './state.js';
+import { stateForHello, applyMail, expire } from './state.js';
 
 export class Replay {
   /** `data` = {hello, mail: [...]} as GET /replay.json or window.VIEWER_REPLAY give it. */
@@ -17,10 +17,7 @@ export class Replay {
   }
 
   reset() {
-    this.state = newState({ mode: 'replay', trailLength: this.hello.trail_length,
-                           unlabelledRing: this.hello.unlabelled_ring });
-    this.state.warp = this.hello.warp || 1;
-    this.state.community = this.hello.community || '';
+    this.state = stateForHello(this.hello, 'replay');
     this.state.time = this.start;
     this.next = 0;
     this.t = this.start;

@@ -29,8 +29,22 @@ export function newState(options = {}) {
     unlabelledRing: options.unlabelledRing || MAX_UNLABELLED,
     vehicles: new Map(), kinds, unlabelledSeq: 0, unlabelledCount: {},
     expiring: new Set(), nextExpiry: Infinity, appcasts: new Map(), scores: new Map(), vars: new Map(),
+    datum: options.datum || null,   // {lat, lon} from hello's lat_origin/lon_origin
     buttons: [], version: 0, mailCount: 0, rejected: 0,
   };
+}
+
+/** A fresh state for a server's hello (live) or a log's (replay): its bounds and datum. */
+export function stateForHello(hello, mode) {
+  const state = newState({
+    mode, trailLength: hello.trail_length, unlabelledRing: hello.unlabelled_ring,
+    datum: Number.isFinite(hello.lat_origin) && Number.isFinite(hello.lon_origin)
+      ? { lat: hello.lat_origin, lon: hello.lon_origin } : null,
+  });
+  state.community = hello.community || '';
+  state.warp = hello.warp ?? 1;
+  if (Number.isFinite(hello.time)) state.time = hello.time;
+  return state;
 }
 
 /** Advances the state's clock (never backwards) and drops what has expired by then. */
@@ -157,8 +171,9 @@ function trimUnlabelled(state, kind, map) {
 function applyNodeReport(state, text, mailTime) {
   const f = parseFields(text);
   const name = f.get('name');
-  const x = num(f, 'x');
-  const y = num(f, 'y');
+  let x = num(f, 'x');
+  let y = num(f, 'y');
+  if ((x === undefined || y === undefined) && state.datum) [x, y] = localXY(state.datum, f);
   if (!name || x === undefined || y === undefined) { state.rejected++; return; }
   let v = state.vehicles.get(name);
   if (!v) {
@@ -174,6 +189,20 @@ function applyNodeReport(state, text, mailTime) {
   v.trail.push(x, y);
   const excess = v.trail.length - 2 * state.trailLength;
   if (excess > 0) v.trail.splice(0, excess);
+}
+
+/**
+ * LAT/LON to the mission's local x/y (metres east/north of the datum the server's hello names):
+ * a local tangent-plane approximation, good to well under a metre within a few km of the datum.
+ */
+const EARTH_RADIUS_M = 6378137;
+function localXY(datum, f) {
+  const lat = num(f, 'lat');
+  const lon = num(f, 'lon');
+  if (lat === undefined || lon === undefined) return [undefined, undefined];
+  const rad = Math.PI / 180;
+  return [(lon - datum.lon) * rad * EARTH_RADIUS_M * Math.cos(datum.lat * rad),
+          (lat - datum.lat) * rad * EARTH_RADIUS_M];
 }
 
 function applyAppCast(state, text, mailTime) {

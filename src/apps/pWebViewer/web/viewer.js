@@ -1,7 +1,7 @@
 // The page: picks its data source (inlined replay, GET replay.json, or live /events), owns the
 // map view and the side pane, and exposes the test hooks window.viewerState() and
 // window.viewerFrameStats(). All state changes go through state.js's applyMail/expire.
-import { newState, applyMail, expire, summary, SCORE_COLUMNS } from './state.js';
+import { newState, stateForHello, applyMail, expire, summary, SCORE_COLUMNS } from './state.js';
 import { Replay } from './replay.js';
 import { makeView, render, toWorld, bbox, PixelLayer } from './render.js';
 
@@ -54,11 +54,7 @@ function startLive() {
       loadReplay('replay.json');
     } else if (msg.type === 'hello') {
       // A (re)connection: the server sends its retained state again after the hello.
-      state = newState({ mode: 'live', trailLength: msg.trail_length,
-                         unlabelledRing: msg.unlabelled_ring });
-      state.community = msg.community || '';
-      state.warp = msg.warp ?? 1;
-      if (Number.isFinite(msg.time)) state.time = msg.time;
+      state = stateForHello(msg, 'live');
       showButtons(msg.buttons);
     } else if (msg.type === 'mail') {
       applyMail(state, msg);

@@ -194,6 +194,22 @@ class LiveMissionThenReplay(unittest.TestCase):
                                  "replay at MOOS time %.2f" % live["time"])
                 self.assertEqual(sorted(replayed["appcasts"]), sorted(live["appcasts"]))
             self.assertEqual(page.errors, [])
+        self.check_export(*snapshots)
+
+    def check_export(self, *snapshots):
+        """The self-contained HTML file of --export, opened from disk, replays the same."""
+        html = os.path.join(self.dir, "view.html")
+        done = subprocess.run([BINARIES["viewer"], "--export=" + self.alog, "--output=" + html],
+                              capture_output=True, text=True, timeout=60)
+        self.assertEqual(done.returncode, 0, done.stderr)
+        with browser_page() as page:
+            page.goto(Path(html).as_uri())
+            self.wait_page(page, "window.viewerState && window.viewerState().replay !== undefined",
+                           "exported replay loaded")
+            for live in snapshots:
+                page.evaluate("window.viewerSeek(%r)" % live["time"])
+                self.assertEqual(view_sets(page.evaluate("window.viewerState()")), view_sets(live))
+            self.assertEqual(page.errors, [])
 
 
 def main():

@@ -135,5 +135,23 @@ class DurationExpiryTest(unittest.TestCase):
             self.assertEqual(state_at(page, 20.0)["circles"], [])
 
 
+class DatumTest(unittest.TestCase):
+    """A NODE_REPORT with LAT/LON only is placed with the datum of the hello (metres E/N)."""
+
+    def test_lat_lon_to_local_grid(self):
+        doc = replay_doc([mail("NODE_REPORT", "NAME=gilda,LAT=43.8253,LON=-70.3304,HDG=0", 1.0),
+                          mail("NODE_REPORT", "NAME=gilda,LAT=43.8263,LON=-70.3294,HDG=0", 2.0)])
+        doc["hello"].update(lat_origin=43.8253, lon_origin=-70.3304)
+        with static_site(doc) as url, browser_page() as page:
+            open_replay(page, url)
+            g = state_at(page, 1.0)["vehicles"]["gilda"]
+            self.assertAlmostEqual(g["x"], 0.0, places=6)
+            self.assertAlmostEqual(g["y"], 0.0, places=6)
+            g = state_at(page, 2.0)["vehicles"]["gilda"]
+            # 0.001 deg of latitude is 111.3 m; of longitude at 43.8 deg, 80.3 m.
+            self.assertAlmostEqual(g["y"], 111.3, delta=0.2)
+            self.assertAlmostEqual(g["x"], 80.3, delta=0.2)
+
+
 if __name__ == "__main__":
     sys.exit(0 if unittest.main(exit=False).result.wasSuccessful() else 1)
