@@ -34,10 +34,9 @@ std::string WebViewer::url() const {
 }
 
 void WebViewer::update_hello() {
-  Hello h;
+  Hello h = configured_hello(config_);
   h.community = community();
   h.warp = comms().time_warp();
-  for (const Button& b : config_.buttons) h.buttons.push_back({b.index, b.label});
   set_datum(settings(), h);
   std::lock_guard<std::mutex> lock(hello_mutex_);
   hello_ = std::move(h);

@@ -34,6 +34,10 @@ std::optional<OfflineSetup> setup(const moos::CommandLine& cl, std::ostream& err
   std::vector<std::string> warnings = settings.config_warnings;
   s.config = read_viewer_config(settings.config_lines, &warnings);
   for (const std::string& w : warnings) err << kAppName << ": warning: " << w << "\n";
+  s.hello = configured_hello(s.config);
+  s.hello.buttons.clear();  // no MOOSDB to post to
+  s.hello.replay = true;
+  s.hello.community = "replay";
   if (!settings.community.empty()) s.hello.community = settings.community;
   set_datum(settings, s.hello);
   return s;

@@ -59,7 +59,7 @@ void RetainedState::apply(const Mail& mail) {
   } else if (!mail.is_double && mail.var == "APPCAST") {
     apply_appcast(mail);
   } else {
-    latest_[mail.var] = entry(mail);
+    latest_[{mail.var, mail.is_double ? std::string() : field_of(mail.sval, "vname")}] = entry(mail);
   }
 }
 

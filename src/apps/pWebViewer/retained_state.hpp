@@ -10,7 +10,8 @@
 // - NODE_REPORT: the newest `trail_length` reports per vehicle NAME; at most `max_vehicles`
 //   vehicles (reports of more are not kept and are counted).
 // - APPCAST: the newest per (node, proc); at most `max_appcasts` pairs.
-// - Any other variable: its newest posting.
+// - Any other variable: its newest posting; for strings with a `vname` field (HAZARDSET_EVAL),
+//   the newest per vname, as the score table has a row per vehicle.
 // - A posting whose `duration` (MOOS seconds) has run out by the newest mail time is left out
 //   of the snapshot (the page would expire it at once).
 // - Strings longer than `max_value_bytes` are not kept (counted in `refused`).
@@ -70,7 +71,7 @@ class RetainedState {
   std::map<std::string, std::deque<Entry>> unlabelled_;        // by VIEW_* variable
   std::map<std::string, std::deque<Entry>> trails_;            // by vehicle NAME
   std::map<std::pair<std::string, std::string>, Entry> appcasts_;  // by (node, proc)
-  std::map<std::string, Entry> latest_;                        // by variable
+  std::map<std::pair<std::string, std::string>, Entry> latest_;  // by (variable, vname)
 };
 
 /// The value of `key` (case-insensitive) in a comma list "a=1,b={x,y},c=2"; "" when absent.

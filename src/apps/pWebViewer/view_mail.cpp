@@ -65,7 +65,9 @@ std::string hello_json(const Hello& hello) {
   std::string out = "{\"type\":\"hello\",\"app\":\"pWebViewer\",\"community\":" +
                     json_string(hello.community) + ",\"time\":" + json_number(hello.time_s) +
                     ",\"warp\":" + json_number(hello.warp) + ",\"mode\":\"" +
-                    (hello.replay ? "replay" : "live") + "\",\"buttons\":[" + buttons + "]";
+                    (hello.replay ? "replay" : "live") + "\",\"buttons\":[" + buttons + "]" +
+                    ",\"trail_length\":" + std::to_string(hello.trail_length) +
+                    ",\"unlabelled_ring\":" + std::to_string(hello.unlabelled_ring);
   if (hello.lat_origin_deg && hello.lon_origin_deg)
     out += ",\"lat_origin\":" + json_number(*hello.lat_origin_deg) +
            ",\"lon_origin\":" + json_number(*hello.lon_origin_deg);

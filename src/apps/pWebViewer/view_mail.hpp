@@ -55,6 +55,8 @@ struct Hello {
   std::vector<ButtonLabel> buttons;
   std::optional<double> lat_origin_deg;   ///< the mission's LatOrigin, when known
   std::optional<double> lon_origin_deg;   ///< the mission's LongOrigin, when known
+  std::size_t trail_length = 200;         ///< node reports the page keeps per vehicle
+  std::size_t unlabelled_ring = 2000;     ///< unlabelled VIEW_* postings it keeps per variable
 };
 std::string hello_json(const Hello& hello);
 

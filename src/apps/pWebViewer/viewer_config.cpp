@@ -98,6 +98,14 @@ const std::vector<std::string>& default_watch() {
   return kDefault;
 }
 
+Hello configured_hello(const ViewerConfig& config) {
+  Hello h;
+  for (const Button& b : config.buttons) h.buttons.push_back({b.index, b.label});
+  h.trail_length = config.limits.retention.trail_length;
+  h.unlabelled_ring = config.limits.retention.unlabelled_ring;
+  return h;
+}
+
 ViewerConfig read_viewer_config(const std::vector<moos::ConfigLine>& lines,
                                 std::vector<std::string>* warnings) {
   ViewerConfig config;

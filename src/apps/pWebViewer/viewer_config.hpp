@@ -28,6 +28,9 @@ struct ViewerConfig {
   bool appcast_request = true;  ///< ask every app for its AppCast (APPCAST_REQ)
 };
 
+/// The hello's fixed part that the configuration decides (buttons, the page's bounds).
+Hello configured_hello(const ViewerConfig& config);
+
 /// Applies the block's lines in order. Each line not understood, or with a bad value, adds a
 /// warning naming file:line, key and value, and changes nothing.
 ViewerConfig read_viewer_config(const std::vector<moos::ConfigLine>& lines,

@@ -107,6 +107,17 @@ TEST(ViewJson, StringsAreEscapedAndSafeInsideAScriptElement) {
   EXPECT_EQ(json_number(std::nan("")), "null");
 }
 
+TEST(ViewerConfig, TheHelloAnnouncesButtonsAndThePagesBounds) {
+  std::vector<std::string> warnings;
+  const Hello h = configured_hello(read_viewer_config(
+      {line("button_three", "GO # A=1"), line("trail_length", "20"), line("unlabelled_ring", "30")}, &warnings));
+  ASSERT_EQ(h.buttons.size(), 1u);
+  EXPECT_EQ(h.buttons[0].index, 3);
+  EXPECT_EQ(h.buttons[0].label, "GO");
+  EXPECT_EQ(h.trail_length, 20u);
+  EXPECT_EQ(h.unlabelled_ring, 30u);
+}
+
 TEST(ViewJson, MailCarriesDoublesAsNumbersAndStringsAsStrings) {
   Mail m;
   m.var = "SPEED";
@@ -127,13 +138,15 @@ TEST(ViewJson, HelloNamesModeButtonsAndDatum) {
   h.warp = 50;
   h.buttons = {{1, "DEPLOY"}};
   EXPECT_EQ(hello_json(h), R"({"type":"hello","app":"pWebViewer","community":"jake","time":100,)"
-                           R"("warp":50,"mode":"live","buttons":[{"index":1,"label":"DEPLOY"}]})");
+                           R"("warp":50,"mode":"live","buttons":[{"index":1,"label":"DEPLOY"}],)"
+                           R"("trail_length":200,"unlabelled_ring":2000})");
   h.replay = true;
   h.buttons.clear();
   h.lat_origin_deg = 43.8253;
   h.lon_origin_deg = -70.3304;
   EXPECT_EQ(hello_json(h), R"({"type":"hello","app":"pWebViewer","community":"jake","time":100,)"
-                           R"("warp":50,"mode":"replay","buttons":[],"lat_origin":43.8253,"lon_origin":-70.3304})");
+                           R"("warp":50,"mode":"replay","buttons":[],"trail_length":200,"unlabelled_ring":2000,)"
+                           R"("lat_origin":43.8253,"lon_origin":-70.3304})");
   EXPECT_EQ(clock_json(7, 2), R"({"type":"clock","time":7,"warp":2})");
 }
 

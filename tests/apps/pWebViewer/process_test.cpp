@@ -85,7 +85,8 @@ TEST(WebViewerProcess, ReplayServesTheLogsWatchedMail) {
   ASSERT_TRUE(replay);
   EXPECT_EQ(replay->status, 200);
   EXPECT_EQ(replay->body.rfind(R"({"hello":{"type":"hello","app":"pWebViewer","community":"replay",)"
-                               R"("time":1700000001,"warp":1,"mode":"replay","buttons":[]},"mail":[)", 0), 0u)
+                               R"("time":1700000001,"warp":1,"mode":"replay","buttons":[],"trail_length":200,)"
+                               R"("unlabelled_ring":2000},"mail":[)", 0), 0u)
       << replay->body;
   EXPECT_NE(replay->body.find(R"({"type":"mail","var":"HAZARD_SEARCH_SCORE","val":86.5,"src":"uFldHazardMetric","time":1700000003})"),
             std::string::npos);

@@ -129,6 +129,14 @@ TEST(RetainedState, OtherVariablesKeepTheirNewestValue) {
   EXPECT_EQ(kept[1].dval, 86.5);
 }
 
+TEST(RetainedState, EvaluationsAreKeptPerVehicle) {
+  RetainedState state;
+  state.apply(text("HAZARDSET_EVAL", "vname=archie,total_score=10"));
+  state.apply(text("HAZARDSET_EVAL", "vname=betty,total_score=20"));
+  state.apply(text("HAZARDSET_EVAL", "vname=archie,total_score=30"));
+  EXPECT_EQ(values(state), (Values{"vname=betty,total_score=20", "vname=archie,total_score=30"}));
+}
+
 TEST(RetainedState, ExpiredDurationsAreLeftOutOfTheSnapshot) {
   RetainedState state;
   state.apply(text("VIEW_CIRCLE", "x=0,radius=5,duration=10,label=short", 100.0));
