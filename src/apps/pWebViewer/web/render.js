@@ -7,7 +7,7 @@ import { KINDS } from './state.js';
 
 const MIN_MARKER_PX = 3;
 const PIXEL_LAYER_PX = 5;       // markers drawn smaller than this go to the pixel layer
-const MIN_VEHICLE_PX = 16;
+const MIN_VEHICLE_PX = 22;
 const LABEL_LIMIT = 1500;       // no labels when more labelled objects than this are in view
 const DEFAULT_TEXT = '#e8e8e8';
 

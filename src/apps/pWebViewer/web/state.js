@@ -213,9 +213,11 @@ function applyAppCast(state, text, mailTime) {
   state.appcasts.set(key, { key, cast, text: appCastText(cast), time: mailTime });
 }
 
-const SCORE_COLUMNS = ['vname', 'total_score', 'norm_score', 'correct_hazards', 'missed_hazards',
-                       'false_alarms', 'total_objects', 'total_time', 'received_time'];
-export { SCORE_COLUMNS };
+/** HAZARDSET_EVAL keys kept per row, with the score table's headings. */
+export const SCORE_COLUMNS = ['vname', 'total_score', 'norm_score', 'correct_hazards',
+                              'missed_hazards', 'false_alarms', 'total_objects', 'total_time'];
+export const SCORE_HEADINGS = ['vehicle', 'score', 'norm', 'correct', 'missed', 'false alarms',
+                               'objects', 'time'];
 
 function applyScore(state, text) {
   const f = parseFields(text);

@@ -1,7 +1,8 @@
 // The page: picks its data source (inlined replay, GET replay.json, or live /events), owns the
 // map view and the side pane, and exposes the test hooks window.viewerState() and
 // window.viewerFrameStats(). All state changes go through state.js's applyMail/expire.
-import { newState, stateForHello, applyMail, expire, summary, SCORE_COLUMNS } from './state.js';
+import { newState, stateForHello, applyMail, expire, summary, SCORE_COLUMNS,
+         SCORE_HEADINGS } from './state.js';
 import { Replay } from './replay.js';
 import { makeView, render, toWorld, bbox, PixelLayer } from './render.js';
 
@@ -189,10 +190,16 @@ function setupInteraction() {
 // ---------------------------------------------------------------------------------- side pane
 
 let selectedCast = null;
+let castPicked = false;    // until the user picks an AppCast, the sensor's is shown
 let paneVersion = -1;
+let firstTime = null;
 
 function updatePane() {
-  $('time').textContent = state.time.toFixed(2);
+  // Elapsed MOOS seconds since the first time seen (as pMarineViewer shows it); the absolute
+  // MOOS time (warped, so far from the epoch at warp > 1) is in the tooltip.
+  if (firstTime === null && state.time > 0) firstTime = replay ? replay.start : state.time;
+  $('time').textContent = firstTime === null ? '-' : (state.time - firstTime).toFixed(1);
+  $('time').title = `MOOS time ${state.time.toFixed(2)}`;
   $('warp').textContent = String(state.warp);
   const k = state.kinds;
   $('counts').textContent = `${state.vehicles.size} vehicles, ${k.marker.size} markers, ` +
@@ -216,7 +223,7 @@ function updateScore() {
   table.textContent = '';
   if (!rows.length) return;
   const head = table.insertRow();
-  for (const c of SCORE_COLUMNS) head.appendChild(document.createElement('th')).textContent = c;
+  for (const c of SCORE_HEADINGS) head.appendChild(document.createElement('th')).textContent = c;
   for (const r of rows) {
     const tr = table.insertRow();
     for (const c of SCORE_COLUMNS) tr.insertCell().textContent = r[c];
@@ -225,7 +232,9 @@ function updateScore() {
 
 function updateAppCasts() {
   const keys = Array.from(state.appcasts.keys()).sort();
-  if (!keys.includes(selectedCast)) selectedCast = keys.find((k) => k.endsWith('/uFldHazardSensor')) || keys[0] || null;
+  if (!castPicked || !keys.includes(selectedCast)) {
+    selectedCast = keys.find((k) => k.endsWith('/uFldHazardSensor')) || keys[0] || null;
+  }
   const list = $('appcast-list');
   list.textContent = '';
   for (const key of keys) {
@@ -233,7 +242,7 @@ function updateAppCasts() {
     const cast = state.appcasts.get(key).cast;
     li.textContent = `${key}  ${cast.configWarnings.length}/${cast.runWarningTotal}`;
     if (key === selectedCast) li.className = 'selected';
-    li.onclick = () => { selectedCast = key; paneVersion = -1; };
+    li.onclick = () => { selectedCast = key; castPicked = true; paneVersion = -1; };
     list.appendChild(li);
   }
   $('appcast-text').textContent = selectedCast ? state.appcasts.get(selectedCast).text : '';
