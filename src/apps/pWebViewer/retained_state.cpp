@@ -12,11 +12,9 @@ constexpr std::string_view kAppCastSeparator = "!@#";
 
 bool is_view_variable(const std::string& var) { return base::starts_with(var, "VIEW_"); }
 
-/// False only for an explicit active=false (pMarineViewer's removal).
-bool is_active(const std::string& value) {
-  const std::string active = field_of(value, "active");
-  return active.empty() || base::parse_bool(active).value_or(true);
-}
+/// False only for an explicit active=false, in any case (pMarineViewer's removal; the page
+/// reads it the same way).
+bool is_active(const std::string& value) { return !base::iequals(field_of(value, "active"), "false"); }
 
 template <typename Ring>
 void push_bounded(Ring& ring, typename Ring::value_type item, std::size_t bound) {
@@ -138,7 +136,8 @@ std::vector<Mail> RetainedState::snapshot() const {
   for (const auto& [seq, mail] : all) {
     if (!mail->is_double && is_view_variable(mail->var)) {
       const auto duration_s = base::parse_number(field_of(mail->sval, "duration"));
-      if (duration_s && *duration_s > 0 && mail->time_s + *duration_s < newest_time_s_) continue;
+      const double posted_s = base::parse_number(field_of(mail->sval, "time")).value_or(mail->time_s);
+      if (duration_s && *duration_s > 0 && posted_s + *duration_s < newest_time_s_) continue;
     }
     out.push_back(*mail);
   }

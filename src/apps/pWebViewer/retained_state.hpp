@@ -12,8 +12,9 @@
 // - APPCAST: the newest per (node, proc); at most `max_appcasts` pairs.
 // - Any other variable: its newest posting; for strings with a `vname` field (HAZARDSET_EVAL),
 //   the newest per vname, as the score table has a row per vehicle.
-// - A posting whose `duration` (MOOS seconds) has run out by the newest mail time is left out
-//   of the snapshot (the page would expire it at once).
+// - A posting whose `duration` (MOOS seconds, from its `time` field, else the posting's time)
+//   has run out by the newest mail time is left out of the snapshot (the page would expire it
+//   at once).
 // - Strings longer than `max_value_bytes` are not kept (counted in `refused`).
 // - snapshot() returns the kept postings in the order they arrived, oldest first.
 

@@ -1,6 +1,7 @@
 #include "viewer_config.hpp"
 
 #include "base/text.hpp"
+#include "mission_app.hpp"
 
 namespace web_viewer {
 
@@ -48,18 +49,8 @@ std::string apply(const moos::ConfigLine& line, ViewerConfig& config, WatchLines
     return std::string();
   }
   if (key == "watch") return apply_watch(value, watch);
-  if (key == "watch_defaults") {
-    const auto b = base::parse_bool(value);
-    if (!b) return "watch_defaults='" + base::excerpt(value) + "' is not true or false";
-    watch.defaults = *b;
-    return std::string();
-  }
-  if (key == "appcast_request") {
-    const auto b = base::parse_bool(value);
-    if (!b) return "appcast_request='" + base::excerpt(value) + "' is not true or false";
-    config.appcast_request = *b;
-    return std::string();
-  }
+  if (key == "watch_defaults") return mission_app::bool_param(key, value, watch.defaults);
+  if (key == "appcast_request") return mission_app::bool_param(key, value, config.appcast_request);
   if (const auto index = button_index(key)) {
     std::string problem;
     auto button = parse_button(*index, value, &problem);

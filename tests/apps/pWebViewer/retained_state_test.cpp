@@ -53,6 +53,8 @@ TEST(RetainedState, ActiveFalseRemovesTheLabel) {
   state.apply(text("VIEW_MARKER", "x=2,y=1,label=b"));
   state.apply(text("VIEW_MARKER", "x=1,y=1,label=a,active=false"));
   EXPECT_EQ(values(state), (Values{"x=2,y=1,label=b"}));
+  state.apply(text("VIEW_MARKER", "label=b,active=off"));  // only "false" removes, as on the page
+  EXPECT_EQ(values(state), (Values{"label=b,active=off"}));
   state.apply(text("VIEW_MARKER", "label=b,active=FALSE"));
   EXPECT_TRUE(values(state).empty());
 }
@@ -145,6 +147,9 @@ TEST(RetainedState, ExpiredDurationsAreLeftOutOfTheSnapshot) {
   EXPECT_EQ(state.snapshot().size(), 3u);
   state.apply(number("DB_UPTIME", 2, 111.0));  // short expired at 110
   EXPECT_EQ(values(state), (Values{"x=0,radius=5,duration=100,label=long", std::to_string(2.0)}));
+  // The object's own time field counts from when it says, as on the page.
+  state.apply(text("VIEW_CIRCLE", "x=0,radius=5,duration=100,time=5,label=old", 111.0));
+  EXPECT_EQ(state.snapshot().size(), 2u);
 }
 
 TEST(RetainedState, OversizedStringsAreNotKept) {
