@@ -5,7 +5,8 @@
 // Contract
 // - start() binds `bind_address`:`port` (0: a port the OS picks) and serves from a pool of
 //   max_clients + kSpareThreads threads, so that max_clients event streams never starve requests
-//   for files. It returns false (with `error`) when the address cannot be bound.
+//   for files (a browser fetches up to 6 at once); idle keep-alive connections close after
+//   kKeepAliveIdle_s. It returns false (with `error`) when the address cannot be bound.
 // - GET / and GET /<file>: the embedded files (web_files.hpp), 404 for anything else.
 // - GET /events: text/event-stream; the hub's events, one `data:` line each; a comment line
 //   every kKeepAlive_s when there is nothing to send. 503 when max_clients streams are open.
@@ -34,7 +35,8 @@ struct HttpOptions {
 
 class HttpServer {
  public:
-  static constexpr std::size_t kSpareThreads = 4;
+  static constexpr std::size_t kSpareThreads = 8;
+  static constexpr int kKeepAliveIdle_s = 1;
   static constexpr double kKeepAlive_s = 1.0;
   static constexpr int kWriteTimeout_s = 5;
 
