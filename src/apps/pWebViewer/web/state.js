@@ -28,6 +28,7 @@ export function newState(options = {}) {
     trailLength: options.trailLength || DEFAULT_TRAIL_LENGTH,
     unlabelledRing: options.unlabelledRing || MAX_UNLABELLED,
     vehicles: new Map(), kinds, unlabelledSeq: 0, unlabelledCount: {},
+    kindChanges: Object.fromEntries(KINDS.map((k) => [k, 0])),  // lets a renderer cache per kind
     expiring: new Set(), nextExpiry: Infinity, appcasts: new Map(), scores: new Map(), vars: new Map(),
     datum: options.datum || null,   // {lat, lon} from hello's lat_origin/lon_origin
     buttons: [], version: 0, mailCount: 0, rejected: 0,
@@ -148,12 +149,14 @@ function applyView(state, kind, text, mailTime) {
     state.nextExpiry = Math.min(state.nextExpiry, obj.expiry);
   }
   map.set(obj.key, obj);
+  state.kindChanges[kind]++;
 }
 
 function removeObject(state, map, key) {
   const old = map.get(key);
   if (!old) return;
   map.delete(key);
+  state.kindChanges[old.kind]++;
   state.expiring.delete(old);
   if (old.unlabelled) state.unlabelledCount[old.kind]--;
 }
