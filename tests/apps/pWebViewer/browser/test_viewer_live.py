@@ -3,7 +3,7 @@
 moosdb-lite (logging every posting), uFldHazardSensor with four objects, pWebViewer, and a
 pymoos2 vehicle that drives along x = 0 with a certain sensor (pd = 1). The page must show the
 vehicle moving, a marker per object, a detection circle appearing and expiring, a marker removed
-by active=false, and the sensor's AppCast; then `pWebViewer --replay=<the log>` seeked to the
+by active=false, the sensor's AppCast, and a configured button posting to the MOOSDB; then `pWebViewer --replay=<the log>` seeked to the
 times of two live snapshots must show the same objects.
 
 Usage: python test_viewer_live.py --moosdb=BIN --sensor=BIN --viewer=BIN
@@ -26,7 +26,7 @@ sys.path.insert(0, str(HERE.parents[2] / "interop" / "pymoos2"))
 from pymoos2.core.time import set_moos_time_warp  # noqa: E402
 
 import moosdb_harness  # noqa: E402
-from moosdb_harness import MoosdbLite, pymoos2_client, stop_client, wait_until  # noqa: E402
+from moosdb_harness import Mailbox, MoosdbLite, pymoos2_client, stop_client, wait_until  # noqa: E402
 from browser_support import browser_page  # noqa: E402
 
 BINARIES = {}
@@ -49,6 +49,7 @@ SENSOR_BLOCK = """\
 VIEWER_BLOCK = """\
   AppTick = 4
   http_port = 0
+  button_one = DEPLOY # DEPLOY_ALL=true # MOOS_MANUAL_OVERRIDE_ALL=false
 """
 
 
@@ -115,6 +116,8 @@ class LiveMissionThenReplay(unittest.TestCase):
         self.vehicle = pymoos2_client(self.server.port, "alpha_pymoos2")
         self.addCleanup(stop_client, self.vehicle)
         self.assertTrue(self.vehicle.wait_until_connected(10))
+        self.vehicle.register("DEPLOY_ALL", 0.0)
+        self.box = Mailbox(self.vehicle)
 
     def wait_page(self, page, condition, what):
         try:
@@ -169,6 +172,15 @@ class LiveMissionThenReplay(unittest.TestCase):
                                  ".includes('alpha')", "the sensor's AppCast naming the vehicle")
             self.wait_page(page, "document.getElementById('appcast-text').textContent"
                                  ".includes('uFldHazardSensor')", "the AppCast pane")
+            # The configured button, pressed in the page, posts its assignments to the MOOSDB.
+            page.click("#buttons button:has-text('DEPLOY')")
+
+            def deployed():
+                self.box.messages.extend(self.vehicle.fetch())
+                return any(m.string() == "true" for m in self.box.matching({"DEPLOY_ALL"})
+                           if m.is_string())
+            self.assertTrue(wait_until(deployed, 10), "DEPLOY_ALL=true posted by the button")
+
             page.wait_for_timeout(1000)
             quiet_snapshot = page.evaluate("window.viewerState()")
             self.assertEqual(page.errors, [])
