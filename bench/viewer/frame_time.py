@@ -16,7 +16,7 @@ import sys
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "tests/apps/pWebViewer/browser"))
-from browser_support import browser_page, static_site, mail, replay_doc  # noqa: E402
+from browser_support import browser_page, static_site, mail, replay_doc, next_frame  # noqa: E402
 
 SHAPES = ["triangle", "square", "circle", "diamond"]
 COLORS = ["red", "light_blue", "yellow", "green", "orange", "white"]
@@ -65,14 +65,13 @@ def percentile(values, q):
 
 def pan(page, frames, step_px):
     """Drags the map step_px per frame, waiting for a drawn frame after each move."""
-    page.evaluate("window.__frames0 = window.viewerFrameStats().draw_ms.length")
     x, y = 400, 400
     page.mouse.move(x, y)
     page.mouse.down()
     for i in range(frames):
         x += step_px if (i // 50) % 2 == 0 else -step_px  # back and forth over the field
         page.mouse.move(x, y)
-        page.evaluate("new Promise(r => requestAnimationFrame(() => requestAnimationFrame(r)))")
+        next_frame(page)
     page.mouse.up()
     stats = page.evaluate("window.viewerFrameStats()")
     return stats
@@ -100,7 +99,7 @@ def main():
             page.evaluate(f"""(() => {{ const v = window.viewerView();
                 window.viewerView({{cx: {args.side / 2}, cy: {args.side / 2},
                                    scale: v.w / ({args.side * fraction} * 1.05)}}); }})()""")
-            page.evaluate("new Promise(r => requestAnimationFrame(() => requestAnimationFrame(r)))")
+            next_frame(page)
             stats = pan(page, args.frames, 4)
             draw = stats["draw_ms"][-args.frames:]
             interval = stats["interval_ms"][-args.frames:]

@@ -8,6 +8,7 @@ import os
 import shutil
 import tempfile
 import threading
+import unittest
 from contextlib import contextmanager
 from pathlib import Path
 
@@ -92,3 +93,26 @@ def open_replay(page, base_url):
 def state_at(page, t):
     page.evaluate(f"window.viewerSeek({t})")
     return page.evaluate("window.viewerState()")
+
+
+def next_frame(page):
+    """Waits until the page has drawn a frame after this call."""
+    page.evaluate("new Promise(r => requestAnimationFrame(() => requestAnimationFrame(r)))")
+
+
+class ReplayPageCase(unittest.TestCase):
+    """One page for the whole class, in replay mode over the class's MAILS."""
+    MAILS = []
+
+    @classmethod
+    def setUpClass(cls):
+        cls._site = static_site(replay_doc(cls.MAILS))
+        cls.url = cls._site.__enter__()
+        cls._browser = browser_page()
+        cls.page = cls._browser.__enter__()
+        open_replay(cls.page, cls.url)
+
+    @classmethod
+    def tearDownClass(cls):
+        cls._browser.__exit__(None, None, None)
+        cls._site.__exit__(None, None, None)

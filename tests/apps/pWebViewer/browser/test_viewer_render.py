@@ -4,7 +4,8 @@ switches, pan by drag, zoom by wheel and buttons, replay play/speed, the frame-s
 import sys
 import unittest
 
-from browser_support import browser_page, static_site, mail, replay_doc, open_replay, state_at
+from browser_support import (ReplayPageCase, browser_page, static_site, mail, replay_doc,
+                             open_replay, state_at, next_frame)
 
 MAILS = [
     mail("VIEW_MARKER", "x=0,y=0,width=20,primary_color=red,type=square,label=r", 10.0),
@@ -23,29 +24,18 @@ PIXEL_AT = """([x, y]) => {
 }"""
 
 
-def frame(page):
-    page.evaluate("new Promise(r => requestAnimationFrame(() => requestAnimationFrame(r)))")
+class RenderTest(ReplayPageCase):
+    MAILS = MAILS
 
-
-class RenderTest(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
-        cls._site = static_site(replay_doc(MAILS))
-        cls.url = cls._site.__enter__()
-        cls._browser = browser_page()
-        cls.page = cls._browser.__enter__()
-        open_replay(cls.page, cls.url)
+        super().setUpClass()
         state_at(cls.page, 10.0)
         cls.page.evaluate("window.viewerView({cx: 50, cy: 50, scale: 2})")
-        frame(cls.page)
-
-    @classmethod
-    def tearDownClass(cls):
-        cls._browser.__exit__(None, None, None)
-        cls._site.__exit__(None, None, None)
+        next_frame(cls.page)
 
     def pixel(self, x, y):
-        frame(self.page)
+        next_frame(self.page)
         return self.page.evaluate(PIXEL_AT, [x, y])
 
     def set_layer(self, layer, on):
@@ -94,7 +84,7 @@ class RenderTest(unittest.TestCase):
         self.page.evaluate("window.viewerView({cx: 50, cy: 50, scale: 2})")
 
     def test_frame_stats_hook(self):
-        frame(self.page)
+        next_frame(self.page)
         stats = self.page.evaluate("window.viewerFrameStats()")
         self.assertGreater(len(stats["draw_ms"]), 0)
         self.assertTrue(all(ms >= 0 for ms in stats["draw_ms"]))

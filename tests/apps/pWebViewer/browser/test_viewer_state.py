@@ -4,7 +4,8 @@ a replay.json with known mail, the page seeked to chosen MOOS times."""
 import sys
 import unittest
 
-from browser_support import browser_page, static_site, mail, replay_doc, open_replay, state_at
+from browser_support import (ReplayPageCase, browser_page, static_site, mail, replay_doc,
+                             open_replay, state_at)
 
 APPCAST = ("proc=uFldHazardSensor!@#iter=7!@#node=shoreside!@#iter=7!@#"
            "messages=Sensor line one!@Vehicles: 2!@!@#!@#events_total=1!@#"
@@ -42,19 +43,8 @@ MAILS = [
 ]
 
 
-class ViewerStateTest(unittest.TestCase):
-    @classmethod
-    def setUpClass(cls):
-        cls._site = static_site(replay_doc(MAILS))
-        cls.url = cls._site.__enter__()
-        cls._browser = browser_page()
-        cls.page = cls._browser.__enter__()
-        open_replay(cls.page, cls.url)
-
-    @classmethod
-    def tearDownClass(cls):
-        cls._browser.__exit__(None, None, None)
-        cls._site.__exit__(None, None, None)
+class ViewerStateTest(ReplayPageCase):
+    MAILS = MAILS
 
     def test_replay_spans_the_mail(self):
         s = self.page.evaluate("window.viewerState()")
