@@ -2,40 +2,17 @@
 // batch of its style (one Path2D per colour/size/alpha), so a frame costs a few fill/stroke
 // calls however many objects there are. Objects smaller than a few pixels go to a pixel layer
 // (one putImageData) instead of a path. Nothing here changes the state.
-import { cssColor, rgbBytes } from './colors.js';
+import { cssColor } from './colors.js';
 import { KINDS } from './state.js';
+import { toScreenX, toScreenY, toWorld, bbox } from './view.js';
+import { pixelWord } from './pixel_layer.js';
+import { forEachInView } from './cull_grid.js';
 
 const MIN_MARKER_PX = 3;
 const PIXEL_LAYER_PX = 5;       // markers drawn smaller than this go to the pixel layer
 const MIN_VEHICLE_PX = 22;
 const LABEL_LIMIT = 1500;       // no labels when more labelled objects than this are in view
 const DEFAULT_TEXT = '#e8e8e8';
-
-/** World (x east, y north, metres) <-> canvas pixels. */
-export function makeView(cx = 0, cy = 0, scale = 1) { return { cx, cy, scale, w: 1, h: 1 }; }
-export function toScreenX(v, x) { return (x - v.cx) * v.scale + v.w / 2; }
-export function toScreenY(v, y) { return v.h / 2 - (y - v.cy) * v.scale; }
-export function toWorld(v, sx, sy) {
-  return [v.cx + (sx - v.w / 2) / v.scale, v.cy - (sy - v.h / 2) / v.scale];
-}
-
-/** The world box {x0,y0,x1,y1} of an object, cached on it (objects never change in place). */
-export function bbox(o) {
-  if (o.bbox) return o.bbox;
-  let b;
-  if (o.pts) {
-    b = { x0: Infinity, y0: Infinity, x1: -Infinity, y1: -Infinity };
-    for (let i = 0; i < o.pts.length; i += 2) {
-      b.x0 = Math.min(b.x0, o.pts[i]); b.x1 = Math.max(b.x1, o.pts[i]);
-      b.y0 = Math.min(b.y0, o.pts[i + 1]); b.y1 = Math.max(b.y1, o.pts[i + 1]);
-    }
-  } else {
-    const r = o.radius ?? (o.width ?? 0) * (o.scale ?? 1) / 2;
-    b = { x0: o.x - r, y0: o.y - r, x1: o.x + r, y1: o.y + r };
-  }
-  o.bbox = b;
-  return b;
-}
 
 // Skia rasterises one path of thousands of small overlapping contours far slower than the same
 // contours split over several paths, so a batch is drawn in chunks of CHUNK shapes.
@@ -66,47 +43,6 @@ function drawBatch(ctx, b) {
   ctx.globalAlpha = b.alpha ?? 1;
   if (b.fill) { ctx.fillStyle = b.fill; ctx.fill(b.path); }
   if (b.stroke) { ctx.strokeStyle = b.stroke; ctx.lineWidth = b.lineWidth; ctx.stroke(b.path); }
-}
-
-/** The pixel layer: tiny objects written straight into an ImageData. */
-export class PixelLayer {
-  constructor() { this.canvas = document.createElement('canvas'); this.used = false; }
-  begin(w, h) {
-    if (!this.image || this.image.width !== w || this.image.height !== h) {
-      this.canvas.width = w; this.canvas.height = h;
-      this.image = this.canvas.getContext('2d').createImageData(w, h);
-      this.words = new Uint32Array(this.image.data.buffer);
-    } else if (this.used) {
-      this.words.fill(0);
-    }
-    this.used = false;
-  }
-  square(sx, sy, size, word) {
-    const w = this.image.width, h = this.image.height;
-    const x0 = Math.max(0, Math.round(sx - size / 2)), x1 = Math.min(w, x0 + size);
-    const y0 = Math.max(0, Math.round(sy - size / 2)), y1 = Math.min(h, y0 + size);
-    for (let y = y0; y < y1; y++) this.words.fill(word, y * w + x0, y * w + x1);
-    this.used = true;
-  }
-  draw(ctx) {
-    if (!this.used) return;
-    this.canvas.getContext('2d').putImageData(this.image, 0, 0);
-    ctx.drawImage(this.canvas, 0, 0);
-  }
-}
-
-const wordCache = new Map();
-function pixelWord(css, alpha) {
-  const key = `${css}|${alpha}`;
-  let word = wordCache.get(key);
-  if (word === undefined) {
-    const [r, g, b] = rgbBytes(css);
-    const a = Math.round(255 * Math.max(0, Math.min(1, alpha)));
-    // ImageData is non-premultiplied RGBA; a little-endian Uint32 reads it as ABGR.
-    word = ((a << 24) | (b << 16) | (g << 8) | r) >>> 0;
-    wordCache.set(key, word);
-  }
-  return word;
 }
 
 /**
@@ -241,69 +177,6 @@ function circlePoints(o) {
 function shownText(o) {
   const text = o.msg || o.label;
   return !text || text === '_null_' || o.unlabelled && !o.msg ? '' : text;
-}
-
-/**
- * A uniform grid over one kind's objects, rebuilt only when that kind changed, so a frame visits
- * the cells in view instead of every object. Kinds with few objects are walked directly.
- */
-const GRID_MIN_OBJECTS = 2000;
-const GRID_CELLS_PER_SIDE = 128;
-const grids = new Map();
-
-function gridFor(state, kind) {
-  const map = state.kinds[kind];
-  let g = grids.get(kind);
-  if (g && g.map === map && g.changes === state.kindChanges[kind]) return g;
-  const all = { x0: Infinity, y0: Infinity, x1: -Infinity, y1: -Infinity };
-  for (const o of map.values()) {
-    const b = bbox(o);
-    all.x0 = Math.min(all.x0, b.x0); all.y0 = Math.min(all.y0, b.y0);
-    all.x1 = Math.max(all.x1, b.x1); all.y1 = Math.max(all.y1, b.y1);
-  }
-  const cell = Math.max((all.x1 - all.x0) / GRID_CELLS_PER_SIDE, (all.y1 - all.y0) / GRID_CELLS_PER_SIDE, 1e-6);
-  g = { map, changes: state.kindChanges[kind], all, cell, cells: new Map(), big: [] };
-  for (const o of map.values()) {
-    const b = o.bbox;
-    const i0 = Math.floor((b.x0 - all.x0) / cell), i1 = Math.floor((b.x1 - all.x0) / cell);
-    const j0 = Math.floor((b.y0 - all.y0) / cell), j1 = Math.floor((b.y1 - all.y0) / cell);
-    if ((i1 - i0 + 1) * (j1 - j0 + 1) > 16) { g.big.push(o); continue; }  // spans many cells
-    for (let i = i0; i <= i1; i++) {
-      for (let j = j0; j <= j1; j++) {
-        const key = i * 65536 + j;
-        let list = g.cells.get(key);
-        if (!list) g.cells.set(key, (list = []));
-        list.push(o);
-      }
-    }
-  }
-  grids.set(kind, g);
-  return g;
-}
-
-let frameNo = 0;
-
-/** Calls visit(o) once for every object of `kind` whose box may meet the world box w. */
-function forEachInView(state, kind, w, visit) {
-  const map = state.kinds[kind];
-  if (map.size < GRID_MIN_OBJECTS) { for (const o of map.values()) visit(o); return; }
-  const g = gridFor(state, kind);
-  const n = GRID_CELLS_PER_SIDE;
-  const i0 = Math.max(0, Math.floor((w.x0 - g.all.x0) / g.cell));
-  const i1 = Math.min(n, Math.floor((w.x1 - g.all.x0) / g.cell));
-  const j0 = Math.max(0, Math.floor((w.y0 - g.all.y0) / g.cell));
-  const j1 = Math.min(n, Math.floor((w.y1 - g.all.y0) / g.cell));
-  // Walking most of the grid costs more than the plain walk in insertion order (measured).
-  if ((i1 - i0 + 1) * (j1 - j0 + 1) > (n * n) / 4) { for (const o of map.values()) visit(o); return; }
-  const stamp = ++frameNo;  // an object in several cells is visited once
-  for (let i = i0; i <= i1; i++) {
-    for (let j = j0; j <= j1; j++) {
-      const list = g.cells.get(i * 65536 + j);
-      if (!list) continue;
-      for (const o of list) if (o.seen !== stamp) { o.seen = stamp; visit(o); }
-    }
-  }
-  for (const o of g.big) visit(o);
 }
 
 /** Draws the state. `layers` maps kind/'trails'/'vehicles'/'labels' to booleans. */

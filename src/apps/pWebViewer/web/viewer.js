@@ -4,7 +4,9 @@
 import { newState, stateForHello, applyMail, expire, summary, SCORE_COLUMNS,
          SCORE_HEADINGS } from './state.js';
 import { Replay } from './replay.js';
-import { makeView, render, toWorld, bbox, PixelLayer } from './render.js';
+import { render } from './render.js';
+import { makeView, toWorld, bbox } from './view.js';
+import { PixelLayer } from './pixel_layer.js';
 
 const $ = (id) => document.getElementById(id);
 const canvas = $('map');
