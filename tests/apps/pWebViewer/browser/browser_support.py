@@ -35,6 +35,7 @@ def browser_page(width=1280, height=800):
                 viewport={"width": width, "height": height})
             page = context.pages[0] if context.pages else context.new_page()
             page.errors = []
+            page.profile_dir = profile  # names the browser's processes (bench: their CPU time)
             page.on("pageerror", lambda e: page.errors.append(str(e)))
             page.on("console", lambda m: m.type == "error" and page.errors.append(m.text))
             try:
