@@ -16,10 +16,15 @@ export class PixelLayer {
     this.used = false;
   }
   square(sx, sy, size, word) {
-    const w = this.image.width, h = this.image.height;
-    const x0 = Math.max(0, Math.round(sx - size / 2)), x1 = Math.min(w, x0 + size);
-    const y0 = Math.max(0, Math.round(sy - size / 2)), y1 = Math.min(h, y0 + size);
-    for (let y = y0; y < y1; y++) this.words.fill(word, y * w + x0, y * w + x1);
+    const w = this.image.width, h = this.image.height, words = this.words;
+    const left = Math.round(sx - size / 2), top = Math.round(sy - size / 2);
+    const x0 = left < 0 ? 0 : left, x1 = left + size > w ? w : left + size;
+    const y0 = top < 0 ? 0 : top, y1 = top + size > h ? h : top + size;
+    // A plain loop: the squares are a few pixels, too small for fill()'s call to pay off.
+    for (let y = y0; y < y1; y++) {
+      const row = y * w;
+      for (let x = x0; x < x1; x++) words[row + x] = word;
+    }
     this.used = true;
   }
   draw(ctx) {

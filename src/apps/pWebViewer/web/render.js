@@ -11,7 +11,7 @@ import { forEachInView } from './cull_grid.js';
 const MIN_MARKER_PX = 3;
 const PIXEL_LAYER_PX = 5;       // markers drawn smaller than this go to the pixel layer
 const MIN_VEHICLE_PX = 22;
-const LABEL_LIMIT = 1500;       // no labels when more labelled objects than this are in view
+const LABEL_LIMIT = 500;        // no labels when more labelled objects than this are in view
 const DEFAULT_TEXT = '#e8e8e8';
 
 // Skia rasterises one path of thousands of small overlapping contours far slower than the same
@@ -228,7 +228,7 @@ export function render(ctx, state, v, layers, pixels) {
 }
 
 /** Shapes under TINY_PX on screen are a pixel-layer square: the view is too coarse to tell more. */
-const TINY_PX = 4;
+const TINY_PX = 6;
 function isTiny(b, v) {
   return (b.x1 - b.x0) * v.scale < TINY_PX && (b.y1 - b.y0) * v.scale < TINY_PX;
 }
