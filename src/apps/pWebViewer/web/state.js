@@ -31,7 +31,7 @@ export function newState(options = {}) {
     kindChanges: Object.fromEntries(KINDS.map((k) => [k, 0])),  // lets a renderer cache per kind
     expiring: new Set(), nextExpiry: Infinity, appcasts: new Map(), scores: new Map(), vars: new Map(),
     datum: options.datum || null,   // {lat, lon} from hello's lat_origin/lon_origin
-    buttons: [], version: 0, mailCount: 0, rejected: 0,
+    version: 0, mailCount: 0, rejected: 0,
   };
 }
 
@@ -245,6 +245,7 @@ export function summary(state) {
     markers: labels('marker'), circles: labels('circle'), polygons: labels('polygon'),
     seglists: labels('seglist'), points: labels('point'), appcasts,
     score: state.scores.size ? Array.from(state.scores.values()) : null,
+    vars: Object.fromEntries(state.vars),   // the latest value of every other variable
     mail: state.mailCount, rejected: state.rejected,
   };
 }

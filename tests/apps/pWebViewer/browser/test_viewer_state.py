@@ -37,6 +37,7 @@ MAILS = [
     mail("HAZARDSET_EVAL", "vname=jake,report_name=jake,total_score=20,norm_score=86.67,"
                            "correct_hazards=5,missed_hazards=0,false_alarms=2,total_objects=7",
          106.0),
+    mail("HAZARD_SEARCH_SCORE", 86.67, 106.0, src="uFldHazardMetric"),
     # Malformed postings are counted and ignored.
     mail("VIEW_CIRCLE", "x=1,radius=3", 106.0),
     mail("NODE_REPORT", "X=1,Y=2", 106.0),
@@ -103,6 +104,7 @@ class ViewerStateTest(ReplayPageCase):
         self.assertEqual(s["score"][0]["vname"], "jake")
         self.assertEqual(s["score"][0]["norm_score"], "86.67")
         self.assertEqual(s["rejected"], 2)
+        self.assertEqual(s["vars"]["HAZARD_SEARCH_SCORE"], 86.67)  # a double stays a number
         self.page.wait_for_selector("#score-box:not([hidden])")
         self.assertIn("86.67", self.page.inner_text("#score"))
 
