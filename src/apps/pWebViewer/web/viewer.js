@@ -1,6 +1,7 @@
-// The page: picks its data source (inlined replay, GET replay.json, or live /events), owns the
-// map view and the side pane, and exposes the test hooks window.viewerState() and
-// window.viewerFrameStats(). All state changes go through state.js's applyMail/expire.
+// The page: picks its data source (an inlined replay, ?replay=URL, or the server's /events,
+// whose hello says live or replay), owns the map view and the side pane, and exposes the test
+// hooks window.viewerState() and window.viewerFrameStats(). All state changes go through
+// state.js's applyMail/expire. Text from the mail reaches the DOM only as textContent.
 import { newState, stateForHello, applyMail, expire, summary, SCORE_COLUMNS,
          SCORE_HEADINGS } from './state.js';
 import { Replay } from './replay.js';
@@ -28,6 +29,7 @@ let replay = null;
 let viewTouched = false;   // until the user pans or zooms, the view follows the content
 let dirty = true;
 let drawnVersion = -1;
+let drawnState = null;
 let lastFrame = 0;
 let objectsDrawn = 0;
 const frameStats = { draw_ms: [], interval_ms: [] };
@@ -37,12 +39,11 @@ const MAX_STATS = 600;
 
 function startReplay(data) {
   replay = new Replay(data);
-  state = replay.state;
   replay.seek(replay.start);
   state = replay.state;
   $('replay').hidden = false;
   $('mode').textContent = 'replay';
-  showButtons(data.hello && data.hello.buttons);
+  showButtons([]);  // a replay posts nothing
   resize();
 }
 
@@ -194,6 +195,7 @@ function setupInteraction() {
 let selectedCast = null;
 let castPicked = false;    // until the user picks an AppCast, the sensor's is shown
 let paneVersion = -1;
+let paneState = null;
 let firstTime = null;
 
 function updatePane() {
@@ -212,8 +214,9 @@ function updatePane() {
     if (span > 0) $('slider').value = String(Math.round(1000 * (replay.t - replay.start) / span));
     $('replay-time').textContent = `${(replay.t - replay.start).toFixed(1)} / ${span.toFixed(1)} s`;
   }
-  if (paneVersion === state.version) return;
+  if (paneVersion === state.version && paneState === state) return;
   paneVersion = state.version;
+  paneState = state;
   updateScore();
   updateAppCasts();
 }
@@ -264,7 +267,8 @@ function frame(now) {
     state = replay.state;
   }
   if (!viewTouched && state.version !== drawnVersion) fitIfOutside();
-  if (dirty || state.version !== drawnVersion) {
+  // A seek back or a reconnection brings a new state object, whose version may repeat.
+  if (dirty || state !== drawnState || state.version !== drawnVersion) {
     const t0 = performance.now();
     objectsDrawn = render(ctx, state, view, layers, pixels);
     if (FLUSH_FOR_STATS) ctx.getImageData(0, 0, 1, 1);  // wait for the rasteriser
@@ -273,6 +277,7 @@ function frame(now) {
     lastDrawn = now;
     dirty = false;
     drawnVersion = state.version;
+    drawnState = state;
   }
   if (now - lastPane > 250) { updatePane(); lastPane = now; }
   lastFrame = now;
