@@ -77,10 +77,13 @@ function markerSprite(st, shape, size) {
 
 function circleSprite(st, vertices, radiusPx) {
   const r = Math.round(radiusPx);
-  return sprite(`c|${st.fillKey}|${st.edgeKey}|${st.vertexKey}|${vertices}|${r}`, 2 * r + 2 * (st.vertexSize || 0), (g, mid) => {
+  const key = `c|${st.fillKey}|${st.edgeKey}|${st.vertexKey}|${vertices}|${r}`;
+  return sprite(key, 2 * r + 2 * (st.vertexSize || 0), (g, mid) => {
     const pts = circlePoints({ x: mid, y: mid, radius: r, vertices });
     const path = new Path2D();
-    for (let i = 0; i < pts.length; i += 2) (i ? path.lineTo : path.moveTo).call(path, pts[i], pts[i + 1]);
+    for (let i = 0; i < pts.length; i += 2) {
+      if (i === 0) path.moveTo(pts[i], pts[i + 1]); else path.lineTo(pts[i], pts[i + 1]);
+    }
     path.closePath();
     if (st.fill) { g.globalAlpha = st.alpha; g.fillStyle = st.fill; g.fill(path); }
     if (st.edge) { g.globalAlpha = 1; g.strokeStyle = st.edge; g.lineWidth = st.edgeWidth; g.stroke(path); }

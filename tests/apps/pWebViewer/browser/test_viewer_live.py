@@ -3,8 +3,9 @@
 moosdb-lite (logging every posting), uFldHazardSensor with four objects, pWebViewer, and a
 pymoos2 vehicle that drives along x = 0 with a certain sensor (pd = 1). The page must show the
 vehicle moving, a marker per object, a detection circle appearing and expiring, a marker removed
-by active=false, the sensor's AppCast, and a configured button posting to the MOOSDB; then `pWebViewer --replay=<the log>` seeked to the
-times of two live snapshots must show the same objects.
+by active=false, the sensor's AppCast, and a configured button posting to the MOOSDB; then
+`pWebViewer --replay=<the log>` seeked to the times of two live snapshots, and the exported
+HTML file opened from disk, must show the same objects.
 
 Usage: python test_viewer_live.py --moosdb=BIN --sensor=BIN --viewer=BIN
 """
