@@ -25,6 +25,7 @@ export function newState(options = {}) {
   for (const k of KINDS) kinds[k] = new Map();
   return {
     time: 0, warp: 1, mode: options.mode || 'live', community: '',
+    firstTime: Infinity,  // the earliest MOOS time seen: the page shows time since then
     trailLength: options.trailLength || DEFAULT_TRAIL_LENGTH,
     unlabelledRing: options.unlabelledRing || MAX_UNLABELLED,
     vehicles: new Map(), kinds, unlabelledSeq: 0, unlabelledCount: {},
@@ -44,7 +45,7 @@ export function stateForHello(hello, mode) {
   });
   state.community = hello.community || '';
   state.warp = hello.warp ?? 1;
-  if (Number.isFinite(hello.time)) state.time = hello.time;
+  if (Number.isFinite(hello.time)) state.time = state.firstTime = hello.time;
   return state;
 }
 
@@ -69,7 +70,10 @@ export function expire(state, time) {
 export function applyMail(state, mail) {
   if (!mail || mail.type !== 'mail' || typeof mail.var !== 'string') return;
   state.mailCount++;
-  if (Number.isFinite(mail.time) && mail.time > state.time) state.time = mail.time;
+  if (Number.isFinite(mail.time)) {
+    if (mail.time > state.time) state.time = mail.time;
+    if (mail.time < state.firstTime) state.firstTime = mail.time;
+  }
   const kind = KIND_OF_VAR[mail.var];
   if (kind) applyView(state, kind, String(mail.val), mail.time);
   else if (NODE_REPORT_VARS.has(mail.var)) applyNodeReport(state, String(mail.val), mail.time);
@@ -241,7 +245,8 @@ export function summary(state) {
   const appcasts = {};
   for (const [key, a] of state.appcasts) appcasts[key] = a.text;
   return {
-    time: state.time, warp: state.warp, mode: state.mode, vehicles,
+    time: state.time, elapsed: Number.isFinite(state.firstTime) ? state.time - state.firstTime : 0,
+    warp: state.warp, mode: state.mode, vehicles,
     markers: labels('marker'), circles: labels('circle'), polygons: labels('polygon'),
     seglists: labels('seglist'), points: labels('point'), appcasts,
     score: state.scores.size ? Array.from(state.scores.values()) : null,

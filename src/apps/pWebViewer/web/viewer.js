@@ -196,13 +196,12 @@ let selectedCast = null;
 let castPicked = false;    // until the user picks an AppCast, the sensor's is shown
 let paneVersion = -1;
 let paneState = null;
-let firstTime = null;
 
 function updatePane() {
-  // Elapsed MOOS seconds since the first time seen (as pMarineViewer shows it); the absolute
+  // Elapsed MOOS seconds since the earliest time seen (as pMarineViewer shows it); the absolute
   // MOOS time (warped, so far from the epoch at warp > 1) is in the tooltip.
-  if (firstTime === null && state.time > 0) firstTime = replay ? replay.start : state.time;
-  $('time').textContent = firstTime === null ? '-' : (state.time - firstTime).toFixed(1);
+  const first = state.firstTime;
+  $('time').textContent = Number.isFinite(first) ? (state.time - first).toFixed(1) : '-';
   $('time').title = `MOOS time ${state.time.toFixed(2)}`;
   $('warp').textContent = String(state.warp);
   const k = state.kinds;

@@ -79,7 +79,10 @@ def mail(var, val, time, src="test"):
     return {"type": "mail", "var": var, "val": val, "src": src, "time": time}
 
 
-def replay_doc(mails, time=0.0):
+def replay_doc(mails, time=None):
+    """A replay.json as pWebViewer serves it: the hello's time is the log's first time."""
+    if time is None:
+        time = min((m["time"] for m in mails), default=0.0)
     return {"hello": {"type": "hello", "app": "pWebViewer", "community": "shoreside",
                       "time": time, "warp": 1, "mode": "replay", "buttons": []},
             "mail": mails}

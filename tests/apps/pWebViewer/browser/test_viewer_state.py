@@ -52,6 +52,7 @@ class ViewerStateTest(ReplayPageCase):
         self.assertEqual(s["replay"]["start"], 100.0)
         self.assertEqual(s["replay"]["end"], 106.0)
         self.assertEqual(s["mode"], "replay")
+        self.assertEqual(state_at(self.page, 104.0)["elapsed"], 4.0)
 
     def test_same_label_replaces(self):
         s = state_at(self.page, 101.0)
