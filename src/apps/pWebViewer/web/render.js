@@ -7,6 +7,9 @@ import { KINDS } from './state.js';
 import { toScreenX, toScreenY, toWorld, bbox } from './view.js';
 import { pixelWord } from './pixel_layer.js';
 import { forEachInView } from './cull_grid.js';
+import {
+  MAX_SPRITE_PX, markerSprite, circleSprite, stamp, addShape, circlePoints,
+} from './sprites.js';
 
 const MIN_MARKER_PX = 3;
 const PIXEL_LAYER_PX = 5;       // markers drawn smaller than this go to the pixel layer
@@ -43,75 +46,6 @@ function drawBatch(ctx, b) {
   ctx.globalAlpha = b.alpha ?? 1;
   if (b.fill) { ctx.fillStyle = b.fill; ctx.fill(b.path); }
   if (b.stroke) { ctx.strokeStyle = b.stroke; ctx.lineWidth = b.lineWidth; ctx.stroke(b.path); }
-}
-
-/**
- * Sprites: a marker or circle of a given style and pixel size is drawn once on a small canvas,
- * then stamped with drawImage, which costs far less than rasterising its path again.
- */
-const MAX_SPRITE_PX = 64;
-const MAX_SPRITES = 1000;
-const sprites = new Map();
-
-function sprite(key, sizePx, draw) {
-  let c = sprites.get(key);
-  if (!c) {
-    if (sprites.size >= MAX_SPRITES) sprites.clear();
-    c = document.createElement('canvas');
-    c.width = c.height = Math.ceil(sizePx) + 4;  // room for the edge's anti-aliasing
-    draw(c.getContext('2d'), c.width / 2);
-    sprites.set(key, c);
-  }
-  return c;
-}
-
-function markerSprite(st, shape, size) {
-  const px = Math.round(size);
-  return sprite(`m|${st.fillKey}|${st.edgeKey}|${shape}|${px}`, px, (g, mid) => {
-    const path = new Path2D();
-    addShape(path, shape, mid, mid, px);
-    if (st.fill) { g.globalAlpha = st.alpha; g.fillStyle = st.fill; g.fill(path); }
-    if (st.edge) { g.globalAlpha = 1; g.strokeStyle = st.edge; g.lineWidth = 1; g.stroke(path); }
-  });
-}
-
-function circleSprite(st, vertices, radiusPx) {
-  const r = Math.round(radiusPx);
-  const key = `c|${st.fillKey}|${st.edgeKey}|${st.vertexKey}|${vertices}|${r}`;
-  return sprite(key, 2 * r + 2 * (st.vertexSize || 0), (g, mid) => {
-    const pts = circlePoints({ x: mid, y: mid, radius: r, vertices });
-    const path = new Path2D();
-    for (let i = 0; i < pts.length; i += 2) {
-      if (i === 0) path.moveTo(pts[i], pts[i + 1]); else path.lineTo(pts[i], pts[i + 1]);
-    }
-    path.closePath();
-    if (st.fill) { g.globalAlpha = st.alpha; g.fillStyle = st.fill; g.fill(path); }
-    if (st.edge) { g.globalAlpha = 1; g.strokeStyle = st.edge; g.lineWidth = st.edgeWidth; g.stroke(path); }
-    if (st.vertex) {
-      g.fillStyle = st.vertex;
-      const vs = st.vertexSize;
-      for (let i = 0; i < pts.length; i += 2) g.fillRect(pts[i] - vs / 2, pts[i + 1] - vs / 2, vs, vs);
-    }
-  });
-}
-
-function stamp(ctx, image, sx, sy) {
-  ctx.drawImage(image, Math.round(sx - image.width / 2), Math.round(sy - image.height / 2));
-}
-
-function addShape(path, shape, sx, sy, size) {
-  const r = size / 2;
-  switch (shape) {
-    case 'square': path.rect(sx - r, sy - r, size, size); break;
-    case 'diamond':
-      path.moveTo(sx, sy - r); path.lineTo(sx + r, sy); path.lineTo(sx, sy + r);
-      path.lineTo(sx - r, sy); path.closePath(); break;
-    case 'triangle':
-      path.moveTo(sx, sy - r); path.lineTo(sx + r, sy + r); path.lineTo(sx - r, sy + r);
-      path.closePath(); break;
-    default:  // circle, and pMarineViewer's efield/gateway/kelp drawn as a disc
-      path.moveTo(sx + r, sy); path.arc(sx, sy, r, 0, 2 * Math.PI); break;
-  }
 }
 
 function addPolyline(path, v, pts, closed) {
@@ -162,19 +96,6 @@ function addVertices(batches, v, st, pts) {
   for (let i = 0; i < pts.length; i += 2) {
     path.rect(toScreenX(v, pts[i]) - s / 2, toScreenY(v, pts[i + 1]) - s / 2, s, s);
   }
-}
-
-function circlePoints(o) {
-  if (o.circlePts) return o.circlePts;
-  // Screen-space callers (sprites) pass y down; the polygon is symmetric enough not to care.
-  const n = o.vertices >= 3 ? o.vertices : 36;
-  const pts = [];
-  for (let i = 0; i < n; i++) {
-    const a = (2 * Math.PI * i) / n;
-    pts.push(o.x + o.radius * Math.cos(a), o.y + o.radius * Math.sin(a));
-  }
-  o.circlePts = pts;
-  return pts;
 }
 
 function shownText(o) {
