@@ -12,6 +12,12 @@ MAILS = [
     mail("VIEW_CIRCLE", "x=100,y=0,radius=10,fill_color=blue,fill_transparency=1,"
                         "edge_color=blue,label=c", 10.0),
     mail("VIEW_MARKER", "x=0,y=100,width=20,primary_color=green,type=square,label=g", 10.0),
+    # MOOS colour words: underscores, grayNN, hex:, invisible.
+    mail("VIEW_MARKER", "x=-60,y=0,width=20,primary_color=light_blue,type=square,label=lb", 10.0),
+    mail("VIEW_MARKER", "x=-60,y=40,width=20,primary_color=gray70,type=square,label=g70", 10.0),
+    mail("VIEW_MARKER", "x=-60,y=80,width=20,primary_color=hex:ff8800,type=square,label=hx", 10.0),
+    mail("VIEW_MARKER", "x=-60,y=120,width=20,primary_color=invisible,edge_color=invisible,"
+                        "type=square,label=inv", 10.0),
     mail("NODE_REPORT", "NAME=v,X=100,Y=100,HDG=0,TYPE=kayak", 10.0),
     mail("NODE_REPORT", "NAME=v,X=100,Y=110,HDG=0,TYPE=kayak", 30.0),
 ]
@@ -47,6 +53,13 @@ class RenderTest(ReplayPageCase):
         self.assertEqual(self.pixel(0, 0)[:3], [255, 0, 0])
         self.assertEqual(self.pixel(0, 100)[:3], [0, 128, 0])
         self.assertEqual(self.pixel(100, 0)[:3], [0, 0, 255])
+
+    def test_moos_colour_words(self):
+        self.assertEqual(self.pixel(-60, 0)[:3], [173, 216, 230])
+        self.assertEqual(self.pixel(-60, 40)[:3], [179, 179, 179])
+        self.assertEqual(self.pixel(-60, 80)[:3], [255, 136, 0])
+        background = self.pixel(-60, 160)
+        self.assertEqual(self.pixel(-60, 120), background)
 
     def test_layer_switches_hide_and_show(self):
         self.set_layer("marker", False)
@@ -88,7 +101,7 @@ class RenderTest(ReplayPageCase):
         stats = self.page.evaluate("window.viewerFrameStats()")
         self.assertGreater(len(stats["draw_ms"]), 0)
         self.assertTrue(all(ms >= 0 for ms in stats["draw_ms"]))
-        self.assertEqual(stats["objects_drawn"], 3)
+        self.assertEqual(stats["objects_drawn"], 7)
 
 
 class ReplayControlsTest(unittest.TestCase):
