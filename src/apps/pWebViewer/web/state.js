@@ -28,7 +28,7 @@ export function newState(options = {}) {
     firstTime: Infinity,  // the earliest MOOS time seen: the page shows time since then
     trailLength: options.trailLength || DEFAULT_TRAIL_LENGTH,
     unlabelledRing: options.unlabelledRing || MAX_UNLABELLED,
-    vehicles: new Map(), kinds, unlabelledSeq: 0, unlabelledCount: {},
+    vehicles: new Map(), kinds, unlabelledSeq: 0, unlabelledCount: {}, unlabelledQueue: {},
     kindChanges: Object.fromEntries(KINDS.map((k) => [k, 0])),  // lets a renderer cache per kind
     expiring: new Set(), nextExpiry: Infinity, appcasts: new Map(), scores: new Map(), vars: new Map(),
     datum: options.datum || null,   // {lat, lon} from hello's lat_origin/lon_origin
@@ -144,7 +144,6 @@ function applyView(state, kind, text, mailTime) {
   } else {
     obj.key = `_${kind}_${++state.unlabelledSeq}`;
     obj.unlabelled = true;
-    trimUnlabelled(state, kind, map);
   }
   const duration = num(f, 'duration');
   if (duration !== undefined && duration > 0) {
@@ -154,6 +153,7 @@ function applyView(state, kind, text, mailTime) {
   }
   map.set(obj.key, obj);
   state.kindChanges[kind]++;
+  if (obj.unlabelled) trimUnlabelled(state, kind, map, obj.key);
 }
 
 function removeObject(state, map, key) {
@@ -165,13 +165,21 @@ function removeObject(state, map, key) {
   if (old.unlabelled) state.unlabelledCount[old.kind]--;
 }
 
-/** Keeps at most state.unlabelledRing unlabelled objects per kind, dropping the oldest. */
-function trimUnlabelled(state, kind, map) {
-  const count = (state.unlabelledCount[kind] || 0) + 1;
-  state.unlabelledCount[kind] = count;
-  if (count <= state.unlabelledRing) return;
-  for (const [key, obj] of map) {  // Map iteration is insertion order: oldest first
-    if (obj.unlabelled) { removeObject(state, map, key); break; }
+/**
+ * Counts a new unlabelled object of `kind` (key) and keeps at most state.unlabelledRing of them,
+ * dropping the oldest: a queue of their keys, oldest first (keys of objects that have expired
+ * meanwhile are skipped), so a posting costs O(1) however many labelled objects there are.
+ */
+function trimUnlabelled(state, kind, map, key) {
+  const queue = state.unlabelledQueue[kind] || (state.unlabelledQueue[kind] = { keys: [], head: 0 });
+  queue.keys.push(key);
+  state.unlabelledCount[kind] = (state.unlabelledCount[kind] || 0) + 1;
+  while (state.unlabelledCount[kind] > state.unlabelledRing && queue.head < queue.keys.length) {
+    removeObject(state, map, queue.keys[queue.head++]);
+  }
+  if (queue.head > 1024 && queue.head * 2 > queue.keys.length) {
+    queue.keys = queue.keys.slice(queue.head);
+    queue.head = 0;
   }
 }
 

@@ -128,6 +128,22 @@ class DurationExpiryTest(unittest.TestCase):
             self.assertEqual(state_at(page, 20.0)["circles"], [])
 
 
+class UnlabelledRingTest(unittest.TestCase):
+    """Unlabelled postings are a ring of the newest unlabelled_ring (the hello's) per variable;
+    labelled ones are not counted in it."""
+
+    def test_oldest_unlabelled_dropped(self):
+        mails = [mail("VIEW_CIRCLE", "x=0,y=0,radius=5,label=keep", 1.0)]
+        mails += [mail("VIEW_CIRCLE", "x=%d,y=0,radius=5" % i, 1.0 + i) for i in range(1, 6)]
+        doc = replay_doc(mails)
+        doc["hello"]["unlabelled_ring"] = 3
+        with static_site(doc) as url, browser_page() as page:
+            open_replay(page, url)
+            self.assertEqual(state_at(page, 3.0)["circles"], ["keep", "_circle_1", "_circle_2"])
+            self.assertEqual(state_at(page, 6.0)["circles"],
+                             ["keep", "_circle_3", "_circle_4", "_circle_5"])
+
+
 class DatumTest(unittest.TestCase):
     """A NODE_REPORT with LAT/LON only is placed with the datum of the hello (metres E/N)."""
 
