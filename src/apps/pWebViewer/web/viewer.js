@@ -31,6 +31,7 @@ let dirty = true;
 let drawnVersion = -1;
 let drawnState = null;
 let lastFrame = 0;
+let lastDrawn = 0;
 let objectsDrawn = 0;
 const frameStats = { draw_ms: [], interval_ms: [] };
 const MAX_STATS = 600;
@@ -282,7 +283,6 @@ function frame(now) {
   lastFrame = now;
   requestAnimationFrame(frame);
 }
-let lastDrawn = 0;
 
 /**
  * While the user has not moved the view, keep everything in it: fit as soon as there is
