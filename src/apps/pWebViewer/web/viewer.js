@@ -207,7 +207,8 @@ function updatePane() {
   $('warp').textContent = String(state.warp);
   const k = state.kinds;
   $('counts').textContent = `${state.vehicles.size} vehicles, ${k.marker.size} markers, ` +
-    `${k.circle.size} circles, ${k.polygon.size} polygons`;
+    `${k.circle.size} circles, ${k.polygon.size} polygons` +
+    (state.rejected ? `, ${state.rejected} malformed postings ignored` : '');
   if (replay) {
     $('play').textContent = replay.playing ? 'pause' : 'play';
     const span = replay.end - replay.start;

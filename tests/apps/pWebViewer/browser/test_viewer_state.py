@@ -105,6 +105,8 @@ class ViewerStateTest(ReplayPageCase):
         self.assertEqual(s["score"][0]["vname"], "jake")
         self.assertEqual(s["score"][0]["norm_score"], "86.67")
         self.assertEqual(s["rejected"], 2)
+        self.page.wait_for_function("document.getElementById('counts').textContent"
+                                    ".includes('2 malformed postings ignored')")
         self.assertEqual(s["vars"]["HAZARD_SEARCH_SCORE"], 86.67)  # a double stays a number
         self.page.wait_for_selector("#score-box:not([hidden])")
         self.assertIn("86.67", self.page.inner_text("#score"))
