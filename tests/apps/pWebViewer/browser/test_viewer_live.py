@@ -3,7 +3,8 @@
 moosdb-lite (logging every posting), uFldHazardSensor with four objects, pWebViewer, and a
 pymoos2 vehicle that drives along x = 0 with a certain sensor (pd = 1). The page must show the
 vehicle moving, a marker per object, a detection circle appearing and expiring, a marker removed
-by active=false, the sensor's AppCast, and a configured button posting to the MOOSDB; then
+by active=false, the sensor's AppCast, and a configured button posting to the MOOSDB; a page
+that connects late shows the same objects (the retained state); then
 `pWebViewer --replay=<the log>` seeked to the times of two live snapshots, and the exported
 HTML file opened from disk, must show the same objects.
 
@@ -185,6 +186,17 @@ class LiveMissionThenReplay(unittest.TestCase):
             page.wait_for_timeout(1000)
             quiet_snapshot = page.evaluate("window.viewerState()")
             self.assertEqual(page.errors, [])
+
+            # A page that connects now draws what the first one does, from the retained state.
+            late = page.context.new_page()
+            late.goto(self.url)
+            self.wait_page(late, "window.viewerState().markers.length === %d" % len(OBJECTS),
+                           "the late page's markers")
+            late.wait_for_timeout(500)
+            self.assertEqual(view_sets(late.evaluate("window.viewerState()")),
+                             view_sets(page.evaluate("window.viewerState()")))
+            self.assertEqual(sorted(late.evaluate("window.viewerState().appcasts")),
+                             sorted(quiet_snapshot["appcasts"]))
 
         stop(self.viewer)
         stop(self.sensor)
