@@ -2,6 +2,8 @@
 
 #include <httplib.h>
 
+#include <chrono>
+
 #include "base/text.hpp"
 #include "web_files.hpp"
 
@@ -82,6 +84,10 @@ bool HttpServer::start(const HttpOptions& options, std::string* error) {
     return false;
   }
   thread_ = std::thread([this] { server_->listen_after_bind(); });
+  // httplib's stop() does nothing before the loop runs: wait for it, so that a stop right after
+  // start() (a short test, a start-up that fails later) cannot leave the thread listening.
+  for (int i = 0; i < kStartWaitSteps && !server_->is_running(); ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
   return true;
 }
 

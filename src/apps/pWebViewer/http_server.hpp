@@ -37,6 +37,8 @@ class HttpServer {
  public:
   static constexpr std::size_t kSpareThreads = 8;
   static constexpr int kKeepAliveIdle_s = 1;
+  /// Milliseconds start() waits at most for the listening loop to run.
+  static constexpr int kStartWaitSteps = 5000;
   static constexpr double kKeepAlive_s = 1.0;
   static constexpr int kWriteTimeout_s = 5;
 

@@ -2,6 +2,9 @@
 // the page's files, the event stream (hello, retained state, live mail, clock), the buttons.
 #include <gtest/gtest.h>
 #include <httplib.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
 
 #include <atomic>
 #include <mutex>
@@ -159,6 +162,52 @@ TEST_F(ViewerOnBus, MoreStreamsThanMaxClientsAreRefused) {
   const auto second = client().Get("/events");
   ASSERT_TRUE(second);
   EXPECT_EQ(second->status, 503);
+}
+
+/// A browser that asks for the event stream and then never reads (a raw socket).
+class StalledReader {
+ public:
+  explicit StalledReader(int port) {
+    fd_ = ::socket(AF_INET, SOCK_STREAM, 0);
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_port = htons(static_cast<std::uint16_t>(port));
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    int small = 4096;  // a small receive buffer: the server's writes block sooner
+    ::setsockopt(fd_, SOL_SOCKET, SO_RCVBUF, &small, sizeof small);
+    connected_ = ::connect(fd_, reinterpret_cast<sockaddr*>(&address), sizeof address) == 0;
+    const std::string request = "GET /events HTTP/1.1\r\nHost: 127.0.0.1\r\n\r\n";
+    connected_ = connected_ && ::send(fd_, request.data(), request.size(), 0) == static_cast<ssize_t>(request.size());
+  }
+  ~StalledReader() { ::close(fd_); }
+  bool connected() const { return connected_; }
+
+ private:
+  int fd_ = -1;
+  bool connected_ = false;
+};
+
+TEST_F(ViewerOnBus, ABrowserThatFallsBehindIsDroppedAndTheOthersKeepTheirStream) {
+  ASSERT_TRUE(start("  max_queued = 100\n"));
+  StalledReader stalled(app->http_port());
+  ASSERT_TRUE(stalled.connected());
+  EventReader reader(app->http_port());
+  ASSERT_TRUE(reader.wait_for("hello"));
+  const double end = test_support::steady_now_s() + 20.0;
+  const std::string big(30000, 'x');
+  int posted = 0;
+  // Far more than the stalled socket's buffers and the 100 queued events hold.
+  while (app->feed()->hub().dropped() == 0 && test_support::steady_now_s() < end) {
+    for (int i = 0; i < 20; ++i) bus.post("VIEW_POINT", "x=1,y=2,msg=" + big + ",label=p" + std::to_string(posted++));
+    app->run_for(0.5);
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  EXPECT_EQ(app->feed()->hub().dropped(), 1u);
+  EXPECT_NE(app->terminal_report().find("1 dropped for falling behind"), std::string::npos);
+  // The reading browser still gets what comes next.
+  bus.post("VIEW_POINT", "x=1,y=2,label=after");
+  app->run_for(0.5);
+  EXPECT_TRUE(reader.wait_for("label=after", 20.0));
 }
 
 TEST_F(ViewerOnBus, AnAddressInUseEndsStartUp) {
