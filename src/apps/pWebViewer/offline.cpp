@@ -21,8 +21,13 @@ struct OfflineSetup {
 /// The block of the mission file (when one is given) and the hello of a replay.
 std::optional<OfflineSetup> setup(const moos::CommandLine& cl, std::ostream& err) {
   OfflineSetup s;
-  s.hello.replay = true;
-  s.hello.community = "replay";
+  const auto for_replay = [&s] {
+    s.hello = configured_hello(s.config);
+    s.hello.buttons.clear();  // no MOOSDB to post to
+    s.hello.replay = true;
+    s.hello.community = "replay";
+  };
+  for_replay();
   if (!cl.mission_file) return s;
   std::vector<moos::MissionError> errors;
   const auto mission = moos::MissionFile::load(*cl.mission_file, {cl.substitutions, true}, &errors);
@@ -34,10 +39,7 @@ std::optional<OfflineSetup> setup(const moos::CommandLine& cl, std::ostream& err
   std::vector<std::string> warnings = settings.config_warnings;
   s.config = read_viewer_config(settings.config_lines, &warnings);
   for (const std::string& w : warnings) err << kAppName << ": warning: " << w << "\n";
-  s.hello = configured_hello(s.config);
-  s.hello.buttons.clear();  // no MOOSDB to post to
-  s.hello.replay = true;
-  s.hello.community = "replay";
+  for_replay();
   if (!settings.community.empty()) s.hello.community = settings.community;
   set_datum(settings, s.hello);
   return s;

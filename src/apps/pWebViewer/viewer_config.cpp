@@ -44,7 +44,8 @@ std::string apply(const moos::ConfigLine& line, ViewerConfig& config, WatchLines
   RetentionLimits& keep = config.limits.retention;
   if (key == "http_port") return whole(key, value, 0, 65535, config.http.port);
   if (key == "http_bind") {
-    if (value.empty() || value.find_first_of(" \t/") != std::string::npos) return "http_bind='" + base::excerpt(value) + "' is not an address";
+    if (value.empty() || value.find_first_of(" \t/") != std::string::npos)
+      return "http_bind='" + base::excerpt(value) + "' is not an address";
     config.http.bind_address = value;
     return std::string();
   }
@@ -103,7 +104,7 @@ ViewerConfig read_viewer_config(const std::vector<moos::ConfigLine>& lines,
   WatchLines watch;
   for (const moos::ConfigLine& line : lines) {
     const std::string problem = apply(line, config, watch);
-    if (!problem.empty()) warnings->push_back(line.file + ":" + std::to_string(line.line) + ": " + problem);
+    if (!problem.empty()) warnings->push_back(mission_app::at_line(line, problem));
   }
   if (!watch.defaults) config.watch.clear();
   for (const std::string& w : watch.listed)
