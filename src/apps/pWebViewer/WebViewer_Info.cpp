@@ -36,6 +36,8 @@ const std::vector<mission::ParamInfo> kButtons = {
     {"button_four", "", "as button_one"},
 };
 
+const char* const kExampleButton = "DEPLOY # DEPLOY_ALL=true # MOOS_MANUAL_OVERRIDE_ALL=false";
+
 }  // namespace
 
 std::string help_text() {
@@ -60,7 +62,7 @@ std::string example_text() {
                                                                {"Bounds of the retained state", &kBounds},
                                                                {"Buttons", &kButtons}},
                                           {{"watch", "HAZARDSET_REPORT"},
-                                           {"button_one", "DEPLOY # DEPLOY_ALL=true # MOOS_MANUAL_OVERRIDE_ALL=false"}}));
+                                           {"button_one", kExampleButton}}));
 }
 
 std::string interface_text() {

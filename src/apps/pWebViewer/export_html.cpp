@@ -126,8 +126,8 @@ std::string inline_tags(const std::vector<WebFile>& files, const std::string& ht
     } else if (base::iequals(attribute(tag, "type"), "module")) {
       out += "<script type=\"module\">import \"" + std::string(kModulePrefix) + path + "\";</script>";
     } else {
-      out += "<script>\n" + std::regex_replace(std::string(file->bytes), std::regex("</script"), "<\\/script") +
-             "\n</script>";
+      static const std::regex kEnd("</script");
+      out += "<script>\n" + std::regex_replace(std::string(file->bytes), kEnd, "<\\/script") + "\n</script>";
     }
   }
   out.append(last, html.cend());
@@ -142,8 +142,8 @@ std::string base64(std::string_view bytes) {
   out.reserve((bytes.size() + 2) / 3 * 4);
   std::size_t i = 0;
   for (; i + 2 < bytes.size(); i += 3) {
-    const unsigned v = static_cast<unsigned char>(bytes[i]) << 16 |
-                       static_cast<unsigned char>(bytes[i + 1]) << 8 | static_cast<unsigned char>(bytes[i + 2]);
+    const auto byte = [&](std::size_t k) { return static_cast<unsigned>(static_cast<unsigned char>(bytes[k])); };
+    const unsigned v = byte(i) << 16 | byte(i + 1) << 8 | byte(i + 2);
     out += kAlphabet[v >> 18 & 63];
     out += kAlphabet[v >> 12 & 63];
     out += kAlphabet[v >> 6 & 63];

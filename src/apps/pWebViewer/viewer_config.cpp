@@ -32,7 +32,8 @@ std::string apply_watch(const std::string& value, WatchLines& watch) {
     if (v.empty()) continue;
     if (!is_variable_name(v)) return "watch: '" + base::excerpt(v) + "' is not a variable name";
     if (watch_contains(watch.listed, v)) continue;
-    if (watch.listed.size() >= kMaxWatch) return "watch: more than " + std::to_string(kMaxWatch) + " variables";
+    if (watch.listed.size() >= kMaxWatch)
+      return "watch: more than " + std::to_string(kMaxWatch) + " variables";
     watch.listed.emplace_back(v);
   }
   return std::string();
