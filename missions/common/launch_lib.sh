@@ -103,7 +103,8 @@ EOF
   cat <<EOF
 
 The run folder gets the .alog of the whole run, summary.json (the grader's result),
-the picture (SVG and PNG), targ_$ML_MISSION.moos, pids.txt and logs/ (each process's output).
+the picture (SVG and PNG), targ_$ML_MISSION.moos, pids.txt and logs/ (each process's output)${ML_VIEWER:+,
+and view.html (the whole run to replay in a browser)}.
 Exit status: 0 graded; 1 the mission failed; 2 bad usage; 130 interrupted.
 EOF
 }
