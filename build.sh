@@ -10,7 +10,8 @@
 #   ./build.sh packages print the Debian packages it needs, one a line (for .ci/run)
 #
 # Dependencies are Debian packages (apt-get, as root or through sudo) and, for the
-# wire-compatibility tests only, pymoos2 from PyPI in a virtual environment under build/.
+# wire-compatibility tests and pWebViewer's browser tests only, pymoos2 and playwright from PyPI
+# in a virtual environment under build/.
 set -euo pipefail
 
 HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
@@ -26,11 +27,13 @@ DEBIAN_PACKAGES=(
   libgeographiclib-dev libglm-dev libgtest-dev libbenchmark-dev
   python3 python3-venv
   librsvg2-bin
+  libcpp-httplib-dev chromium
 )
-PYPI_PACKAGES=(pymoos2==0.1.0)
+# playwright drives Debian's chromium in pWebViewer's browser tests (no browser download).
+PYPI_PACKAGES=(pymoos2==0.1.0 playwright==1.65.2)
 # What the demo mission runs (missions/jake/launch.sh finds them under $BUILD_DIR/src/apps).
 DEMO_TARGETS=(moosdb-lite uFldHazardSensor uFldHazardMetric pHazardMgr uSimSurveyVehicle pLogLite
-              moos-cli gen_hazards hazard_replay)
+              moos-cli gen_hazards hazard_replay pWebViewer)
 
 say() { printf '\033[1m[build.sh]\033[0m %s\n' "$*" >&2; }
 
@@ -59,7 +62,7 @@ install_debian_packages() {
 }
 
 install_python_packages() {
-  if [ -x "$PYENV_DIR/bin/python" ] && "$PYENV_DIR/bin/python" -c 'import pymoos2' 2>/dev/null; then
+  if [ -x "$PYENV_DIR/bin/python" ] && "$PYENV_DIR/bin/python" -c 'import pymoos2, playwright' 2>/dev/null; then
     return 0
   fi
   say "installing ${PYPI_PACKAGES[*]} into $PYENV_DIR"

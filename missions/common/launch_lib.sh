@@ -10,14 +10,17 @@
 #      a port the OS chooses, logging every posting to <mission>.alog; or MOOS-IvP's MOOSDB on a
 #      free port, with pLogLite writing the same .alog), and writes targ_<mission>.moos, the
 #      mission file with every $(NAME) filled in;
-#   3. starts every process of the mission, waits until all of them are connected (DB_CLIENTS),
+#   3. with ML_VIEWER set (and pWebViewer built), starts pWebViewer, the browser view, and prints
+#      its URL (the page is live while the mission runs);
+#      starts every process of the mission, waits until all of them are connected (DB_CLIENTS),
 #      then pokes DEPLOY_ALL=true and HAZARD_SEARCH_START=true;
 #   4. shows a one-line progress display (simulated time, detections, classifications) until
 #      the grader has evaluated the report of every vehicle in ML_FINAL_VEHICLES (a vehicle whose
 #      report has no objects gets no evaluation: its HAZARDSET_REPORT ends the wait instead);
 #   5. stops every process (first the mission's, then the logger, then the MOOSDB, so the log is
 #      complete), writes summary.json and the picture, prints the score table and the picture's
-#      path.
+#      path; with the viewer, writes view.html (pWebViewer --export: the whole run in one file a
+#      browser opens) and says how to replay the run.
 # It stops everything, leaving no process behind, when the mission ends, on Ctrl-C (SIGINT),
 # SIGTERM or SIGHUP, when any process dies, and at the time limit. Every process runs in its own
 # session (setsid) with SIGKILL as its parent-death signal (setpriv --pdeathsig), so that even
@@ -45,6 +48,8 @@
 #   ML_RENDER_OPTIONS   extra options of tools/render_mission.py (array)
 #   ML_EXTRA_KEYS       more KEY=value substitutions for the template (array, may be empty)
 #   ML_EXTRA_BINARIES   programs the prepare hook needs (array, may be empty)
+#   ML_VIEWER           non-empty: start pWebViewer (its block in ML_TEMPLATE; http_port may be
+#                       $(VIEW_PORT), from --view-port, 0 = a free port) unless --no-view
 # A mission may define ml_prepare (run in the run folder before the MOOSDB starts; the variables
 # ML_BIN_<name> hold the binaries' paths), ml_extra_usage (more --help text) and
 # ml_extra_option ARG (true when it took a command-line option of its own).
@@ -83,6 +88,14 @@ Runs the whole mission headless and ends with a score table and a picture.
   --timeout=S        give up after S real seconds (default: $ML_MAX_SIM_S simulated seconds
                      at the warp, plus $ML_TIME_LIMIT_SLACK_S s)
   --no-picture       skip the picture
+EOF
+  if [ -n "${ML_VIEWER:-}" ]; then
+    cat <<EOF
+  --view-port=PORT   the live view's port on 127.0.0.1 (default 0: a free port, printed)
+  --no-view          no live view (pWebViewer) and no view.html
+EOF
+  fi
+  cat <<EOF
   --quiet            no progress display
   --help, -h         this text
 EOF
@@ -90,7 +103,8 @@ EOF
   cat <<EOF
 
 The run folder gets the .alog of the whole run, summary.json (the grader's result),
-the picture (SVG and PNG), targ_$ML_MISSION.moos, pids.txt and logs/ (each process's output).
+the picture (SVG and PNG), targ_$ML_MISSION.moos, pids.txt and logs/ (each process's output)${ML_VIEWER:+,
+and view.html (the whole run to replay in a browser)}.
 Exit status: 0 graded; 1 the mission failed; 2 bad usage; 130 interrupted.
 EOF
 }
@@ -107,6 +121,8 @@ ml_parse_args() {
   ML_TIMEOUT_S=""
   ML_PICTURE=1
   ML_PROGRESS=1
+  ML_VIEW="${ML_VIEWER:-}"
+  ML_VIEW_PORT=0
   local arg warp_given=""
   for arg in "$@"; do
     case "$arg" in
@@ -120,6 +136,8 @@ ml_parse_args() {
       --timeout=*) ML_TIMEOUT_S="${arg#*=}" ;;
       --no-picture) ML_PICTURE="" ;;
       --quiet) ML_PROGRESS="" ;;
+      --view-port=*) ML_VIEW_PORT="${arg#*=}" ;;
+      --no-view) ML_VIEW="" ;;
       -*)
         if declare -F ml_extra_option >/dev/null && ml_extra_option "$arg"; then continue; fi
         ml_die_usage "unknown option '$arg'" ;;
@@ -132,6 +150,8 @@ ml_parse_args() {
   awk -v w="$ML_WARP" -v m="$ML_MAX_WARP" 'BEGIN { exit !(w > 0 && w <= m) }' ||
     ml_die_usage "the warp $ML_WARP is outside (0, $ML_MAX_WARP]"
   [[ "$ML_SEED" =~ ^[0-9]+$ ]] || ml_die_usage "the seed '$ML_SEED' is not a whole number"
+  [[ "$ML_VIEW_PORT" =~ ^[0-9]+$ ]] && [ "$ML_VIEW_PORT" -le 65535 ] ||
+    ml_die_usage "the view port '$ML_VIEW_PORT' is not a port number"
   case "$ML_MOOSDB" in lite|real) ;; *) ml_die_usage "--moosdb must be lite or real, not '$ML_MOOSDB'" ;; esac
   if [ -n "$ML_TIMEOUT_S" ]; then
     ml_is_number "$ML_TIMEOUT_S" || ml_die_usage "the timeout '$ML_TIMEOUT_S' is not a number"
@@ -141,26 +161,36 @@ ml_parse_args() {
   fi
 }
 
+# ml_find_binary APP DIR: sets ML_BIN_<app> to DIR/APP/APP or DIR/APP; false when neither is there.
+ml_find_binary() {
+  local app="$1" dir="$2" candidate
+  for candidate in "$dir/$app/$app" "$dir/$app"; do
+    if [ -f "$candidate" ] && [ -x "$candidate" ]; then
+      printf -v "ML_BIN_${app//-/_}" '%s' "$(cd "$(dirname "$candidate")" && pwd)/$app"
+      return 0
+    fi
+  done
+  return 1
+}
+
 # ML_BIN_<app> = the binary of <app>, from --bin-dir or the release build.
 ml_find_binaries() {
-  local dirs=() app dir found missing=()
-  if [ -n "$ML_BIN_DIR" ]; then dirs=("$ML_BIN_DIR"); else dirs=("$ML_REPO/build/release/src/apps"); fi
+  local dir app missing=()
+  if [ -n "$ML_BIN_DIR" ]; then dir="$ML_BIN_DIR"; else dir="$ML_REPO/build/release/src/apps"; fi
   local apps=(moosdb-lite moos-cli)
   for arg in "${ML_PROCESSES[@]}"; do apps+=("${arg%% *}"); done
   [ "$ML_MOOSDB" = real ] && apps+=(pLogLite)
   apps+=("${ML_EXTRA_BINARIES[@]}")
   for app in "${apps[@]}"; do
-    found=""
-    for dir in "${dirs[@]}"; do
-      for candidate in "$dir/$app/$app" "$dir/$app"; do
-        if [ -f "$candidate" ] && [ -x "$candidate" ]; then found="$(cd "$(dirname "$candidate")" && pwd)/$app"; break 2; fi
-      done
-    done
-    if [ -z "$found" ]; then missing+=("$app"); continue; fi
-    printf -v "ML_BIN_${app//-/_}" '%s' "$found"
+    ml_find_binary "$app" "$dir" || missing+=("$app")
   done
+  # The view is a convenience: a mission runs without it.
+  if [ -n "$ML_VIEW" ] && ! ml_find_binary pWebViewer "$dir"; then
+    ml_say "pWebViewer is not built: no live view (build it, or pass --no-view)"
+    ML_VIEW=""
+  fi
   if [ "${#missing[@]}" -gt 0 ]; then
-    ml_say "missing programs: ${missing[*]} (looked in ${dirs[*]})"
+    ml_say "missing programs: ${missing[*]} (looked in $dir)"
     ml_say "build them first (./build.sh build), or give --bin-dir=DIR"
     exit 2
   fi
@@ -314,7 +344,7 @@ ml_port_listening() { (exec 3<>"/dev/tcp/127.0.0.1/$ML_PORT") 2>/dev/null; }
 ml_port_file_ready() { [ -s "$ML_RUN_DIR/logs/port" ]; }
 
 ml_start_moosdb() {
-  local plug=(WARP="$ML_WARP" SEED="$ML_SEED" "${ML_EXTRA_KEYS[@]}")
+  local plug=(WARP="$ML_WARP" SEED="$ML_SEED" VIEW_PORT="$ML_VIEW_PORT" "${ML_EXTRA_KEYS[@]}")
   if [ "$ML_MOOSDB" = lite ]; then
     ml_spawn moosdb-lite "$ML_BIN_moosdb_lite" --moos_port=0 --port-file="$ML_RUN_DIR/logs/port" \
       --moos_community="$ML_MISSION" --moos_time_warp="$ML_WARP" --log="$ML_ALOG"
@@ -329,6 +359,33 @@ ml_start_moosdb() {
     ml_wait_until 10 ml_port_listening || { ml_say "MOOSDB did not start on port $ML_PORT (see logs/MOOSDB.err)"; return 1; }
     ml_spawn pLogLite "$ML_BIN_pLogLite" "$ML_TARG" pLogLite "${ML_APP_SWITCHES[@]}"
     ML_N_INFRA=2
+  fi
+}
+
+# ---- the view ---------------------------------------------------------------------------------
+
+ml_viewer_ready() { grep -q 'serving http://' "$ML_RUN_DIR/logs/pWebViewer.out" 2>/dev/null; }
+
+# Starts pWebViewer after the MOOSDB (so it hears the mission from its first posting; stopped
+# with the MOOSDB's group, before it) and prints the URL once it listens.
+ml_start_viewer() {
+  [ -n "$ML_VIEW" ] || return 0
+  ml_spawn pWebViewer "$ML_BIN_pWebViewer" "$ML_TARG" pWebViewer "${ML_APP_SWITCHES[@]}"
+  ML_N_INFRA=$((ML_N_INFRA + 1))
+  ml_wait_until 15 ml_viewer_ready || { ml_say "pWebViewer did not start (see logs/pWebViewer.err)"; return 1; }
+  ML_VIEW_URL="$(grep -o 'http://[^ ]*' "$ML_RUN_DIR/logs/pWebViewer.out" | head -n 1)"
+  ml_say "live view: $ML_VIEW_URL (open it in a browser while the mission runs)"
+}
+
+# After the run: the whole run as one HTML file, and how to replay it.
+ml_export_view() {
+  [ -n "$ML_VIEW" ] || return 0
+  if "$ML_BIN_pWebViewer" "$ML_TARG" --export="$ML_ALOG" --output="$ML_RUN_DIR/view.html" \
+       >"$ML_RUN_DIR/logs/view-export.out" 2>"$ML_RUN_DIR/logs/view-export.err"; then
+    printf 'View: %s (open it in a browser; or replay: %s %s --replay=%s)\n' \
+      "$ML_RUN_DIR/view.html" "$ML_BIN_pWebViewer" "$ML_TARG" "$ML_ALOG"
+  else
+    ml_say "writing view.html failed (see logs/view-export.err)"
   fi
 }
 
@@ -494,6 +551,7 @@ ml_main() {
   if declare -F ml_prepare >/dev/null; then ml_prepare || { ml_say "preparing the mission failed"; exit 1; }; fi
   local ok=1
   ml_start_moosdb || ok=""
+  if [ -n "$ok" ]; then ml_start_viewer || ok=""; fi
   if [ -n "$ok" ]; then ml_start_mission || ok=""; fi
   if [ -n "$ok" ]; then ml_run_until_done || ok=""; fi
   trap '' INT TERM HUP
@@ -505,4 +563,5 @@ ml_main() {
     exit 1
   fi
   ml_finish || exit 1
+  ml_export_view
 }

@@ -1,0 +1,69 @@
+#pragma once
+// pWebViewer's HTTP side (cpp-httplib): the page's files, the server-sent event stream, the
+// replay data and the buttons, served from threads of its own (docs/viewer.md, "Protocol").
+//
+// Contract
+// - start() binds `bind_address`:`port` (0: a port the OS picks) and serves from a pool of
+//   max_clients + kSpareThreads threads, so that max_clients event streams never starve requests
+//   for files (a browser fetches up to 6 at once); idle keep-alive connections close after
+//   kKeepAliveIdle_s. It returns false (with `error`) when the address cannot be bound.
+// - GET / and GET /<file>: the embedded files (web_files.hpp), 404 for anything else.
+// - GET /events: text/event-stream; the hub's events, one `data:` line each; a comment line
+//   every kKeepAlive_s when there is nothing to send. 503 when max_clients streams are open.
+// - GET /replay.json: the replay data when one was set, else 404.
+// - POST /button/<n>: 404 unless `press(n)` accepts n; 204 when it does.
+// - stop() ends every stream and joins the threads; the destructor stops.
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <thread>
+
+#include "event_hub.hpp"
+
+namespace httplib {
+class Server;
+}
+
+namespace web_viewer {
+
+struct HttpOptions {
+  std::string bind_address = "127.0.0.1";
+  int port = 8080;
+  std::size_t max_clients = 8;
+};
+
+class HttpServer {
+ public:
+  static constexpr std::size_t kSpareThreads = 8;
+  static constexpr int kKeepAliveIdle_s = 1;
+  /// Milliseconds start() waits at most for the listening loop to run.
+  static constexpr int kStartWaitSteps = 5000;
+  static constexpr double kKeepAlive_s = 1.0;
+  static constexpr int kWriteTimeout_s = 5;
+
+  /// `press(n)` is called on a server thread; true when button n exists.
+  HttpServer(EventHub& hub, std::function<bool(int)> press);
+  ~HttpServer();
+  HttpServer(const HttpServer&) = delete;
+  HttpServer& operator=(const HttpServer&) = delete;
+
+  /// The JSON served at /replay.json (set before start()).
+  void set_replay_json(std::string json) { replay_json_ = std::move(json); }
+
+  bool start(const HttpOptions& options, std::string* error);
+  void stop();
+  /// The bound port (after start()).
+  int port() const { return port_; }
+
+ private:
+  void add_routes();
+  EventHub& hub_;
+  std::function<bool(int)> press_;
+  std::string replay_json_;
+  std::unique_ptr<httplib::Server> server_;
+  std::thread thread_;
+  int port_ = 0;
+};
+
+}  // namespace web_viewer

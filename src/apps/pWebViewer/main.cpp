@@ -1,0 +1,21 @@
+// pWebViewer: a live and replayable mission view in a browser (issue 15; docs/viewer.md). main
+// reads the command line: --replay / --export run without a MOOSDB (offline.hpp); otherwise it
+// prints an information text or runs the app until SIGINT or SIGTERM (mission_app::run_main).
+
+#include <iostream>
+#include <memory>
+
+#include "WebViewer.hpp"
+#include "WebViewer_Info.hpp"
+#include "mission_app.hpp"
+#include "offline.hpp"
+
+int main(int argc, char** argv) {
+  using namespace web_viewer;
+  const moos::CommandLine command_line = moos::parse_command_line(argc, argv);
+  if (!moos::first_information_switch(command_line) && is_offline(command_line))
+    return run_offline(command_line, std::cout, std::cerr);
+  const mission_app::InfoTexts texts{help_text, example_text, interface_text, version_text};
+  return mission_app::run_main(argc, argv, kAppName, texts,
+                               [] { return std::make_unique<WebViewer>(); });
+}
