@@ -15,6 +15,7 @@
 
 #include "base/text.hpp"
 #include "moos/command_line.hpp"
+#include "moos/limits.hpp"
 #include "moos/tcp_client.hpp"
 
 namespace {
@@ -37,13 +38,28 @@ std::string marker(int index, double shift_m) {
          ",width=8,type=triangle,primary_color=green,label=m" + std::to_string(index);
 }
 
+// The load's switches, on libmoos's one command-line parser.
+moos::SwitchTable switch_table() {
+  using moos::SwitchKind;
+  moos::SwitchTable t;
+  t.rules = {moos::switch_rule("--port", SwitchKind::kInteger, "not a port", moos::kConnectPortRange),
+             moos::switch_rule("--warp", SwitchKind::kNumber, "not a warp", moos::kTimeWarpRange),
+             moos::switch_rule("--vehicles", SwitchKind::kInteger, "not a count", moos::kPositive),
+             moos::switch_rule("--sim-seconds", SwitchKind::kNumber, "not seconds", moos::kPositive)};
+  t.bad_value = [](const std::string& arg, const moos::SwitchRule& r) { return arg + ": " + r.problem; };
+  t.unknown = [](const std::string& arg) { return arg + ": unknown switch"; };
+  return t;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  const moos::CommandLine cl = moos::parse_command_line(argc, argv);
+  const moos::SwitchValues switches =
+      moos::parse_switches(std::vector<std::string>(argv + 1, argv + argc), switch_table());
+  for (const std::string& error : switches.errors) std::cerr << "viewer_load: " << error << "\n";
+  if (!switches.errors.empty()) return 2;
   auto number = [&](const char* flag, double fallback) {
-    const auto v = cl.flag_value(flag);
-    return v ? base::parse_number(*v).value_or(fallback) : fallback;
+    return switches.number(flag).value_or(fallback);
   };
   moos::TcpClientOptions options;
   options.host = "127.0.0.1";

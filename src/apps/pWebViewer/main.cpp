@@ -1,13 +1,13 @@
 // pWebViewer: a live and replayable mission view in a browser (issue 15; docs/viewer.md). main
 // reads the command line: --replay / --export run without a MOOSDB (offline.hpp); otherwise it
-// prints an information text or runs the app until SIGINT or SIGTERM (mission_app::run_main).
+// prints an information text or runs the app until SIGINT or SIGTERM (moos::launch).
 
 #include <iostream>
 #include <memory>
 
 #include "WebViewer.hpp"
 #include "WebViewer_Info.hpp"
-#include "mission_app.hpp"
+#include "moos/launch.hpp"
 #include "offline.hpp"
 
 int main(int argc, char** argv) {
@@ -15,7 +15,9 @@ int main(int argc, char** argv) {
   const moos::CommandLine command_line = moos::parse_command_line(argc, argv);
   if (!moos::first_information_switch(command_line) && is_offline(command_line))
     return run_offline(command_line, std::cout, std::cerr);
-  const mission_app::InfoTexts texts{help_text, example_text, interface_text, version_text};
-  return mission_app::run_main(argc, argv, kAppName, texts,
-                               [] { return std::make_unique<WebViewer>(); });
+  moos::AppLaunch app;
+  app.app_name = kAppName;
+  app.texts = {help_text, example_text, interface_text, version_text};
+  app.make_app = [] { return std::make_unique<WebViewer>(); };
+  return moos::launch(argc, argv, app);
 }

@@ -13,6 +13,13 @@ namespace web_viewer {
 
 namespace {
 
+/// The value of `--name=value` (libmoos reads every such switch as a `$(name)` substitution).
+std::optional<std::string> switch_value(const moos::CommandLine& command_line, const std::string& name) {
+  const auto it = command_line.substitutions.find(name);
+  if (it == command_line.substitutions.end()) return std::nullopt;
+  return it->second;
+}
+
 struct OfflineSetup {
   ViewerConfig config;
   Hello hello;
@@ -106,13 +113,13 @@ int serve_replay(const std::string& log_path, OfflineSetup& s, std::ostream& out
 }  // namespace
 
 bool is_offline(const moos::CommandLine& command_line) {
-  return command_line.flag_value("--replay") || command_line.flag_value("--export");
+  return switch_value(command_line, "replay") || switch_value(command_line, "export");
 }
 
 int run_offline(const moos::CommandLine& cl, std::ostream& out, std::ostream& err) {
-  const auto replay = cl.flag_value("--replay");
-  const auto exported = cl.flag_value("--export");
-  const auto output = cl.flag_value("--output");
+  const auto replay = switch_value(cl, "replay");
+  const auto exported = switch_value(cl, "export");
+  const auto output = switch_value(cl, "output");
   if (replay && exported) {
     err << kAppName << ": --replay and --export cannot be combined\n";
     return 2;
