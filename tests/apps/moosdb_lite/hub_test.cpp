@@ -233,7 +233,7 @@ TEST_F(HubTest, InactiveClientIsDroppedAfterClientTimeoutAndActiveOneIsKept_1_9)
   hub_.take_actions();
   EXPECT_FALSE(hub_.database().is_connected(quiet));
   EXPECT_TRUE(hub_.database().is_connected(talker));
-  EXPECT_TRUE(logged("client \"quiet\" (127.0.0.1:quiet): no packet for more than 3 s (ClientTimeout)"));
+  EXPECT_TRUE(logged("client \"quiet\" (127.0.0.1:quiet): nothing received for more than 3 s (ClientTimeout)"));
 }
 
 TEST(HubNoTimeout, ClientTimeoutUnsetMeansNever_1_9) {

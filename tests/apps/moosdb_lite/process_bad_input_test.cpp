@@ -103,7 +103,7 @@ TEST(MoosdbLiteBadInput, PacketClaimingTwoGigabytesDropsTheSender_3_4) {
   EXPECT_TRUE(liar.wait_closed(kArrivalTimeout_s));
   EXPECT_TRUE(server.wait_for_log(
       "client \"pLiar\" (127.0.0.1:", kArrivalTimeout_s));
-  EXPECT_TRUE(server.wait_for_log("bad packet (packet header announces 2147483648 bytes (allowed 9 to 134217728)",
+  EXPECT_TRUE(server.wait_for_log("bad packet (packet header announces 2147483648 bytes (allowed 9 to 268435456)",
                                   kArrivalTimeout_s));
   others.post();
   others.expect_everything_received();
