@@ -216,6 +216,12 @@ void EventLoop::shed_connection(double now, int error) {
 }
 
 void EventLoop::read_from(ConnectionId id, double now) {
+  read_chunks(id, now);
+  // Whatever it sent has been processed now, however long that took.
+  hub_.heard(id, moos::system_clock().unix_now_s());
+}
+
+void EventLoop::read_chunks(ConnectionId id, double now) {
   static char buffer[kReadChunkBytes];
   std::size_t budget = kReadBudgetBytes;
   while (budget > 0) {

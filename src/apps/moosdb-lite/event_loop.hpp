@@ -96,6 +96,7 @@ class EventLoop {
   void apply_back_pressure(double now);
   void enforce_memory_budget(double now);
   void read_from(ConnectionId id, double now);
+  void read_chunks(ConnectionId id, double now);
   void write_to(ConnectionId id, double now);
   void apply_actions(double now);
   void enforce_output_limits(double now);

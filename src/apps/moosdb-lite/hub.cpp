@@ -165,6 +165,12 @@ void Hub::drop(ConnectionId id, const std::string& reason, double now_real_s) {
   close(id, reason + "; connection dropped", now_real_s, Action::Kind::kClose);
 }
 
+void Hub::heard(ConnectionId id, double now_real_s) {
+  const auto it = connections_.find(id);
+  if (it != connections_.end())
+    it->second.last_input_real_s = std::max(it->second.last_input_real_s, now_real_s);
+}
+
 void Hub::set_reading_paused(ConnectionId id, bool paused, double now_real_s) {
   const auto it = connections_.find(id);
   if (it == connections_.end() || it->second.reading_paused == paused) return;

@@ -17,6 +17,7 @@
 //   keeps its sender alive) at the time the transport last looked at its socket: tick()'s
 //   `now_real_s` must be the time of that look (the poll's return), never a later time, so a
 //   server busy for seconds does not count its own stall as the clients' silence (issue 12).
+//   heard() moves the start of a connection's silence to when its input was processed.
 //   A connection whose reading the transport paused (set_reading_paused) is not judged; its
 //   silence counts again from the resumption. A wrong banner
 //   closes without a reply; a failed identification gets POISON (1.6) before the close;
@@ -100,6 +101,10 @@ class Hub {
   /// Timeouts and the DB-variable timer; `now_real_s` is when the transport last looked at
   /// every socket (see the contract).
   void tick(double now_real_s);
+  /// The transport finished handing over (and the Hub processing) what the connection sent,
+  /// at `now_real_s`: its silence counts from then, so a client that waits for the reply to
+  /// a packet that kept the server busy is not judged silent for that time.
+  void heard(ConnectionId id, double now_real_s);
   /// The transport stopped (true) or resumed (false) reading from a connection
   /// (back-pressure); a paused connection is not judged silent.
   void set_reading_paused(ConnectionId id, bool paused, double now_real_s);

@@ -236,6 +236,40 @@ TEST_F(HubTest, InactiveClientIsDroppedAfterClientTimeoutAndActiveOneIsKept_1_9)
   EXPECT_TRUE(logged("client \"quiet\" (127.0.0.1:quiet): nothing received for more than 3 s (ClientTimeout)"));
 }
 
+// Liveness is what the client sent, not complete packets: the first bytes of a large packet
+// that is still arriving keep its sender alive (issue 12).
+TEST_F(HubTest, AnyByteReceivedKeepsAClientAlive) {
+  const ConnectionId id = connected("pBig", true);
+  const std::string packet = moos::encode_packet({notify_string("BIG", "0123456789", "pBig")});
+  hub_.receive(id, std::string_view(packet).substr(0, 8), kStart + 2.5);
+  hub_.tick(kStart + 5.0);
+  EXPECT_TRUE(hub_.database().is_connected(id));
+  EXPECT_EQ(hub_.partial_packet_bytes(id), 8u);
+  hub_.tick(kStart + 5.6);
+  EXPECT_FALSE(hub_.database().is_connected(id));
+}
+
+// While the transport does not read a connection (back-pressure) it is not judged silent;
+// after the resumption its silence counts from then.
+TEST_F(HubTest, PausedConnectionIsNotJudgedSilentUntilResumed) {
+  const ConnectionId id = connected("pSlow", true);
+  hub_.set_reading_paused(id, true, kStart + 1);
+  hub_.tick(kStart + 60);
+  EXPECT_TRUE(hub_.database().is_connected(id));
+  hub_.set_reading_paused(id, false, kStart + 60);
+  hub_.tick(kStart + 62.9);
+  EXPECT_TRUE(hub_.database().is_connected(id));
+  hub_.tick(kStart + 63.1);
+  EXPECT_FALSE(hub_.database().is_connected(id));
+}
+
+// A newline in a client name cannot end a log line (issue 12).
+TEST_F(HubTest, ClientNameIsEscapedInTheLog) {
+  const ConnectionId id = connected("p\nEvil\nforged", true);
+  EXPECT_EQ(hub_.describe(id), "client \"p\\x0AEvil\\x0Aforged\" (127.0.0.1:p\nEvil\nforged)");
+  EXPECT_TRUE(logged("client \"p\\x0AEvil\\x0Aforged\""));
+}
+
 TEST(HubNoTimeout, ClientTimeoutUnsetMeansNever_1_9) {
   HubConfig config;
   config.client_timeout_s.reset();
