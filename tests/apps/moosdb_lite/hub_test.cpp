@@ -197,6 +197,25 @@ TEST_F(HubTest, HeaderAnnouncingTwoGigabytesDropsTheClientBeforeAllocating_3_4) 
   EXPECT_TRUE(logged("client \"pA\" (127.0.0.1:pA): bad packet (packet header announces 2147483648 bytes"));
 }
 
+// The server's packet limit is sized from libMOOS (2,048 queued messages sent as one packet):
+// core-moos's app_test sends ~205 MB packets of 100 kB messages, which must be taken.
+TEST(HubLimits, DefaultPacketLimitTakesALibmoosBacklogOf100kBMessages) {
+  constexpr std::size_t kLibmoosOutboxMessages = 2048;
+  constexpr std::size_t kAppTestMessageBytes = 100 * 1000 + 64;
+  EXPECT_GE(HubConfig{}.max_packet_bytes, kLibmoosOutboxMessages * kAppTestMessageBytes);
+  Hub hub(HubConfig{}, kStart, [](const std::string&) {});
+  const ConnectionId id = hub.open("peer", kStart);
+  hub.receive(id, moos::protocol_banner() + moos::encode_packet({identification("pA", true)}),
+              kStart);
+  hub.take_actions();
+  const std::uint32_t announced = kLibmoosOutboxMessages * kAppTestMessageBytes;
+  std::string header(9, '\0');
+  for (int i = 0; i < 4; ++i) header[static_cast<std::size_t>(i)] = static_cast<char>(announced >> (8 * i));
+  hub.receive(id, header, kStart);
+  for (const auto& action : hub.take_actions()) EXPECT_NE(action.kind, Action::Kind::kClose);
+  EXPECT_EQ(hub.partial_packet_bytes(id), header.size());
+}
+
 TEST_F(HubTest, MalformedMessageInsideAWellFramedPacketDropsTheClient_2_7) {
   const ConnectionId id = connected("pA", true);
   std::string packet = moos::encode_packet({notify_double("X", 1, "pA")});
