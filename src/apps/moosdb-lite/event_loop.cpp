@@ -17,6 +17,7 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -316,15 +317,17 @@ void EventLoop::enforce_output_limits(double now) {
 }
 
 void EventLoop::apply_back_pressure(double now) {
+  // Under a small output limit, pause at half of it: the warning always comes before a drop.
+  const std::size_t pause_at = std::min(kPauseReadingOutputBytes, config_.max_output_bytes / 2);
   for (auto& [id, socket] : sockets_) {
     if (socket.closing || socket.broken) continue;
-    if (!socket.reading_paused && socket.pending() > kPauseReadingOutputBytes) {
+    if (!socket.reading_paused && socket.pending() > pause_at) {
       socket.reading_paused = true;
       hub_.set_reading_paused(id, true, now);
       log_("warning: " + hub_.describe(id) + ": " + std::to_string(socket.pending()) +
            " bytes wait to be sent; its messages are delayed, reading from it paused until "
            "it takes them");
-    } else if (socket.reading_paused && socket.pending() <= kPauseReadingOutputBytes / 2) {
+    } else if (socket.reading_paused && socket.pending() <= pause_at / 2) {
       socket.reading_paused = false;
       hub_.set_reading_paused(id, false, now);
     }

@@ -11,7 +11,7 @@
 //   (spec 1.1). Reads are bounded per connection per round, so one flooding client cannot
 //   starve the others.
 // - Each connection has an output buffer. Back-pressure first: while its unsent bytes exceed
-//   kPauseReadingOutputBytes the connection is not read (it cannot make more replies, the
+//   kPauseReadingOutputBytes (or half of `max_output_bytes` if less) the connection is not read (it cannot make more replies, the
 //   client is slowed down, a warning says its messages are delayed); reading resumes below
 //   half of that. Only if its unsent bytes exceed `max_output_bytes`, or nothing could be
 //   written for kSendStall_s while bytes were waiting (the reference DB's 6 s send timeout,

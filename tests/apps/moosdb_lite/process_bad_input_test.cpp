@@ -261,6 +261,10 @@ TEST(MoosdbLiteBadInput, AsyncClientThatDoesNotReadIsDroppedAtTheOutputLimit) {
   EXPECT_EQ(received, kMessages);
   EXPECT_TRUE(server.wait_for_log("client \"pStuck\"", kArrivalTimeout_s));
   EXPECT_TRUE(server.wait_for_log("connection dropped", kArrivalTimeout_s));
+  // Slowed down and warned about first (half the output limit), dropped only at the limit.
+  const std::string log = server.stderr_text();
+  EXPECT_LT(log.find("client \"pStuck\" (127.0.0.1"), log.find("connection dropped")) << log;
+  EXPECT_LT(log.find("its messages are delayed"), log.find("exceed the limit of 300000")) << log;
 }
 
 TEST(MoosdbLiteBadInput, FloodOfOneHundredThousandMessagesLosesNothing) {

@@ -217,5 +217,25 @@ TEST(MoosdbLiteHardening, OutputBoundDropsOnlyAfterTheWarning) {
   EXPECT_TRUE(slow.wait_closed(kArrivalTimeout_s));
 }
 
+// A client that takes nothing for kSendStall_s while a little output waits (far below every
+// byte bound) is dropped, as by the reference DB's send timeout.
+TEST(MoosdbLiteHardening, ClientThatTakesNothingForTheSendTimeoutIsDropped) {
+  MoosdbServer server(MOOSDB_LITE_PATH, {"--moos_timeout=0"});
+  ASSERT_TRUE(server.ok());
+  RawClient stuck;
+  ASSERT_TRUE(stuck.connect(server.port(), 4096));
+  ASSERT_TRUE(stuck.handshake("pStuck", true, moos_now()));
+  ASSERT_TRUE(stuck.send({registration("BIG", 0, "pStuck")}));
+  RawClient poster;
+  ASSERT_TRUE(poster.join(server.port(), "pPoster", false));
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  post_large(poster, "BIG", 4, kLargeMessageBytes);
+  const std::string reason =
+      "nothing could be written for " + std::to_string(static_cast<int>(kSendStall_s)) + " s";
+  EXPECT_TRUE(server.wait_for_log(reason, kSendStall_s + kArrivalTimeout_s)) << server.stderr_text();
+  EXPECT_TRUE(server.wait_for_log("client \"pStuck\"", kArrivalTimeout_s));
+  EXPECT_TRUE(poster.exchange({null_message("pPoster")}));
+}
+
 }  // namespace
 }  // namespace moosdb_lite::test
