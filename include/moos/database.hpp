@@ -122,6 +122,9 @@ class Database {
   bool is_connected(ClientId id) const { return clients_.count(id) != 0; }
   std::optional<std::string> client_name(ClientId id) const;
   bool is_async(ClientId id) const;
+  /// Encoded bytes of the mail queued for a client and not yet handed to take_output() (a
+  /// synchronous client's mail waits for its next packet); 0 for unknown ids.
+  std::size_t pending_bytes(ClientId id) const;
   /// The snapshot a REGISTER of `name` would send now (spec 2.6); nullopt while unwritten.
   std::optional<Message> latest(const std::string& name) const;
 

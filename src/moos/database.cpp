@@ -200,6 +200,11 @@ bool Database::is_async(ClientId id) const {
   return it != clients_.end() && it->second.async;
 }
 
+std::size_t Database::pending_bytes(ClientId id) const {
+  const auto it = clients_.find(id);
+  return it == clients_.end() ? 0 : it->second.pending_bytes;
+}
+
 std::optional<Message> Database::latest(const std::string& name) const {
   const auto it = var_index_.find(name);
   if (it == var_index_.end() || !vars_[it->second].value) return std::nullopt;

@@ -340,7 +340,7 @@ void EventLoop::enforce_memory_budget(double now) {
     std::size_t largest = 0;
     ConnectionId largest_id = 0;
     for (const auto& [id, socket] : sockets_) {
-      const std::size_t held = socket.pending() + hub_.partial_packet_bytes(id);
+      const std::size_t held = socket.pending() + hub_.held_bytes(id);
       total += held;
       if (held > largest) {
         largest = held;

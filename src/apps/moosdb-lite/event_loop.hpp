@@ -16,8 +16,8 @@
 //   half of that. Only if its unsent bytes exceed `max_output_bytes`, or nothing could be
 //   written for kSendStall_s while bytes were waiting (the reference DB's 6 s send timeout,
 //   spec 1.1), is the connection dropped with a logged reason.
-// - Global memory budget: the unsent output of all connections plus their incomplete packets
-//   stay within `memory_budget_bytes`. Above it, the connection holding the most is dropped
+// - Global memory budget: the unsent output of all connections, their incomplete packets and
+//   the mail the database keeps for them stay within `memory_budget_bytes`. Above it, the connection holding the most is dropped
 //   with a logged warning, and the drops are counted (never a crash).
 // - Descriptor exhaustion (accept fails with EMFILE/ENFILE): a reserve descriptor is released
 //   to accept the waiting connection and close it at once, so the listener does not spin;

@@ -179,9 +179,10 @@ void Hub::set_reading_paused(ConnectionId id, bool paused, double now_real_s) {
   if (!paused) it->second.last_input_real_s = now_real_s;
 }
 
-std::size_t Hub::partial_packet_bytes(ConnectionId id) const {
+std::size_t Hub::held_bytes(ConnectionId id) const {
   const auto it = connections_.find(id);
-  return it == connections_.end() ? 0 : it->second.reader.buffered();
+  if (it == connections_.end()) return 0;
+  return it->second.reader.buffered() + db_.pending_bytes(id);
 }
 
 void Hub::tick(double now_real_s) {

@@ -108,8 +108,9 @@ class Hub {
   /// The transport stopped (true) or resumed (false) reading from a connection
   /// (back-pressure); a paused connection is not judged silent.
   void set_reading_paused(ConnectionId id, bool paused, double now_real_s);
-  /// Bytes of an incomplete packet held for a connection (for the memory budget).
-  std::size_t partial_packet_bytes(ConnectionId id) const;
+  /// Bytes held for a connection besides its socket output, for the memory budget: its
+  /// incomplete packet and the mail the database keeps for it.
+  std::size_t held_bytes(ConnectionId id) const;
 
   std::vector<Action> take_actions();
 

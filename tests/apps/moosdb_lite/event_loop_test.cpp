@@ -104,5 +104,28 @@ TEST(EventLoopBudget, PartialPacketsOverTheBudgetDropTheLargestHolder) {
   EXPECT_FALSE(hoarders[0]->wait_closed(kSilence_s));
 }
 
+// Synchronous clients that never send again never collect their mail: what the database keeps
+// for them counts against the budget too.
+TEST(EventLoopBudget, UncollectedMailOverTheBudgetDropsAHolder) {
+  LoopUnderTest loop(kTestBudgetBytes);
+  std::vector<std::unique_ptr<RawClient>> hoarders;
+  for (int i = 0; i < 3; ++i) {
+    hoarders.push_back(std::make_unique<RawClient>());
+    const std::string name = "pHoard" + std::to_string(i);
+    ASSERT_TRUE(hoarders.back()->join(loop.port(), name, false));
+    ASSERT_TRUE(hoarders.back()->exchange({registration("BIG", 0, name)}));
+  }
+  RawClient poster;
+  ASSERT_TRUE(poster.join(loop.port(), "pPoster", true));
+  // Each post queues 1 MB for each of the three: the second passes the 4 MiB budget.
+  for (int i = 0; i < 2; ++i)
+    ASSERT_TRUE(poster.send({notify_string("BIG", std::string(1000u * 1000u, 'b'), "pPoster")}));
+  EXPECT_TRUE(hoarders[0]->wait_closed(kArrivalTimeout_s));
+  const std::string log = loop.log();
+  EXPECT_NE(log.find("over the memory budget"), std::string::npos) << log;
+  EXPECT_NE(log.find("client \"pHoard0\""), std::string::npos) << log;
+  EXPECT_TRUE(hoarders[1]->exchange({null_message("pHoard1")}));
+}
+
 }  // namespace
 }  // namespace moosdb_lite::test

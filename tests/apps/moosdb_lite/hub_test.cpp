@@ -213,7 +213,7 @@ TEST(HubLimits, DefaultPacketLimitTakesALibmoosBacklogOf100kBMessages) {
   for (int i = 0; i < 4; ++i) header[static_cast<std::size_t>(i)] = static_cast<char>(announced >> (8 * i));
   hub.receive(id, header, kStart);
   for (const auto& action : hub.take_actions()) EXPECT_NE(action.kind, Action::Kind::kClose);
-  EXPECT_EQ(hub.partial_packet_bytes(id), header.size());
+  EXPECT_EQ(hub.held_bytes(id), header.size());
 }
 
 TEST_F(HubTest, MalformedMessageInsideAWellFramedPacketDropsTheClient_2_7) {
@@ -263,7 +263,7 @@ TEST_F(HubTest, AnyByteReceivedKeepsAClientAlive) {
   hub_.receive(id, std::string_view(packet).substr(0, 8), kStart + 2.5);
   hub_.tick(kStart + 5.0);
   EXPECT_TRUE(hub_.database().is_connected(id));
-  EXPECT_EQ(hub_.partial_packet_bytes(id), 8u);
+  EXPECT_EQ(hub_.held_bytes(id), 8u);
   hub_.tick(kStart + 5.6);
   EXPECT_FALSE(hub_.database().is_connected(id));
 }
