@@ -4,8 +4,8 @@
 // the Hub at once and its actions are applied before the next read, so a connection the
 // Hub closes is never read again), run the Hub's timers with the time poll() returned,
 // write what is pending, enforce the output limits and the memory budget, pause or resume
-// reading by the output each connection has queued, and close what is finished. Poll wakes at least every
-// kPollInterval_ms so timeouts and the DB-variable timer run without traffic.
+// reading by the output each connection has queued, and close what is finished. Poll wakes
+// at least every kPollInterval_ms so timeouts and the DB-variable timer run without traffic.
 
 #include "event_loop.hpp"
 
@@ -350,7 +350,7 @@ void EventLoop::enforce_memory_budget(double now) {
     if (total <= config_.memory_budget_bytes || largest == 0) return;
     ++budget_drops_;
     log_("warning: connections hold " + std::to_string(total) +
-         " bytes of unsent output and incomplete packets, over the memory budget of " +
+         " bytes (unsent output, incomplete packets, kept mail), over the memory budget of " +
          std::to_string(config_.memory_budget_bytes) + " bytes; dropping the largest (" +
          std::to_string(budget_drops_) + " dropped by the budget so far)");
     hub_.drop(largest_id,

@@ -11,20 +11,22 @@
 //   (spec 1.1). Reads are bounded per connection per round, so one flooding client cannot
 //   starve the others.
 // - Each connection has an output buffer. Back-pressure first: while its unsent bytes exceed
-//   kPauseReadingOutputBytes (or half of `max_output_bytes` if less) the connection is not read (it cannot make more replies, the
-//   client is slowed down, a warning says its messages are delayed); reading resumes below
-//   half of that. Only if its unsent bytes exceed `max_output_bytes`, or nothing could be
+//   kPauseReadingOutputBytes (or half of `max_output_bytes` if less) the connection is not
+//   read (it cannot make more replies, the client is slowed down, a warning says its
+//   messages are delayed); reading resumes below half of that. Only if its unsent bytes exceed `max_output_bytes`, or nothing could be
 //   written for kSendStall_s while bytes were waiting (the reference DB's 6 s send timeout,
 //   spec 1.1), is the connection dropped with a logged reason.
 // - Global memory budget: the unsent output of all connections, their incomplete packets and
-//   the mail the database keeps for them stay within `memory_budget_bytes`. Above it, the connection holding the most is dropped
-//   with a logged warning, and the drops are counted (never a crash).
+//   the mail the database keeps for them stay within `memory_budget_bytes`. Above it, the
+//   connection holding the most is dropped with a logged warning, and the drops are counted
+//   (never a crash).
 // - Descriptor exhaustion (accept fails with EMFILE/ENFILE): a reserve descriptor is released
 //   to accept the waiting connection and close it at once, so the listener does not spin;
 //   without a reserve the listener is not polled for kAcceptBackoff_s. The failures are
 //   logged at most once per kDescriptorLogInterval_s, with their count.
 // - Liveness: the Hub's timers run with the time poll() returned (the last time the server
-//   looked at the sockets), not the time after processing (hub.hpp).
+//   looked at the sockets), not the time after processing, and a connection whose input was
+//   read is heard() when its processing ends (hub.hpp).
 // - A connection closed "after send" gets at most kCloseGrace_s to take its last bytes.
 
 #include <csignal>
@@ -44,7 +46,8 @@ inline constexpr double kSendStall_s = 6.0;
 inline constexpr double kCloseGrace_s = 2.0;
 /// Unsent bytes above which a connection is no longer read (back-pressure), in bytes.
 inline constexpr std::size_t kPauseReadingOutputBytes = 64u * 1024u * 1024u;
-/// Default global budget: unsent output plus incomplete packets of all connections, in bytes.
+/// Default global budget, in bytes: unsent output, incomplete packets and kept mail of all
+/// connections.
 /// Holds two libMOOS clients each echoing a maximal packet (hub.hpp) with room to spare.
 inline constexpr std::size_t kDefaultMemoryBudgetBytes = 1024u * 1024u * 1024u;
 /// How long the listener rests when a connection cannot be accepted for lack of descriptors.
