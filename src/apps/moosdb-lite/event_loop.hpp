@@ -13,9 +13,10 @@
 // - Each connection has an output buffer. Back-pressure first: while its unsent bytes exceed
 //   kPauseReadingOutputBytes (or half of `max_output_bytes` if less) the connection is not
 //   read (it cannot make more replies, the client is slowed down, a warning says its
-//   messages are delayed); reading resumes below half of that. Only if its unsent bytes exceed `max_output_bytes`, or nothing could be
-//   written for kSendStall_s while bytes were waiting (the reference DB's 6 s send timeout,
-//   spec 1.1), is the connection dropped with a logged reason.
+//   messages are delayed); reading resumes below half of that. Only if its unsent bytes
+//   exceed `max_output_bytes`, or nothing could be written for kSendStall_s while bytes were
+//   waiting (the reference DB's 6 s send timeout, spec 1.1), is the connection dropped with
+//   a logged reason.
 // - Global memory budget: the unsent output of all connections, their incomplete packets and
 //   the mail the database keeps for them stay within `memory_budget_bytes`. Above it, the
 //   connection holding the most is dropped with a logged warning, and the drops are counted

@@ -77,7 +77,7 @@ class LoopUnderTest {
 std::string packet_start(std::size_t announced, std::size_t sent) {
   std::string bytes(sent, '\0');
   const auto size = static_cast<std::uint32_t>(announced);
-  for (int i = 0; i < 4; ++i) bytes[static_cast<std::size_t>(i)] = static_cast<char>(size >> (8 * i));
+  for (std::size_t i = 0; i < 4; ++i) bytes[i] = static_cast<char>(size >> (8 * i));
   return bytes;
 }
 

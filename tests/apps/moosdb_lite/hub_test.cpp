@@ -210,7 +210,7 @@ TEST(HubLimits, DefaultPacketLimitTakesALibmoosBacklogOf100kBMessages) {
   hub.take_actions();
   const std::uint32_t announced = kLibmoosOutboxMessages * kAppTestMessageBytes;
   std::string header(9, '\0');
-  for (int i = 0; i < 4; ++i) header[static_cast<std::size_t>(i)] = static_cast<char>(announced >> (8 * i));
+  for (std::size_t i = 0; i < 4; ++i) header[i] = static_cast<char>(announced >> (8 * i));
   hub.receive(id, header, kStart);
   for (const auto& action : hub.take_actions()) EXPECT_NE(action.kind, Action::Kind::kClose);
   EXPECT_EQ(hub.held_bytes(id), header.size());
@@ -252,7 +252,8 @@ TEST_F(HubTest, InactiveClientIsDroppedAfterClientTimeoutAndActiveOneIsKept_1_9)
   hub_.take_actions();
   EXPECT_FALSE(hub_.database().is_connected(quiet));
   EXPECT_TRUE(hub_.database().is_connected(talker));
-  EXPECT_TRUE(logged("client \"quiet\" (127.0.0.1:quiet): nothing received for more than 3 s (ClientTimeout)"));
+  EXPECT_TRUE(logged(
+      "client \"quiet\" (127.0.0.1:quiet): nothing received for more than 3 s (ClientTimeout)"));
 }
 
 // Liveness is what the client sent, not complete packets: the first bytes of a large packet

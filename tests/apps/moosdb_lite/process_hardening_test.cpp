@@ -3,9 +3,7 @@
 // and a client whose output piles up is slowed down and warned before it is dropped.
 
 #include <gtest/gtest.h>
-#include <sys/socket.h>
 
-#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <fstream>
@@ -35,11 +33,23 @@ using test_support::ScratchDir;
 using test_support::steady_now_s;
 
 /// Variables the stalling client creates, and wildcard filters it then registers: each
-/// filter is matched against every variable, so the packet keeps the server busy for
-/// seconds (measured below, and asserted, so the test cannot pass without a stall).
+/// filter is matched against every variable, so the packet keeps the server busy. The number
+/// of filters doubles until one packet stalls the server for kStallFactor x the timeout
+/// (measured, and asserted, so the test cannot pass without a stall on any machine).
 constexpr int kStallVariables = 20000;
-constexpr int kStallFilters = 800;
+constexpr int kFirstStallFilters = 800;
+constexpr int kMostStallFilters = 800 * 16;
 constexpr double kStallTimeout_s = 1.0;
+constexpr double kStallFactor = 1.5;
+
+/// One packet of `count` WILDCARD_REGISTERs that match no variable, all different.
+std::vector<Message> non_matching_filters(int first, int count) {
+  std::vector<Message> filters;
+  for (int i = first; i < first + count; ++i)
+    filters.push_back(wildcard(
+        "AppPattern=*,VarPattern=NO_MATCH_" + std::to_string(i) + "_*,Interval=0", "pStall"));
+  return filters;
+}
 
 bool contains(const std::string& text, const std::string& fragment) {
   return text.find(fragment) != std::string::npos;
@@ -47,7 +57,8 @@ bool contains(const std::string& text, const std::string& fragment) {
 
 std::size_t count_of(const std::string& text, const std::string& fragment) {
   std::size_t n = 0;
-  for (auto at = text.find(fragment); at != std::string::npos; at = text.find(fragment, at + 1)) ++n;
+  for (auto at = text.find(fragment); at != std::string::npos; at = text.find(fragment, at + 1))
+    ++n;
   return n;
 }
 
@@ -72,20 +83,26 @@ TEST(MoosdbLiteHardening, ServerStallDoesNotDropClientsWhoseInputWaited) {
       std::this_thread::sleep_for(std::chrono::milliseconds(100));
     }
   });
-  std::vector<Message> filters;
-  for (int i = 0; i < kStallFilters; ++i)
-    filters.push_back(wildcard("AppPattern=*,VarPattern=NO_MATCH_" + std::to_string(i) + "_*,Interval=0", "pStall"));
-  const double start = steady_now_s();
-  const auto reply = staller.exchange(filters);
-  const double stall_s = steady_now_s() - start;
+  double stall_s = 0;
+  bool replied = true;
+  int sent = 0;
+  for (int count = kFirstStallFilters;
+       replied && stall_s <= kStallFactor * kStallTimeout_s && count <= kMostStallFilters;
+       count *= 2) {
+    const auto filters = non_matching_filters(sent, count);
+    sent += count;
+    const double start = steady_now_s();
+    replied = staller.exchange(filters).has_value();
+    stall_s = steady_now_s() - start;
+  }
   // Rounds after the stall, well within the timeout for the staller that waited for its reply.
   std::this_thread::sleep_for(std::chrono::milliseconds(300));
   const std::string log = server.stderr_text();
   beating = false;
   beats.join();
 
-  ASSERT_TRUE(reply) << "the stalling client itself was dropped";
-  ASSERT_GT(stall_s, 1.5 * kStallTimeout_s) << "the packet did not stall the server long enough";
+  ASSERT_TRUE(replied) << "the stalling client itself was dropped";
+  ASSERT_GT(stall_s, kStallFactor * kStallTimeout_s) << "no packet stalled the server long enough";
   EXPECT_FALSE(contains(log, "nothing received")) << log;
   EXPECT_TRUE(staller.exchange({null_message("pStall")})) << "pStall lost its connection";
 }
@@ -235,7 +252,8 @@ TEST(MoosdbLiteHardening, ClientThatTakesNothingForTheSendTimeoutIsDropped) {
   post_large(poster, "BIG", 16, kLargeMessageBytes);
   const std::string reason =
       "nothing could be written for " + std::to_string(static_cast<int>(kSendStall_s)) + " s";
-  EXPECT_TRUE(server.wait_for_log(reason, kSendStall_s + kArrivalTimeout_s)) << server.stderr_text();
+  EXPECT_TRUE(server.wait_for_log(reason, kSendStall_s + kArrivalTimeout_s))
+      << server.stderr_text();
   EXPECT_TRUE(server.wait_for_log("client \"pSlow\"", kArrivalTimeout_s));
   EXPECT_TRUE(poster.exchange({null_message("pPoster")}));
 }
