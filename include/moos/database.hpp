@@ -57,9 +57,10 @@ using ClientId = std::uint64_t;
 
 /// Default community of the reference MOOSDB (spec 5.11).
 inline constexpr const char* kDefaultCommunity = "#1";
-/// Undelivered mail a client may accumulate before it is dropped: twice the default packet
-/// limit (spec 3.4), so that one maximal message always fits.
-inline constexpr std::size_t kDefaultMaxPendingBytes = 256u * 1024u * 1024u;
+/// Undelivered mail a client may accumulate before it is dropped, in bytes: twice moosdb-lite's
+/// packet limit (256 MiB, sized from libMOOS's 2,048-message outbox), so a libMOOS client that
+/// subscribes to what it posts always gets the echo of its largest packet (issue 12).
+inline constexpr std::size_t kDefaultMaxPendingBytes = 512u * 1024u * 1024u;
 /// Refusals logged per client before further ones are only counted (keeps a misbehaving
 /// client from flooding the log; the count is logged when it disconnects).
 inline constexpr int kLoggedRefusalsPerClient = 20;
@@ -121,6 +122,9 @@ class Database {
   bool is_connected(ClientId id) const { return clients_.count(id) != 0; }
   std::optional<std::string> client_name(ClientId id) const;
   bool is_async(ClientId id) const;
+  /// Encoded bytes of the mail queued for a client and not yet handed to take_output() (a
+  /// synchronous client's mail waits for its next packet); 0 for unknown ids.
+  std::size_t pending_bytes(ClientId id) const;
   /// The snapshot a REGISTER of `name` would send now (spec 2.6); nullopt while unwritten.
   std::optional<Message> latest(const std::string& name) const;
 

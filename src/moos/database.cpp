@@ -102,7 +102,7 @@ void Database::disconnect(ClientId id, double now_moos_s) {
   Client& client = it->second;
   for (const VarId var : client.subscribed) vars_[var].subscribers.erase(id);
   if (client.refusals > kLoggedRefusalsPerClient)
-    log_("client \"" + client.name + "\": " + std::to_string(client.refusals) +
+    log_(describe(id) + ": " + std::to_string(client.refusals) +
          " messages refused in total");
   const std::string name = client.name;
   client_by_name_.erase(name);
@@ -171,11 +171,13 @@ void Database::handle_message(ClientId id, Message msg, double now) {
 // ---------------------------------------------------------------------------------------
 // Diagnostics and queries
 
+// `what` quotes the client's own text (names, patterns, types): escaped here, once, so a
+// refusal can never end a log line or forge one (issue 12).
 void Database::refuse(ClientId id, const std::string& what) {
   Client& client = clients_.at(id);
   ++client.refusals;
   if (client.refusals <= kLoggedRefusalsPerClient) {
-    log_(describe(id) + ": " + what);
+    log_(describe(id) + ": " + base::escape_for_log(what));
   } else if (client.refusals == kLoggedRefusalsPerClient + 1) {
     log_(describe(id) + ": more refused messages; further ones are counted, not logged");
   }
@@ -184,7 +186,7 @@ void Database::refuse(ClientId id, const std::string& what) {
 std::string Database::describe(ClientId id) const {
   const auto it = clients_.find(id);
   return it == clients_.end() ? "client #" + std::to_string(id)
-                              : "client \"" + it->second.name + "\"";
+                              : "client \"" + base::escape_for_log(it->second.name) + "\"";
 }
 
 std::optional<std::string> Database::client_name(ClientId id) const {
@@ -196,6 +198,11 @@ std::optional<std::string> Database::client_name(ClientId id) const {
 bool Database::is_async(ClientId id) const {
   const auto it = clients_.find(id);
   return it != clients_.end() && it->second.async;
+}
+
+std::size_t Database::pending_bytes(ClientId id) const {
+  const auto it = clients_.find(id);
+  return it == clients_.end() ? 0 : it->second.pending_bytes;
 }
 
 std::optional<Message> Database::latest(const std::string& name) const {

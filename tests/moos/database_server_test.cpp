@@ -143,5 +143,23 @@ TEST(DatabaseLimits, ClientWhoseUndeliveredMailOverflowsIsReportedForDropping) {
   EXPECT_NE(drops[0].reason.find("exceed 1000 bytes"), std::string::npos);
 }
 
+// The mail a synchronous client has not collected is what the server's memory budget counts.
+TEST(DatabaseLimits, PendingBytesCountTheMailASyncClientHasNotCollected) {
+  Database db(DatabaseConfig{}, kT0, [](const std::string&) {});
+  ASSERT_TRUE(db.connect(kA, {identification("lazy", false)}, kT0));
+  ASSERT_TRUE(db.connect(kB, {identification("pub", true)}, kT0));
+  db.process_packet(kA, {registration("X", 0, "lazy")}, kT0);
+  EXPECT_EQ(db.pending_bytes(kA), 0u);
+  db.process_packet(kB, {notify_string("X", std::string(500, 'x'), "pub")}, kT0);
+  const std::size_t one = db.pending_bytes(kA);
+  EXPECT_GT(one, 500u);
+  db.process_packet(kB, {notify_string("X", std::string(500, 'x'), "pub")}, kT0);
+  EXPECT_EQ(db.pending_bytes(kA), 2 * one);
+  EXPECT_EQ(db.pending_bytes(kB), 0u);  // an asynchronous client's mail leaves at once
+  db.process_packet(kA, {null_message("lazy")}, kT0);
+  EXPECT_EQ(db.pending_bytes(kA), 0u);
+  EXPECT_EQ(db.pending_bytes(kC), 0u);
+}
+
 }  // namespace
 }  // namespace moos::test

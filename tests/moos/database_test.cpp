@@ -307,6 +307,19 @@ TEST_F(DatabaseTest, MalformedMessagesAreRefusedWithReasonAndTheRestIsProcessed)
   EXPECT_TRUE(logged("Interval 'soon' is not a number >= 0"));
 }
 
+// Client text in a refusal (name, variable, type byte, pattern) cannot end a log line or
+// forge one: control bytes and backslashes are escaped (issue 12).
+TEST_F(DatabaseTest, RefusalsEscapeTheClientsText) {
+  connect(kA, "p\nEvil", true);
+  Message bad_type = notify_double("KEY\nmoosdb-lite: forged", 1, "p\nEvil");
+  bad_type.data_type = '\r';
+  send(kA, {bad_type, wildcard("AppPattern=*\\,VarPattern=\n,Interval=-1", "p\nEvil")});
+  EXPECT_TRUE(logged("client \"p\\x0AEvil\": NOTIFY KEY\\x0Amoosdb-lite: forged with data type "
+                     "'\\x0D' refused"));
+  EXPECT_TRUE(logged("WILDCARD_REGISTER \"AppPattern=*\\x5C,VarPattern=\\x0A,Interval=-1\""));
+  for (const auto& line : logs_) EXPECT_EQ(line.find_first_of("\n\r"), std::string::npos) << line;
+}
+
 TEST_F(DatabaseTest, RefusalsBeyondTheLogLimitAreCountedNotLogged) {
   connect(kA, "async", true);
   std::vector<Message> bad(kLoggedRefusalsPerClient + 30, notify_double("", 1, "async"));

@@ -2,9 +2,10 @@
 //
 // One poll() round: accept new connections, read from readable ones (each read goes to
 // the Hub at once and its actions are applied before the next read, so a connection the
-// Hub closes is never read again), run the Hub's timers, write what is pending, enforce
-// the output limits, and close what is finished. Poll wakes at least every
-// kPollInterval_ms so timeouts and the DB-variable timer run without traffic.
+// Hub closes is never read again), run the Hub's timers with the time poll() returned,
+// write what is pending, enforce the output limits and the memory budget, pause or resume
+// reading by the output each connection has queued, and close what is finished. Poll wakes
+// at least every kPollInterval_ms so timeouts and the DB-variable timer run without traffic.
 
 #include "event_loop.hpp"
 
@@ -16,6 +17,7 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -38,6 +40,14 @@ constexpr std::size_t kReadBudgetBytes = 1024 * 1024;
 constexpr int kMaxAcceptsPerRound = 64;
 
 std::string errno_text() { return std::strerror(errno); }
+std::string errno_text(int error) { return std::strerror(error); }
+
+/// A descriptor kept in reserve for accept-and-close when the process runs out of them.
+int open_reserve_descriptor() { return ::open("/dev/null", O_RDONLY | O_CLOEXEC); }
+
+bool out_of_descriptors(int error) {
+  return error == EMFILE || error == ENFILE || error == ENOBUFS || error == ENOMEM;
+}
 
 std::string peer_name(const sockaddr_in& addr) {
   char host[INET_ADDRSTRLEN] = "?";
@@ -69,6 +79,7 @@ EventLoop::EventLoop(EventLoopConfig config, Hub& hub, LogSink log)
 EventLoop::~EventLoop() {
   for (auto& [id, socket] : sockets_) ::close(socket.fd);
   if (listen_fd_ >= 0) ::close(listen_fd_);
+  if (reserve_fd_ >= 0) ::close(reserve_fd_);
 }
 
 bool EventLoop::listen(std::string* error) {
@@ -99,6 +110,7 @@ bool EventLoop::listen(std::string* error) {
   getsockname(listen_fd_, reinterpret_cast<sockaddr*>(&addr), &length);
   bound_port_ = ntohs(addr.sin_port);
   if (config_.port_file && !write_port_file(*config_.port_file, bound_port_, error)) return false;
+  reserve_fd_ = open_reserve_descriptor();
   return true;
 }
 
@@ -109,11 +121,13 @@ void EventLoop::run(int wake_fd, const volatile std::sig_atomic_t& stop_requeste
   while (stop_requested == 0) {
     fds.clear();
     ids.clear();
-    fds.push_back(pollfd{listen_fd_, POLLIN, 0});
+    const double before_poll = moos::system_clock().unix_now_s();
+    // While the listener rests (no descriptors), poll a harmless -1 in its place.
+    fds.push_back(pollfd{before_poll < listen_paused_until_s_ ? -1 : listen_fd_, POLLIN, 0});
     fds.push_back(pollfd{wake_fd, POLLIN, 0});
     for (const auto& [id, socket] : sockets_) {
       short events = 0;
-      if (!socket.closing) events |= POLLIN;
+      if (!socket.closing && !socket.reading_paused) events |= POLLIN;
       if (socket.pending() > 0 && !socket.broken) events |= POLLOUT;
       fds.push_back(pollfd{socket.fd, events, 0});
       ids.push_back(id);
@@ -122,7 +136,10 @@ void EventLoop::run(int wake_fd, const volatile std::sig_atomic_t& stop_requeste
       log_("poll failed: " + errno_text());
       return;
     }
-    double now = moos::system_clock().unix_now_s();
+    // The last time the server looked at the sockets: whatever a client sent before this
+    // is read in this round, so silence is judged at this time, however long the round.
+    const double looked = moos::system_clock().unix_now_s();
+    double now = looked;
     if (fds[1].revents != 0) {
       char drain[64];
       while (::read(wake_fd, drain, sizeof drain) > 0) {
@@ -132,14 +149,16 @@ void EventLoop::run(int wake_fd, const volatile std::sig_atomic_t& stop_requeste
     for (std::size_t i = 0; i < ids.size(); ++i) {
       if (fds[i + 2].revents & (POLLIN | POLLHUP | POLLERR)) read_from(ids[i], now);
     }
+    hub_.tick(looked);
     now = moos::system_clock().unix_now_s();
-    hub_.tick(now);
     apply_actions(now);
     for (auto& [id, socket] : sockets_) {
       if (socket.pending() > 0 && !socket.broken) write_to(id, now);
     }
     apply_actions(now);
     enforce_output_limits(now);
+    enforce_memory_budget(now);
+    apply_back_pressure(now);
     reap_closed(now);
     if (after_round) after_round();
   }
@@ -152,8 +171,13 @@ void EventLoop::accept_new(double now) {
     const int fd = ::accept4(listen_fd_, reinterpret_cast<sockaddr*>(&addr), &length,
                              SOCK_NONBLOCK | SOCK_CLOEXEC);
     if (fd < 0) {
-      if (errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR)
-        log_("accept failed: " + errno_text());
+      const int error = errno;
+      if (out_of_descriptors(error)) {
+        shed_connection(now, error);
+      } else if (error != EAGAIN && error != EWOULDBLOCK && error != EINTR &&
+                 error != ECONNABORTED) {
+        log_("accept failed: " + errno_text(error));
+      }
       return;
     }
     const int on = 1;
@@ -166,7 +190,39 @@ void EventLoop::accept_new(double now) {
   }
 }
 
+void EventLoop::shed_connection(double now, int error) {
+  ++shed_count_;
+  bool shed = false;
+  if (reserve_fd_ >= 0) {
+    // The reserve makes room for exactly one accept: take the connection and close it, so
+    // the client learns at once, and the listener stops reporting it (no spin).
+    ::close(reserve_fd_);
+    const int fd = ::accept4(listen_fd_, nullptr, nullptr, SOCK_CLOEXEC);
+    if (fd >= 0) {
+      ::close(fd);
+      shed = true;
+    }
+    reserve_fd_ = open_reserve_descriptor();
+  }
+  // Without a reserve (or if another thread of the system took the slot), rest the listener.
+  if (!shed || reserve_fd_ < 0) listen_paused_until_s_ = now + kAcceptBackoff_s;
+  if (now - shed_logged_s_ >= kDescriptorLogInterval_s) {
+    log_("warning: cannot accept connections (" + errno_text(error) + "): " +
+         std::to_string(shed_count_ - shed_logged_count_) + " refused since the last warning, " +
+         std::to_string(shed_count_) + " in total; clients connected: " +
+         std::to_string(sockets_.size()));
+    shed_logged_s_ = now;
+    shed_logged_count_ = shed_count_;
+  }
+}
+
 void EventLoop::read_from(ConnectionId id, double now) {
+  read_chunks(id, now);
+  // Whatever it sent has been processed now, however long that took.
+  hub_.heard(id, moos::system_clock().unix_now_s());
+}
+
+void EventLoop::read_chunks(ConnectionId id, double now) {
   static char buffer[kReadChunkBytes];
   std::size_t budget = kReadBudgetBytes;
   while (budget > 0) {
@@ -258,6 +314,52 @@ void EventLoop::enforce_output_limits(double now) {
   }
   for (const auto& [id, reason] : overloaded) hub_.drop(id, reason, now);
   if (!overloaded.empty()) apply_actions(now);
+}
+
+void EventLoop::apply_back_pressure(double now) {
+  // Under a small output limit, pause at half of it: the warning always comes before a drop.
+  const std::size_t pause_at = std::min(kPauseReadingOutputBytes, config_.max_output_bytes / 2);
+  for (auto& [id, socket] : sockets_) {
+    if (socket.closing || socket.broken) continue;
+    if (!socket.reading_paused && socket.pending() > pause_at) {
+      socket.reading_paused = true;
+      hub_.set_reading_paused(id, true, now);
+      log_("warning: " + hub_.describe(id) + ": " + std::to_string(socket.pending()) +
+           " bytes wait to be sent; its messages are delayed, reading from it paused until "
+           "it takes them");
+    } else if (socket.reading_paused && socket.pending() <= pause_at / 2) {
+      socket.reading_paused = false;
+      hub_.set_reading_paused(id, false, now);
+    }
+  }
+}
+
+void EventLoop::enforce_memory_budget(double now) {
+  for (;;) {
+    std::size_t total = 0;
+    std::size_t largest = 0;
+    ConnectionId largest_id = 0;
+    for (const auto& [id, socket] : sockets_) {
+      const std::size_t held = socket.pending() + hub_.held_bytes(id);
+      total += held;
+      if (held > largest) {
+        largest = held;
+        largest_id = id;
+      }
+    }
+    if (total <= config_.memory_budget_bytes || largest == 0) return;
+    ++budget_drops_;
+    log_("warning: connections hold " + std::to_string(total) +
+         " bytes (unsent output, incomplete packets, kept mail), over the memory budget of " +
+         std::to_string(config_.memory_budget_bytes) + " bytes; dropping the largest (" +
+         std::to_string(budget_drops_) + " dropped by the budget so far)");
+    hub_.drop(largest_id,
+              "holds " + std::to_string(largest) + " bytes, the most under the memory budget",
+              now);
+    // The Hub may not know it (a connection already closing): close it here regardless.
+    apply_actions(now);
+    close_socket(largest_id);
+  }
 }
 
 void EventLoop::reap_closed(double now) {

@@ -10,9 +10,24 @@
 //   byte to `wake_fd` so poll() returns at once). Every accepted socket gets TCP_NODELAY
 //   (spec 1.1). Reads are bounded per connection per round, so one flooding client cannot
 //   starve the others.
-// - Each connection has an output buffer. If its unsent bytes exceed `max_output_bytes`,
-//   or nothing could be written for kSendStall_s while bytes were waiting (the reference
-//   DB's 6 s send timeout, spec 1.1), the connection is dropped with a logged reason.
+// - Each connection has an output buffer. Back-pressure first: while its unsent bytes exceed
+//   kPauseReadingOutputBytes (or half of `max_output_bytes` if less) the connection is not
+//   read (it cannot make more replies, the client is slowed down, a warning says its
+//   messages are delayed); reading resumes below half of that. Only if its unsent bytes
+//   exceed `max_output_bytes`, or nothing could be written for kSendStall_s while bytes were
+//   waiting (the reference DB's 6 s send timeout, spec 1.1), is the connection dropped with
+//   a logged reason.
+// - Global memory budget: the unsent output of all connections, their incomplete packets and
+//   the mail the database keeps for them stay within `memory_budget_bytes`. Above it, the
+//   connection holding the most is dropped with a logged warning, and the drops are counted
+//   (never a crash).
+// - Descriptor exhaustion (accept fails with EMFILE/ENFILE): a reserve descriptor is released
+//   to accept the waiting connection and close it at once, so the listener does not spin;
+//   without a reserve the listener is not polled for kAcceptBackoff_s. The failures are
+//   logged at most once per kDescriptorLogInterval_s, with their count.
+// - Liveness: the Hub's timers run with the time poll() returned (the last time the server
+//   looked at the sockets), not the time after processing, and a connection whose input was
+//   read is heard() when its processing ends (hub.hpp).
 // - A connection closed "after send" gets at most kCloseGrace_s to take its last bytes.
 
 #include <csignal>
@@ -30,12 +45,23 @@ namespace moosdb_lite {
 inline constexpr double kSendStall_s = 6.0;
 /// Time given to a closing connection to take a POISON or its last reply.
 inline constexpr double kCloseGrace_s = 2.0;
+/// Unsent bytes above which a connection is no longer read (back-pressure), in bytes.
+inline constexpr std::size_t kPauseReadingOutputBytes = 64u * 1024u * 1024u;
+/// Default global budget, in bytes: unsent output, incomplete packets and kept mail of all
+/// connections.
+/// Holds two libMOOS clients each echoing a maximal packet (hub.hpp) with room to spare.
+inline constexpr std::size_t kDefaultMemoryBudgetBytes = 1024u * 1024u * 1024u;
+/// How long the listener rests when a connection cannot be accepted for lack of descriptors.
+inline constexpr double kAcceptBackoff_s = 0.1;
+/// Descriptor-exhaustion warnings are logged at most this often (the rest are counted).
+inline constexpr double kDescriptorLogInterval_s = 10.0;
 
 struct EventLoopConfig {
   std::string bind_address;
   int port = 0;  ///< 0: the OS picks
   std::optional<std::string> port_file;
   std::size_t max_output_bytes = 0;
+  std::size_t memory_budget_bytes = kDefaultMemoryBudgetBytes;
 };
 
 class EventLoop {
@@ -64,11 +90,17 @@ class EventLoop {
     double close_deadline_real_s = 0;
     double last_progress_real_s = 0;
     bool broken = false;         ///< a write failed: close without further writes
+    bool reading_paused = false; ///< back-pressure: too much unsent output
     std::size_t pending() const { return out.size() - out_offset; }
   };
 
   void accept_new(double now);
+  /// accept() failed for lack of descriptors: shed the connection, back off, log rarely.
+  void shed_connection(double now, int error);
+  void apply_back_pressure(double now);
+  void enforce_memory_budget(double now);
   void read_from(ConnectionId id, double now);
+  void read_chunks(ConnectionId id, double now);
   void write_to(ConnectionId id, double now);
   void apply_actions(double now);
   void enforce_output_limits(double now);
@@ -79,6 +111,12 @@ class EventLoop {
   Hub& hub_;
   LogSink log_;
   int listen_fd_ = -1;
+  int reserve_fd_ = -1;  ///< released to accept-and-close when descriptors run out
+  double listen_paused_until_s_ = 0;
+  std::size_t shed_count_ = 0;         ///< connections refused for lack of descriptors
+  std::size_t shed_logged_count_ = 0;  ///< ... of which the log already told
+  double shed_logged_s_ = -1e300;
+  std::size_t budget_drops_ = 0;       ///< connections dropped by the memory budget
   int bound_port_ = 0;
   std::map<ConnectionId, Socket> sockets_;
 };

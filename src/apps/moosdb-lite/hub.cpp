@@ -59,6 +59,9 @@ void Hub::receive(ConnectionId id, std::string_view bytes, double now_real_s) {
   const auto it = connections_.find(id);
   if (it == connections_.end()) return;
   Connection& conn = it->second;
+  // Liveness is judged by what the client sent: any byte counts, so a large packet that
+  // takes many reads to arrive keeps its sender alive (issue 12).
+  if (!bytes.empty()) conn.last_input_real_s = now_real_s;
   if (conn.state == State::kBanner) {
     process_banner(id, conn, bytes, now_real_s);
     if (connections_.count(id) == 0 || conn.state == State::kBanner) return;
@@ -94,7 +97,7 @@ void Hub::process_packets(ConnectionId id, double now) {
     const auto status = conn.reader.next(packet, &error);
     if (status == moos::PacketReader::Status::kNeedMore) return;
     if (status == moos::PacketReader::Status::kError) {
-      const std::string what = "bad packet (" + error.reason + " at byte " +
+      const std::string what = "bad packet (" + base::escape_for_log(error.reason) + " at byte " +
                                std::to_string(error.offset) + ")";
       if (conn.state == State::kIdent) {
         log_(describe(id) + ": " + what + " in the handshake");
@@ -108,7 +111,6 @@ void Hub::process_packets(ConnectionId id, double now) {
       handle_identification(id, packet, now);
       continue;
     }
-    conn.last_packet_real_s = now;
     db_.process_packet(id, std::move(packet), moos_time(now));
     collect_database_output(now);
   }
@@ -123,14 +125,15 @@ void Hub::handle_identification(ConnectionId id, const std::vector<moos::Message
     collect_database_output(now);
     close(id,
           name.empty() ? std::string("handshake refused: no client name")
-                       : "handshake refused: " + moos::duplicate_name_reason(name),
+                       : "handshake refused: " +
+                             base::escape_for_log(moos::duplicate_name_reason(name)),
           now, Action::Kind::kCloseAfterSend);
     return;
   }
   Connection& conn = connections_.at(id);
   conn.state = State::kActive;
   conn.state_since_real_s = now;
-  conn.last_packet_real_s = now;
+  conn.last_input_real_s = now;
   log_(describe(id) + ": connected (" +
        (db_.is_async(id) ? "asynchronous" : "synchronous") + ")");
   collect_database_output(now);
@@ -162,6 +165,26 @@ void Hub::drop(ConnectionId id, const std::string& reason, double now_real_s) {
   close(id, reason + "; connection dropped", now_real_s, Action::Kind::kClose);
 }
 
+void Hub::heard(ConnectionId id, double now_real_s) {
+  const auto it = connections_.find(id);
+  if (it != connections_.end())
+    it->second.last_input_real_s = std::max(it->second.last_input_real_s, now_real_s);
+}
+
+void Hub::set_reading_paused(ConnectionId id, bool paused, double now_real_s) {
+  const auto it = connections_.find(id);
+  if (it == connections_.end() || it->second.reading_paused == paused) return;
+  it->second.reading_paused = paused;
+  // The client could not be heard while paused: its silence counts from the resumption.
+  if (!paused) it->second.last_input_real_s = now_real_s;
+}
+
+std::size_t Hub::held_bytes(ConnectionId id) const {
+  const auto it = connections_.find(id);
+  if (it == connections_.end()) return 0;
+  return it->second.reader.buffered() + db_.pending_bytes(id);
+}
+
 void Hub::tick(double now_real_s) {
   std::vector<std::pair<ConnectionId, std::string>> expired;
   for (const auto& [id, conn] : connections_) {
@@ -173,8 +196,9 @@ void Hub::tick(double now_real_s) {
       expired.emplace_back(id, "no identification packet within " +
                                    base::format_g(config_.handshake_timeout_s) + " s");
     } else if (conn.state == State::kActive && config_.client_timeout_s &&
-               now_real_s - conn.last_packet_real_s > *config_.client_timeout_s) {
-      expired.emplace_back(id, "no packet for more than " +
+               !conn.reading_paused &&
+               now_real_s - conn.last_input_real_s > *config_.client_timeout_s) {
+      expired.emplace_back(id, "nothing received for more than " +
                                    base::format_g(*config_.client_timeout_s) +
                                    " s (ClientTimeout)");
     }
@@ -222,7 +246,7 @@ std::string Hub::describe(ConnectionId id) const {
   const auto it = connections_.find(id);
   if (it == connections_.end()) return "connection #" + std::to_string(id);
   if (const auto name = db_.client_name(id))
-    return "client \"" + *name + "\" (" + it->second.peer + ")";
+    return "client \"" + base::escape_for_log(*name) + "\" (" + it->second.peer + ")";
   return "connection #" + std::to_string(id) + " (" + it->second.peer + ")";
 }
 

@@ -12,7 +12,14 @@
 //   the next state and are never discarded (5.1a). Every complete packet is processed even
 //   if the peer closes right after it (5.6).
 // - States: BANNER (32 bytes, banner_timeout_s) -> IDENT (one packet, handshake_timeout_s)
-//   -> ACTIVE (inactivity limit client_timeout_s, none if unset) -> closed. A wrong banner
+//   -> ACTIVE (inactivity limit client_timeout_s, none if unset) -> closed. Inactivity is
+//   judged by what the client sent (any byte, so a large packet arriving over many reads
+//   keeps its sender alive) at the time the transport last looked at its socket: tick()'s
+//   `now_real_s` must be the time of that look (the poll's return), never a later time, so a
+//   server busy for seconds does not count its own stall as the clients' silence (issue 12).
+//   heard() moves the start of a connection's silence to when its input was processed.
+//   A connection whose reading the transport paused (set_reading_paused) is not judged; its
+//   silence counts again from the resumption. A wrong banner
 //   closes without a reply; a failed identification gets POISON (1.6) before the close;
 //   a framing or decoding error, an oversized packet header, a truncated packet at end of
 //   stream or inactivity closes the connection. Each close of a misbehaving peer is logged
@@ -37,6 +44,15 @@ using ConnectionId = moos::ClientId;
 using moos::kDefaultCommunity;
 using moos::kDefaultMaxPendingBytes;
 
+/// Largest packet a client may send, in bytes. Sized from libMOOS: an asynchronous client
+/// sends its whole backlog as one packet, and its outbox holds up to 2,048 messages
+/// (OUTBOX_PENDING_LIMIT); core-moos's app_test posts 100 kB messages, so its packets reach
+/// ~205 MB. 256 MiB holds 2,048 messages of 128 KiB each. (The client side keeps
+/// moos::kDefaultMaxPacketBytes.)
+inline constexpr std::size_t kDefaultServerMaxPacketBytes = 256u * 1024u * 1024u;
+static_assert(kDefaultMaxPendingBytes >= 2 * kDefaultServerMaxPacketBytes,
+              "a client's output must hold the echo of one maximal packet plus one more");
+
 /// Banner and identification limits (spec 1.5: the DB reads the identification with a
 /// 5-second timeout; the banner gets the same).
 inline constexpr double kDefaultBannerTimeout_s = 5.0;
@@ -53,7 +69,7 @@ struct HubConfig {
   double banner_timeout_s = kDefaultBannerTimeout_s;
   double handshake_timeout_s = kDefaultHandshakeTimeout_s;
   std::optional<double> client_timeout_s = kDefaultClientTimeout_s;  ///< nullopt: never
-  std::size_t max_packet_bytes = moos::kDefaultMaxPacketBytes;
+  std::size_t max_packet_bytes = kDefaultServerMaxPacketBytes;
 };
 
 struct Action {
@@ -82,8 +98,19 @@ class Hub {
   void end_of_stream(ConnectionId id, double now_real_s, std::string_view reason = {});
   /// The transport gives up on a connection (e.g. its output overflowed); logged.
   void drop(ConnectionId id, const std::string& reason, double now_real_s);
-  /// Timeouts and the DB-variable timer.
+  /// Timeouts and the DB-variable timer; `now_real_s` is when the transport last looked at
+  /// every socket (see the contract).
   void tick(double now_real_s);
+  /// The transport finished handing over (and the Hub processing) what the connection sent,
+  /// at `now_real_s`: its silence counts from then, so a client that waits for the reply to
+  /// a packet that kept the server busy is not judged silent for that time.
+  void heard(ConnectionId id, double now_real_s);
+  /// The transport stopped (true) or resumed (false) reading from a connection
+  /// (back-pressure); a paused connection is not judged silent.
+  void set_reading_paused(ConnectionId id, bool paused, double now_real_s);
+  /// Bytes held for a connection besides its socket output, for the memory budget: its
+  /// incomplete packet and the mail the database keeps for it.
+  std::size_t held_bytes(ConnectionId id) const;
 
   std::vector<Action> take_actions();
 
@@ -101,7 +128,8 @@ class Hub {
     std::string banner;            ///< banner bytes received so far
     moos::PacketReader reader;
     double state_since_real_s = 0; ///< when the current state began
-    double last_packet_real_s = 0; ///< last complete packet (ACTIVE)
+    double last_input_real_s = 0;  ///< last byte received (liveness in ACTIVE)
+    bool reading_paused = false;   ///< the transport does not read it (back-pressure)
     explicit Connection(std::size_t max_packet_bytes) : reader(max_packet_bytes) {}
   };
 

@@ -96,7 +96,7 @@ const std::vector<OptionDoc>& option_docs() {
       {"--port-file=FILE", "write the bound port number to FILE once listening"},
       {"--log=FILE", "write every accepted NOTIFY to FILE in pLogger's .alog format"},
       {"--max-packet-bytes=N", "largest packet accepted from a client (default " +
-                                   std::to_string(moos::kDefaultMaxPacketBytes) + ")"},
+                                   std::to_string(kDefaultServerMaxPacketBytes) + ")"},
       {"--max-output-bytes=N", "unsent bytes allowed per client before it is dropped (default " +
                                    std::to_string(kDefaultMaxPendingBytes) + ")"},
       {"--banner-timeout=S", "seconds a new connection has to send the protocol banner (default " +
@@ -223,7 +223,7 @@ ServerOptions resolve_options(const CommandLine& cli, const std::string& mission
   ServerOptions options;
   options.community = kDefaultCommunity;
   options.client_timeout_s = kDefaultClientTimeout_s;
-  options.max_packet_bytes = moos::kDefaultMaxPacketBytes;
+  options.max_packet_bytes = kDefaultServerMaxPacketBytes;
   options.max_output_bytes = kDefaultMaxPendingBytes;
   options.banner_timeout_s = kDefaultBannerTimeout_s;
   options.handshake_timeout_s = kDefaultHandshakeTimeout_s;

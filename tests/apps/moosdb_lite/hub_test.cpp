@@ -197,6 +197,25 @@ TEST_F(HubTest, HeaderAnnouncingTwoGigabytesDropsTheClientBeforeAllocating_3_4) 
   EXPECT_TRUE(logged("client \"pA\" (127.0.0.1:pA): bad packet (packet header announces 2147483648 bytes"));
 }
 
+// The server's packet limit is sized from libMOOS (2,048 queued messages sent as one packet):
+// core-moos's app_test sends ~205 MB packets of 100 kB messages, which must be taken.
+TEST(HubLimits, DefaultPacketLimitTakesALibmoosBacklogOf100kBMessages) {
+  constexpr std::size_t kLibmoosOutboxMessages = 2048;
+  constexpr std::size_t kAppTestMessageBytes = 100 * 1000 + 64;
+  EXPECT_GE(HubConfig{}.max_packet_bytes, kLibmoosOutboxMessages * kAppTestMessageBytes);
+  Hub hub(HubConfig{}, kStart, [](const std::string&) {});
+  const ConnectionId id = hub.open("peer", kStart);
+  hub.receive(id, moos::protocol_banner() + moos::encode_packet({identification("pA", true)}),
+              kStart);
+  hub.take_actions();
+  const std::uint32_t announced = kLibmoosOutboxMessages * kAppTestMessageBytes;
+  std::string header(9, '\0');
+  for (std::size_t i = 0; i < 4; ++i) header[i] = static_cast<char>(announced >> (8 * i));
+  hub.receive(id, header, kStart);
+  for (const auto& action : hub.take_actions()) EXPECT_NE(action.kind, Action::Kind::kClose);
+  EXPECT_EQ(hub.held_bytes(id), header.size());
+}
+
 TEST_F(HubTest, MalformedMessageInsideAWellFramedPacketDropsTheClient_2_7) {
   const ConnectionId id = connected("pA", true);
   std::string packet = moos::encode_packet({notify_double("X", 1, "pA")});
@@ -233,7 +252,42 @@ TEST_F(HubTest, InactiveClientIsDroppedAfterClientTimeoutAndActiveOneIsKept_1_9)
   hub_.take_actions();
   EXPECT_FALSE(hub_.database().is_connected(quiet));
   EXPECT_TRUE(hub_.database().is_connected(talker));
-  EXPECT_TRUE(logged("client \"quiet\" (127.0.0.1:quiet): no packet for more than 3 s (ClientTimeout)"));
+  EXPECT_TRUE(logged(
+      "client \"quiet\" (127.0.0.1:quiet): nothing received for more than 3 s (ClientTimeout)"));
+}
+
+// Liveness is what the client sent, not complete packets: the first bytes of a large packet
+// that is still arriving keep its sender alive (issue 12).
+TEST_F(HubTest, AnyByteReceivedKeepsAClientAlive) {
+  const ConnectionId id = connected("pBig", true);
+  const std::string packet = moos::encode_packet({notify_string("BIG", "0123456789", "pBig")});
+  hub_.receive(id, std::string_view(packet).substr(0, 8), kStart + 2.5);
+  hub_.tick(kStart + 5.0);
+  EXPECT_TRUE(hub_.database().is_connected(id));
+  EXPECT_EQ(hub_.held_bytes(id), 8u);
+  hub_.tick(kStart + 5.6);
+  EXPECT_FALSE(hub_.database().is_connected(id));
+}
+
+// While the transport does not read a connection (back-pressure) it is not judged silent;
+// after the resumption its silence counts from then.
+TEST_F(HubTest, PausedConnectionIsNotJudgedSilentUntilResumed) {
+  const ConnectionId id = connected("pSlow", true);
+  hub_.set_reading_paused(id, true, kStart + 1);
+  hub_.tick(kStart + 60);
+  EXPECT_TRUE(hub_.database().is_connected(id));
+  hub_.set_reading_paused(id, false, kStart + 60);
+  hub_.tick(kStart + 62.9);
+  EXPECT_TRUE(hub_.database().is_connected(id));
+  hub_.tick(kStart + 63.1);
+  EXPECT_FALSE(hub_.database().is_connected(id));
+}
+
+// A newline in a client name cannot end a log line (issue 12).
+TEST_F(HubTest, ClientNameIsEscapedInTheLog) {
+  const ConnectionId id = connected("p\nEvil\nforged", true);
+  EXPECT_EQ(hub_.describe(id), "client \"p\\x0AEvil\\x0Aforged\" (127.0.0.1:p\nEvil\nforged)");
+  EXPECT_TRUE(logged("client \"p\\x0AEvil\\x0Aforged\""));
 }
 
 TEST(HubNoTimeout, ClientTimeoutUnsetMeansNever_1_9) {
