@@ -148,6 +148,7 @@ int main(int argc, char** argv) {
   loop_config.port = options.port;
   loop_config.port_file = options.port_file;
   loop_config.max_output_bytes = options.max_output_bytes;
+  loop_config.memory_budget_bytes = options.memory_budget_bytes;
   EventLoop loop(loop_config, hub, log_line);
   std::string error;
   if (!loop.listen(&error)) {

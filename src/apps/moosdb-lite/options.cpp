@@ -6,6 +6,7 @@
 
 #include <stdexcept>
 
+#include "event_loop.hpp"
 #include "hub.hpp"
 #include "moos/codec.hpp"
 #include "moos/limits.hpp"
@@ -99,6 +100,9 @@ const std::vector<OptionDoc>& option_docs() {
                                    std::to_string(kDefaultServerMaxPacketBytes) + ")"},
       {"--max-output-bytes=N", "unsent bytes allowed per client before it is dropped (default " +
                                    std::to_string(kDefaultMaxPendingBytes) + ")"},
+      {"--memory-budget-bytes=N", "bytes all clients together may hold in the server (unsent "
+                                  "output, partial packets) before the largest holder is dropped "
+                                  "(default " + std::to_string(kDefaultMemoryBudgetBytes) + ")"},
       {"--banner-timeout=S", "seconds a new connection has to send the protocol banner (default " +
                                  base::format_g(kDefaultBannerTimeout_s) + ")"},
       {"--handshake-timeout=S", "seconds to send the identification after the banner (default " +
@@ -147,6 +151,7 @@ const moos::SwitchTable& switch_table() {
         switch_rule("--log", SwitchKind::kText, kEmptyFileName),
         switch_rule("--max-packet-bytes", SwitchKind::kUnsigned, bytes, byte_range),
         switch_rule("--max-output-bytes", SwitchKind::kUnsigned, bytes, byte_range),
+        switch_rule("--memory-budget-bytes", SwitchKind::kUnsigned, bytes, byte_range),
         switch_rule("--banner-timeout", SwitchKind::kNumber, "expected seconds > 0",
                     moos::kPositive),
         switch_rule("--handshake-timeout", SwitchKind::kNumber, "expected seconds > 0",
@@ -203,6 +208,7 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
   cli.log_file = v.text("--log");
   cli.max_packet_bytes = v.whole("--max-packet-bytes");
   cli.max_output_bytes = v.whole("--max-output-bytes");
+  cli.memory_budget_bytes = v.whole("--memory-budget-bytes");
   cli.banner_timeout_s = v.number("--banner-timeout");
   cli.handshake_timeout_s = v.number("--handshake-timeout");
   cli.notes = v.notes;
@@ -225,6 +231,7 @@ ServerOptions resolve_options(const CommandLine& cli, const std::string& mission
   options.client_timeout_s = kDefaultClientTimeout_s;
   options.max_packet_bytes = kDefaultServerMaxPacketBytes;
   options.max_output_bytes = kDefaultMaxPendingBytes;
+  options.memory_budget_bytes = kDefaultMemoryBudgetBytes;
   options.banner_timeout_s = kDefaultBannerTimeout_s;
   options.handshake_timeout_s = kDefaultHandshakeTimeout_s;
 
@@ -268,6 +275,7 @@ ServerOptions resolve_options(const CommandLine& cli, const std::string& mission
   if (cli.port_file) options.port_file = cli.port_file;
   if (cli.max_packet_bytes) options.max_packet_bytes = *cli.max_packet_bytes;
   if (cli.max_output_bytes) options.max_output_bytes = *cli.max_output_bytes;
+  if (cli.memory_budget_bytes) options.memory_budget_bytes = *cli.memory_budget_bytes;
   if (cli.banner_timeout_s) options.banner_timeout_s = *cli.banner_timeout_s;
   if (cli.handshake_timeout_s) options.handshake_timeout_s = *cli.handshake_timeout_s;
   // ClientTimeout 0 means "never" (spec 1.9 has no such value; we say it explicitly).

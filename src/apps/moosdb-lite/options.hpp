@@ -57,6 +57,7 @@ struct CommandLine {
   std::optional<std::string> port_file;
   std::optional<std::size_t> max_packet_bytes;
   std::optional<std::size_t> max_output_bytes;
+  std::optional<std::size_t> memory_budget_bytes;
   std::optional<double> banner_timeout_s;
   std::optional<double> handshake_timeout_s;
   bool help = false;
@@ -79,6 +80,7 @@ struct ServerOptions {
   std::optional<std::string> port_file;
   std::size_t max_packet_bytes = 0;
   std::size_t max_output_bytes = 0;
+  std::size_t memory_budget_bytes = 0;  ///< over every client's unsent output and partial packets
   double banner_timeout_s = 0.0;
   double handshake_timeout_s = 0.0;
 };

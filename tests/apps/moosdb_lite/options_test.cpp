@@ -8,6 +8,8 @@
 
 #include "MoosDBLite_Info.hpp"
 #include "doc_tables.hpp"
+#include "event_loop.hpp"
+#include "hub.hpp"
 #include "options.hpp"
 
 namespace moosdb_lite {
@@ -46,7 +48,9 @@ TEST(Options, DefaultsAreThoseOfTheReferenceDb_5_11) {
   ASSERT_TRUE(r.options.client_timeout_s);
   EXPECT_EQ(*r.options.client_timeout_s, 5.0);
   EXPECT_EQ(r.options.bind_address, "127.0.0.1");
-  EXPECT_EQ(r.options.max_packet_bytes, 128u * 1024u * 1024u);
+  EXPECT_EQ(r.options.max_packet_bytes, kDefaultServerMaxPacketBytes);
+  EXPECT_EQ(r.options.max_packet_bytes, 256u * 1024u * 1024u);  // libMOOS's 2,048 x 100 kB fit
+  EXPECT_EQ(r.options.memory_budget_bytes, kDefaultMemoryBudgetBytes);
 }
 
 TEST(Options, MissionGlobalsAreRead_5_11) {
