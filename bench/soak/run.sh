@@ -11,7 +11,7 @@
 # (the newest unclassified detection; min_classify_interval is 30 s). Every simulated minute
 # it samples the resident memory of the sensor and moosdb-lite and the sensor's worst
 # iteration gap. Then check_soak.py judges: memory must not grow after warm-up (the last
-# eighth of the run's max RSS at most 10 % above that of the eighth after a one-eighth
+# eighth of the run's max RSS at most 10 % + 4 MB above that of the eighth after a one-eighth
 # warm-up; 8 h: hours 8 against hour 2) and every request in the .alog must be answered.
 # Exit 0: passed; 1: failed (the work folder is kept either way).
 set -euo pipefail
