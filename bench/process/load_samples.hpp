@@ -3,9 +3,10 @@
 // and iteration lag can be judged after the run.
 //
 // Contract:
-// - open() writes the header: sim_s,sensor_rss_kb,moosdb_rss_kb,worst_iter_gap,worst_iter_len_s.
-// - note_iteration() takes the sensor's <MOOSNAME>_ITER_GAP (the time between two iterations in
-//   AppTick periods: 1 is on time) and _ITER_LEN (seconds one iteration took) as they arrive.
+// - open() writes the header: sim_s,sensor_rss_kb,moosdb_rss_kb,worst_iter_gap,worst_iter_len.
+// - note_iteration_gap() and note_iteration_length() take the sensor's <MOOSNAME>_ITER_GAP (the
+//   MOOS time between two iterations) and _ITER_LEN (the MOOS time one iteration took), both in
+//   AppTick periods (1 = one period), as they arrive.
 // - write() appends one line with the worst gap and length noted since the previous line
 //   (0 when none arrived), then forgets them.
 
@@ -17,15 +18,14 @@ namespace bench {
 class SampleLog {
  public:
   bool open(const std::string& path);
-  bool is_open() const { return out_.is_open(); }
   void note_iteration_gap(double periods);
-  void note_iteration_length(double seconds);
+  void note_iteration_length(double periods);
   void write(double sim_s, long long sensor_rss_kb, long long moosdb_rss_kb);
 
  private:
   std::ofstream out_;
   double worst_gap_ = 0;
-  double worst_len_s_ = 0;
+  double worst_len_ = 0;
 };
 
 }  // namespace bench

@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <map>
-#include <set>
 
 #include "../moosdb_lite/raw_client.hpp"
 #include "base/text.hpp"
@@ -22,13 +21,9 @@ using test_support::steady_now_s;
 using testing::kPatience_s;
 using testing::SensorProcess;
 
-constexpr const char* kApp = "uFldHazardSensor";
-
-std::string n(int v) { return std::to_string(v); }
-
-std::string node_report(const std::string& name, double x, double y) {
-  return "NAME=" + name + ",X=" + base::fmt(x) + ",Y=" + base::fmt(y) + ",SPD=1,HDG=0";
-}
+using testing::kApp;
+using testing::n;
+using testing::node_report;
 
 /// What the app posted of `variable` in `log`, in order.
 std::vector<std::string> posted(const Alog& log, const std::string& variable) {

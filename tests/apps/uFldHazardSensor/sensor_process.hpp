@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "alog_files.hpp"
+#include "base/text.hpp"
 #include "child_process.hpp"
 #include "moos/tcp_client.hpp"
 #include "moosdb_server.hpp"
@@ -45,6 +46,18 @@ inline std::string process_mission(int port, const std::string& block,
          "\n"
          "ProcessConfig = uFldHazardSensor\n"
          "{\n" + block + "}\n";
+}
+
+/// The app's name, the source of its postings in the server's log.
+inline constexpr const char* kApp = "uFldHazardSensor";
+
+/// Integers print without decimals under FMT (spec 0): FMT(32, 1) = "32".
+inline std::string n(int v) { return std::to_string(v); }
+
+/// A NODE_REPORT at (x, y), speed 1 m/s, heading `heading` degrees.
+inline std::string node_report(const std::string& name, double x, double y, double heading = 0) {
+  return "NAME=" + name + ",X=" + base::fmt(x) + ",Y=" + base::fmt(y) + ",SPD=1,HDG=" +
+         base::fmt(heading);
 }
 
 /// moosdb-lite (logging every posting), uFldHazardSensor and one scripted vehicle client.
