@@ -96,6 +96,10 @@ def read_samples(path):
         return [{k: float(v) for k, v in row.items()} for row in csv.DictReader(f)]
 
 
+def mb(kb):
+    return "n/a" if kb is None else f"{kb / 1024:.1f}"
+
+
 def window_max(samples, column, start_s, end_s):
     values = [s[column] for s in samples if start_s <= s["sim_s"] < end_s]
     return max(values) if values else None
@@ -121,8 +125,8 @@ def main():
         last = window_max(samples, column, a.load_s - a.window_s, a.load_s + 1)
         start = samples[0][column] if samples else None
         end = samples[-1][column] if samples else None
-        print(f"{who} RSS MB: start {start / 1024:.1f}, first window after warm-up max "
-              f"{first / 1024:.1f}, last window max {last / 1024:.1f}, end {end / 1024:.1f}")
+        print(f"{who} RSS MB: start {mb(start)}, first window after warm-up max {mb(first)}, "
+              f"last window max {mb(last)}, end {mb(end)}")
         if first is None or last is None:
             failures.append(f"{who}: no samples in a window")
         elif last > first * (1 + a.growth) + a.slack_mb * 1024:
