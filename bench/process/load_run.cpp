@@ -14,6 +14,7 @@
 #include "base/text.hpp"
 #include "bench_support.hpp"
 #include "load_plan.hpp"
+#include "load_samples.hpp"
 #include "moos/tcp_client.hpp"
 
 namespace bench {
@@ -31,12 +32,20 @@ constexpr double kConfigRepeat_real_s = 0.5;
 /// Node reports kept per vehicle for matching detections (600 MOOS seconds at 10 Hz).
 constexpr std::size_t kHistoryReports = 6000;
 constexpr double kStopGrace_real_s = 5;
+/// The sensor's iteration timing (<MOOSNAME>_ITER_GAP / _ITER_LEN, MOOSNAME in capitals).
+constexpr const char* kIterGap = "UFLDHAZARDSENSOR_ITER_GAP";
+constexpr const char* kIterLen = "UFLDHAZARDSENSOR_ITER_LEN";
+/// Detections a paced vehicle keeps waiting for classification (the newest win).
+constexpr std::size_t kMaxUnclassified = 50;
 
 struct Vehicle {
   std::string name;
   Lawnmower track;
   std::deque<SentReport> history;
   bool acked = false;
+  std::deque<std::string> unclassified;  ///< labels detected, not yet asked (paced classify)
+  double next_config_sim_s = 0;
+  double next_classify_sim_s = 0;
 };
 
 struct Received {
@@ -119,7 +128,11 @@ class Run {
     const std::string mission_path = target_.work_dir + "/mission.moos";
     std::ofstream(mission_path) << mission_text(mission);
 
-    if (!db_.start(target_.moosdb, {"mission.moos"}, target_.work_dir,
+    std::vector<std::string> db_args = {"mission.moos"};
+    if (!spec_.moosdb_log.empty()) db_args.push_back("--log=" + spec_.moosdb_log);
+    if (spec_.sample_every_s > 0 && !samples_.open(target_.work_dir + "/" + spec_.samples_csv))
+      return fail(r, "cannot write " + spec_.samples_csv);
+    if (!db_.start(target_.moosdb, db_args, target_.work_dir,
                    target_.work_dir + "/moosdb"))
       return fail(r, "cannot start " + target_.moosdb + ": " + db_.error());
     moos::TcpClientOptions options;
@@ -132,6 +145,8 @@ class Run {
     client_->register_variable("UHZ_HAZARD_REPORT");
     client_->register_variable("APPCAST");
     client_->register_wildcard("UHZ_CONFIG_ACK_*");
+    client_->register_variable(kIterGap);
+    client_->register_variable(kIterLen);
     if (!client_->start() || !connect_while_db_runs())
       return fail(r, "no connection to " + target_.moosdb + " on port " + std::to_string(*port) +
                          " (see " + target_.work_dir + "/moosdb.err)");
@@ -162,8 +177,11 @@ class Run {
     const auto strips = split_field(spec_.field_side_m, spec_.vehicles);
     for (int i = 0; i < spec_.vehicles; ++i) {
       std::string name = "veh" + std::to_string(i + 1);
+      // Periodic requests are staggered over the vehicles, as independent vehicles would be.
+      const double share = static_cast<double>(i) / spec_.vehicles;
       vehicles_.push_back({name, Lawnmower(strips[static_cast<std::size_t>(i)],
-                                           2 * spec_.sensor_width_m), {}, false});
+                                           2 * spec_.sensor_width_m), {}, false, {},
+                           spec_.config_every_s * (1 + share), spec_.classify_every_s * share});
       index_[name] = static_cast<std::size_t>(i);
     }
   }
@@ -199,7 +217,11 @@ class Run {
   void handle_mail(double half_length) {
     for (auto& item : inbox_.take()) {
       const auto& m = item.message;
-      if (m.key == "APPCAST") {
+      if (m.key == kIterGap) {
+        samples_.note_iteration_gap(m.dval);
+      } else if (m.key == kIterLen) {
+        samples_.note_iteration_length(m.dval);
+      } else if (m.key == "APPCAST") {
         if (const auto iteration = appcast_iteration(m.sval))
           tally_.appcasts.push_back({m.time, *iteration});
       } else if (m.key == "UHZ_HAZARD_REPORT") {
@@ -214,9 +236,56 @@ class Run {
         if (const auto delay = detection_delay(v.history, item.real_s, *x, *y,
                                                spec_.sensor_width_m, half_length))
           tally_.delays_s.push_back(*delay);
-        client_->notify("UHZ_CLASSIFY_REQUEST",
-                        "vname=" + v.name + ",label=" + value_of(m.sval, "label"));
+        classify(vehicles_[found->second], value_of(m.sval, "label"));
       }
+    }
+  }
+
+  void classify(Vehicle& v, const std::string& label) {
+    if (spec_.classify_every_s <= 0) {
+      client_->notify("UHZ_CLASSIFY_REQUEST", "vname=" + v.name + ",label=" + label);
+      return;
+    }
+    v.unclassified.push_back(label);
+    if (v.unclassified.size() > kMaxUnclassified) v.unclassified.pop_front();
+  }
+
+  /// The periodic requests due at `sim_s`: configuration (pd alternating 0.9 / 0.85, so each
+  /// is a real update) and paced classification.
+  void periodic_requests(Vehicle& v, double sim_s) {
+    if (spec_.config_every_s > 0 && sim_s >= v.next_config_sim_s) {
+      const bool odd = std::fmod(std::floor(v.next_config_sim_s / spec_.config_every_s), 2) != 0;
+      client_->notify("UHZ_CONFIG_REQUEST", "vname=" + v.name + ",width=" +
+                                                base::format_g(spec_.sensor_width_m) +
+                                                (odd ? ",pd=0.85" : ",pd=0.9"));
+      v.next_config_sim_s += spec_.config_every_s;
+    }
+    if (spec_.classify_every_s > 0 && sim_s >= v.next_classify_sim_s) {
+      if (!v.unclassified.empty()) {
+        client_->notify("UHZ_CLASSIFY_REQUEST",
+                        "vname=" + v.name + ",label=" + v.unclassified.back());
+        v.unclassified.pop_back();
+      }
+      v.next_classify_sim_s += spec_.classify_every_s;
+    }
+  }
+
+  /// One sample when due (every sample_every_s simulated seconds).
+  void sample_if_due(double sim_s) {
+    if (spec_.sample_every_s <= 0 || sim_s < next_sample_sim_s_) return;
+    next_sample_sim_s_ += spec_.sample_every_s;
+    const auto sensor = read_proc_usage(sensor_.pid());
+    const auto db = read_proc_usage(db_.pid());
+    samples_.write(sim_s, sensor ? sensor->rss_kb : -1, db ? db->rss_kb : -1);
+  }
+
+  /// After the load: mail is read (answers still pending arrive), nothing is sent.
+  void drain(double t0) {
+    const double end = steady_now_s() + spec_.drain_s / spec_.time_warp;
+    while (steady_now_s() < end && sensor_.running()) {
+      handle_mail(spec_.swath_half_length_m);
+      sample_if_due((steady_now_s() - t0) * spec_.time_warp);
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
     }
   }
 
@@ -258,9 +327,11 @@ class Run {
         v.history.push_back({sent, pose});
         if (v.history.size() > kHistoryReports) v.history.pop_front();
         if (request) client_->notify("UHZ_SENSOR_REQUEST", "vname=" + v.name);
+        periodic_requests(v, sim_s);
         ++r.reports_sent;
       }
       handle_mail(spec_.swath_half_length_m);
+      sample_if_due(sim_s);
       if (step % 64 == 0 && !sensor_.running()) return fail(r, "the sensor exited during the load");
     }
     // The window ends one step after the last reports were posted.
@@ -289,6 +360,7 @@ class Run {
     if (first && last && last->moos_s > first->moos_s)
       r.iterations_per_s = static_cast<double>(last->iteration - first->iteration) /
                            (last->moos_s - first->moos_s);
+    drain(t0);
     r.detections = tally_.detections;
     r.matched = tally_.delays_s.size();
     r.hazard_reports = tally_.hazard_reports;
@@ -309,6 +381,8 @@ class Run {
   std::vector<Vehicle> vehicles_;
   std::map<std::string, std::size_t> index_;
   Tally tally_;
+  SampleLog samples_;
+  double next_sample_sim_s_ = 0;
 };
 
 }  // namespace

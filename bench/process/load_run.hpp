@@ -11,6 +11,13 @@
 // - The measurement window starts when the sensor has iterated once (its first APPCAST) and
 //   every vehicle has its configuration acknowledged; it lasts duration_s / warp real seconds.
 //   CPU is the difference of the /proc figures at its two ends.
+// - Soak options (bench/soak/run.sh; all off by default, so the table runs are unchanged):
+//   the MOOSDB's --log (moosdb-lite: every posting in an .alog), a UHZ_CONFIG_REQUEST per
+//   vehicle every config_every_s, classify requests paced to one per vehicle every
+//   classify_every_s (the newest unclassified detection; 0: one per detection at once), a drain
+//   after the load (mail still read, nothing sent) so that pending answers arrive, and one
+//   sample every sample_every_s (resident memory of both processes, the sensor's worst
+//   iteration gap since the last sample) written to samples_csv.
 
 #include <cstddef>
 #include <ostream>
@@ -32,6 +39,13 @@ struct LoadSpec {
   double swath_half_length_m = 2.5;  ///< the sensor's along-track half-extent, for matching
   bool show_hazards = false;
   double startup_timeout_real_s = 600;
+  // Soak options (simulated seconds; 0 = off).
+  std::string moosdb_log;        ///< --log=FILE for moosdb-lite, relative to the work folder
+  double config_every_s = 0;
+  double classify_every_s = 0;
+  double drain_s = 0;
+  double sample_every_s = 0;
+  std::string samples_csv;       ///< where the samples go (required with sample_every_s)
 };
 
 struct Target {

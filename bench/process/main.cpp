@@ -33,6 +33,7 @@ load and MOOSDB, and a ratio column is printed.
   --warp=W             MOOS time warp (default 50)
   --duration=S         simulated seconds of load (default 600)
   --report-hz=HZ       node reports per vehicle per MOOS second (default 10)
+  --request-hz=HZ      UHZ_SENSOR_REQUEST per vehicle per MOOS second (default 4)
   --app-tick=HZ        the sensor's AppTick (default 4)
   --area-per-object=M2 field area per object, square metres (default 400: 10k objects in
                        2 km x 2 km)
@@ -46,7 +47,20 @@ load and MOOSDB, and a ratio column is printed.
                        folder, removed at the end unless a run failed)
   --startup-timeout=S  real seconds a sensor may take to load its field (default 600)
   --csv=FILE           also append one line per run to FILE (a header first if it is new)
+
+Soak options (bench/soak/run.sh; simulated seconds):
+  --moosdb-log=FILE    the MOOSDB logs every posting to FILE (moosdb-lite --log), in the
+                       run's folder (ours/FILE)
+  --config-every=S     a UHZ_CONFIG_REQUEST per vehicle every S s (default: only the first)
+  --classify-every=S   one UHZ_CLASSIFY_REQUEST per vehicle every S s for its newest
+                       unclassified detection (default: one per detection at once)
+  --drain=S            after the load, S s more of reading mail, sending nothing (default 0)
+  --sample-every=S     every S s: resident memory of sensor and MOOSDB and the sensor's worst
+                       iteration gap, one line each in the run's samples.csv (default: none)
 )";
+
+/// The samples file of a run (--sample-every), in the run's folder.
+constexpr const char* kSamplesFile = "samples.csv";
 
 struct Options {
   long long objects = 10000;
@@ -94,6 +108,9 @@ std::optional<Options> parse(int argc, char** argv) {
     } else if (name == "--report-hz") {
       ok = number.has_value();
       if (ok) o.spec.report_hz = *number;
+    } else if (name == "--request-hz") {
+      ok = number.has_value();
+      if (ok) o.spec.request_hz = *number;
     } else if (name == "--app-tick") {
       ok = number.has_value();
       if (ok) o.spec.app_tick_hz = *number;
@@ -103,6 +120,20 @@ std::optional<Options> parse(int argc, char** argv) {
     } else if (name == "--startup-timeout") {
       ok = number.has_value();
       if (ok) o.spec.startup_timeout_real_s = *number;
+    } else if (name == "--config-every") {
+      ok = number.has_value();
+      if (ok) o.spec.config_every_s = *number;
+    } else if (name == "--classify-every") {
+      ok = number.has_value();
+      if (ok) o.spec.classify_every_s = *number;
+    } else if (name == "--drain") {
+      ok = number.has_value();
+      if (ok) o.spec.drain_s = *number;
+    } else if (name == "--sample-every") {
+      ok = number.has_value();
+      if (ok) o.spec.sample_every_s = *number;
+    } else if (name == "--moosdb-log" && !value.empty()) {
+      o.spec.moosdb_log = value;
     } else if (arg == "--markers") {
       o.spec.show_hazards = true;
     } else if (name == "--sensor" && !value.empty()) {
@@ -128,6 +159,7 @@ std::optional<Options> parse(int argc, char** argv) {
   // The processes run in their own folders: relative program paths would break there.
   for (std::string* program : {&o.sensor, &o.moosdb, &o.gen_hazards, &o.original})
     *program = bench::absolute_program(*program);
+  o.spec.samples_csv = kSamplesFile;
   o.spec.field_side_m = std::sqrt(static_cast<double>(o.objects) * o.area_per_object_m2);
   return o;
 }

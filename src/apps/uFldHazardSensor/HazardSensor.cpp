@@ -42,8 +42,20 @@ bool HazardSensor::on_start_up() {
     register_variable(std::string(v.name));
   }
   if (options_.verbose) *options_.verbose << moos::alog_header(app_name(), cycle_time());
+  start_up_connection_ = comms().connection_count();
   publish(driver_->start(cycle_time()));
   return true;
+}
+
+void HazardSensor::on_connect_to_server() {
+  if (!driver_ || comms().connection_count() == start_up_connection_) return;
+  publish(field_visuals(cycle_time()));
+}
+
+hazard::TimedOutputs HazardSensor::field_visuals(double now_s) {
+  // The engine's one request for the field's visuals is the viewer's PMV_CONNECT (driver.hpp);
+  // a new database is, for these visuals, a viewer that has seen nothing.
+  return driver_->deliver(hazard::Mail{"PMV_CONNECT", "", now_s}, now_s);
 }
 
 void HazardSensor::on_new_mail(const std::vector<moos::Message>& mail) {

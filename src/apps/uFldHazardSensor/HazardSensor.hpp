@@ -20,6 +20,11 @@
 //   retractions and config warnings to the AppCast. With a verbose stream, every posting and
 //   event (and warning) is also written there as an .alog line (time since start-up, variable,
 //   app name, value), after an .alog header written at start-up (D29).
+// - Reconnect (on_connect_to_server after a database restart or a dropped link): the field's
+//   visuals (the object markers, with show_hazards) are posted again, because the new database
+//   has none of them; libmoos re-sends the registrations itself. The engine is kept as it is
+//   (settings, credits, queues): only the database was lost, not the mission. The connection
+//   that start-up already served gets nothing twice.
 // - build_report: hazard::format_report (spec 11, seed and active effects in its header).
 // The app therefore posts exactly what the engine decided; hazard_replay drives the same engine
 // the same way (start, mail before the iteration of its time, step per AppTick).
@@ -68,16 +73,21 @@ class HazardSensor final : public moos::MoosApp {
 
  protected:
   bool on_start_up() override;
+  void on_connect_to_server() override;
   void on_new_mail(const std::vector<moos::Message>& mail) override;
   void iterate() override;
   std::string build_report() override;
 
  private:
   void publish(const hazard::TimedOutputs& out);
+  /// The visuals that describe the field, as the engine posts them for a viewer that connects.
+  hazard::TimedOutputs field_visuals(double now_s);
   void write_verbose(double now_s, const std::string& variable, const std::string& value) const;
 
   HazardSensorOptions options_;
   std::optional<hazard::Driver> driver_;
+  /// The connection (comms' connection count) that start-up's visuals went to.
+  std::uint64_t start_up_connection_ = 0;
 };
 
 }  // namespace ufld_hazard_sensor

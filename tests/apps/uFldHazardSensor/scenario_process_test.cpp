@@ -23,13 +23,11 @@ using test_support::write_file;
 using testing::is_framework_posting;
 using testing::kPatience_s;
 using testing::SensorProcess;
-
-constexpr const char* kApp = "uFldHazardSensor";
+using testing::kApp;
+using testing::n;
+using testing::node_report;
 
 // ---- hand computations ----------------------------------------------------------------------------
-
-/// Integers print without decimals under FMT (spec 0): FMT(32, 1) = "32".
-std::string n(int v) { return std::to_string(v); }
 
 /// The swath of scenario A at (0, y), heading 0 (D1, D2, amended T1): W = 20 m to each side,
 /// swath_length 4 m in total (2 m fore and aft); corners front-starboard, rear-starboard,
@@ -40,10 +38,6 @@ std::string swath_a(int y) {
   return "pts={20," + n(y + 2) + ":20," + n(y - 2) + ":-20," + n(y - 2) + ":-20," + n(y + 2) +
          "},label=sensor_swath_alpha,msg=1.00,edge_color=green,fill_color=white,vertex_size=0,"
          "edge_size=0,fill_transparency=0.2";
-}
-
-std::string node_report(const std::string& name, double x, double y, double heading = 0) {
-  return "NAME=" + name + ",X=" + base::fmt(x) + ",Y=" + base::fmt(y) + ",SPD=1,HDG=" + base::fmt(heading);
 }
 
 /// ",time=<v>" removed: the engine's time in a circle is the only thing that legitimately

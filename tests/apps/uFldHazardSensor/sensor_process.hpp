@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "alog_files.hpp"
+#include "base/text.hpp"
 #include "child_process.hpp"
 #include "moos/tcp_client.hpp"
 #include "moosdb_server.hpp"
@@ -47,6 +48,18 @@ inline std::string process_mission(int port, const std::string& block,
          "{\n" + block + "}\n";
 }
 
+/// The app's name, the source of its postings in the server's log.
+inline constexpr const char* kApp = "uFldHazardSensor";
+
+/// Integers print without decimals under FMT (spec 0): FMT(32, 1) = "32".
+inline std::string n(int v) { return std::to_string(v); }
+
+/// A NODE_REPORT at (x, y), speed 1 m/s, heading `heading` degrees.
+inline std::string node_report(const std::string& name, double x, double y, double heading = 0) {
+  return "NAME=" + name + ",X=" + base::fmt(x) + ",Y=" + base::fmt(y) + ",SPD=1,HDG=" +
+         base::fmt(heading);
+}
+
 /// moosdb-lite (logging every posting), uFldHazardSensor and one scripted vehicle client.
 class SensorProcess : public ::testing::Test {
  protected:
@@ -57,13 +70,11 @@ class SensorProcess : public ::testing::Test {
   /// (its first options summary).
   void start(const std::string& block, const std::vector<std::string>& app_args = {},
              const std::string& extra_globals = {}) {
-    const std::vector<std::string> server_args = {
-        "--log=" + (dir / "db.alog").string(),
-        "--moos_time_warp=" + std::to_string(static_cast<int>(warp)), "--moos_community=shoreside"};
-    server.emplace(MOOSDB_LITE_PATH, server_args);
+    server.emplace(MOOSDB_LITE_PATH, server_args("db.alog"));
     ASSERT_TRUE(server->ok()) << "moosdb-lite did not start";
     test_support::write_file(dir / "m.moos",
-                             process_mission(server->port(), block, extra_globals, warp));
+                             process_mission(server->port(), block, extra_globals, warp) +
+                                 extra_blocks);
     std::vector<std::string> args = {(dir / "m.moos").string()};
     args.insert(args.end(), app_args.begin(), app_args.end());
     app = Child::spawn(UFLD_HAZARD_SENSOR_PATH, args);
@@ -83,6 +94,16 @@ class SensorProcess : public ::testing::Test {
     }
     ASSERT_TRUE(wait_for([](const moos::Message& m) { return m.key == "UHZ_OPTIONS_SUMMARY"; }))
         << "the app did not iterate; its stderr:\n" << app->stderr_text();
+  }
+
+  /// moosdb-lite's arguments (its port aside): the log `log_name` in the scratch folder, the
+  /// warp, the community, then server_extra_args.
+  std::vector<std::string> server_args(const std::string& log_name) const {
+    std::vector<std::string> args = {"--log=" + (dir / log_name).string(),
+                                     "--moos_time_warp=" + std::to_string(static_cast<int>(warp)),
+                                     "--moos_community=shoreside"};
+    args.insert(args.end(), server_extra_args.begin(), server_extra_args.end());
+    return args;
   }
 
   void post(const std::string& var, const std::string& value) { ASSERT_TRUE(vehicle->notify(var, value)); }
@@ -142,6 +163,10 @@ class SensorProcess : public ::testing::Test {
   /// The time warp of server, app and vehicle; a test may raise it before start() (a scenario
   /// that spans MOOS minutes).
   double warp = kWarp;
+  /// More moosdb-lite switches, and more ProcessConfig blocks for the mission (other
+  /// processes a test starts itself), both set before start().
+  std::vector<std::string> server_extra_args;
+  std::string extra_blocks;
   test_support::ScratchDir dir{"uhz_process"};
   std::optional<MoosdbServer> server;
   std::optional<Child> app;
