@@ -20,7 +20,9 @@ std::string no_node_report_warning(const std::string& vname) {
 
 // A LAT/LON-only report was placed by the parser (geodesy.hpp); the engine only sees x/y.
 void Engine::handle_node_report(const NodeReport& r, double now_s, Outputs& out) {
-  VehicleState& v = vehicles_[vehicle_id(r.name)];
+  const auto id = vehicle_id(r.name, now_s, out);
+  if (!id) return;  // the vehicle table is full (warned, counted)
+  VehicleState& v = vehicles_[*id];
   v.pose = Pose{{r.x_m, r.y_m}, r.heading_deg, r.speed_mps};
   if (v.heading_history) v.heading_history->add(r.heading_deg, now_s);
   if (track_mode()) add_to_track(v, out);
@@ -32,8 +34,10 @@ void Engine::handle_node_report(const NodeReport& r, double now_s, Outputs& out)
 
 // A sensor request switches the sensor on for kSensorActiveWindow_s and keeps the vehicle's
 // width held (settings.cpp).
-void Engine::handle_sensor_request(const SensorRequest& r, double now_s) {
-  VehicleState& v = vehicles_[vehicle_id(r.vname)];
+void Engine::handle_sensor_request(const SensorRequest& r, double now_s, Outputs& out) {
+  const auto id = vehicle_id(r.vname, now_s, out);
+  if (!id) return;  // the vehicle table is full (warned, counted)
+  VehicleState& v = vehicles_[*id];
   ++v.counters.sensor_requests;
   v.last_sensor_request_s = now_s;
   v.last_width_claim_s = now_s;
