@@ -24,6 +24,9 @@ std::optional<double> latest(std::optional<double> a, std::optional<double> b) {
   return std::max(*a, *b);
 }
 
+// A label from a request, for a warning: cut and escaped (it is outside text).
+std::string quoted(std::string_view label) { return base::escape_for_log(base::excerpt(label)); }
+
 }  // namespace
 
 void Engine::handle_classify_request(const ClassifyRequest& r, double now_s, Outputs& out) {
@@ -31,7 +34,7 @@ void Engine::handle_classify_request(const ClassifyRequest& r, double now_s, Out
   const auto id = find_vehicle(r.vname);
   if (!id) {
     out.run_warnings.push_back("Classify request from unknown vehicle " + r.vname +
-                               " (label " + r.label + "); refused");
+                               " (label " + quoted(r.label) + "); refused");
     return;
   }
   VehicleState& v = vehicles_[*id];
@@ -40,17 +43,17 @@ void Engine::handle_classify_request(const ClassifyRequest& r, double now_s, Out
   if (v.queue.size() >= kMaxClassifyQueue) return refuse_queue_full(v, r.label, out);
   const auto object = field_.find(r.label);
   if (!object) {
-    out.run_warnings.push_back(v.name + " classify request for unknown label: " + r.label);
+    out.run_warnings.push_back(v.name + " classify request for unknown label: " + quoted(r.label));
     return;
   }
   if (!v.setting) {
     out.run_warnings.push_back("No sensor setting (no classifier) for " + v.name +
-                               "; classify request for " + r.label + " refused");
+                               "; classify request for " + quoted(r.label) + " refused");
     return;
   }
   const auto credits = v.credits.find(*object);
   if (credits == v.credits.end() || credits->second.empty()) {
-    out.run_warnings.push_back("No detection credit for " + v.name + " and label " + r.label +
+    out.run_warnings.push_back("No detection credit for " + v.name + " and label " + quoted(r.label) +
                                " (one classification per detection); refused");
     return;
   }
@@ -91,7 +94,7 @@ void Engine::refuse_queue_full(VehicleState& v, std::string_view label, Outputs&
   if (!v.warned_queue_full) {
     out.run_warnings.push_back("Classify queue of " + v.name + " full (kMaxClassifyQueue = " +
                                std::to_string(kMaxClassifyQueue) + " requests): request for " +
-                               base::excerpt(label) +
+                               quoted(label) +
                                " refused, its credit kept (further refusals only counted)");
   }
   v.warned_queue_full = true;

@@ -32,6 +32,9 @@ class Fields {
 
 /// "field 'pd' value 'abc'".
 std::string field_value(std::string_view key, std::string_view value);
+/// The vehicle name in field `key`: present, non-empty, at most kMaxVehicleNameBytes and free
+/// of control bytes (ranges.hpp); nullopt with `error` set otherwise.
+std::optional<std::string> vehicle_name(const Fields& f, std::string_view key, std::string& error);
 /// "missing field 'vname'".
 std::string missing_field(std::string_view key);
 
