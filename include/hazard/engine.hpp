@@ -76,8 +76,9 @@ inline constexpr std::size_t kMaxClassifyQueue = 10000;
 /// bounded by this times the objects in the field.
 inline constexpr std::size_t kMaxCreditsPerObject = 100;
 /// Longest distance (m) a vehicle may move between two node reports and still have the segment
-/// swept (swath_sweep, swath_substeps): beyond it, or beyond what max_vehicle_speed allows in
-/// the time between the reports, the move is a teleport and is not sensed.
+/// swept (swath_sweep, swath_substeps): beyond it the move is a teleport, warned and counted;
+/// only the arrival is sensed (sensing_track.hpp). 500 s at the default speed gate; reports
+/// come several times a second.
 inline constexpr double kMaxSweepJump_m = 1000.0;
 
 /// Counted drops when a bound was reached (the report shows them when any is non-zero).
@@ -185,6 +186,8 @@ class Engine {
   void update_entries(VehicleState& v, const Swath& swath, double now_s, Outputs& out);
   bool track_mode() const { return effects_.swept_swath || effects_.swath_substeps; }
   void add_to_track(VehicleState& v, Outputs& out);
+  /// A jump beyond kMaxSweepJump_m from `from_m` to v's pose: warned and counted.
+  bool is_teleport(const VehicleState& v, glm::dvec2 from_m, Outputs& out);
   void sense_track(VehicleState& v, double now_s, Outputs& out);
   static void collapse_track(VehicleState& v);
   void roll_detection(VehicleState& v, ObjectId id, double heading_deg, double now_s,
