@@ -32,8 +32,16 @@ std::vector<std::string_view> Fields::unknown_keys(
   return out;
 }
 
+bool has_control_byte(std::string_view text) {
+  return std::any_of(text.begin(), text.end(), [](char c) {
+    const auto b = static_cast<unsigned char>(c);
+    return b < 0x20 || b == 0x7F;
+  });
+}
+
 std::string field_value(std::string_view key, std::string_view value) {
-  return "field '" + std::string(key) + "' value '" + base::excerpt(value) + "'";
+  return "field '" + std::string(key) + "' value '" + base::escape_for_log(base::excerpt(value)) +
+         "'";
 }
 
 std::optional<std::string> vehicle_name(const Fields& f, std::string_view key,
@@ -48,13 +56,8 @@ std::optional<std::string> vehicle_name(const Fields& f, std::string_view key,
             " bytes";
     return std::nullopt;
   }
-  const bool control = std::any_of(name->begin(), name->end(), [](char c) {
-    const auto b = static_cast<unsigned char>(c);
-    return b < 0x20 || b == 0x7F;
-  });
-  if (control) {
-    error = "field '" + std::string(key) + "' value '" + base::escape_for_log(*name) +
-            "' contains a control byte";
+  if (has_control_byte(*name)) {
+    error = field_value(key, *name) + " contains a control byte";
     return std::nullopt;
   }
   return std::string(*name);

@@ -17,7 +17,7 @@ using detail::missing_field;
 constexpr double kMaxAspectDeg = 360.0;       // aspect in [0, 360)
 constexpr double kMaxAspectWindowDeg = 90.0;  // aspect_min, aspect_max in [0, 90], sum <= 90
 
-std::string quoted(std::string_view s) { return "'" + std::string(s) + "'"; }
+std::string quoted(std::string_view s) { return "'" + base::escape_for_log(s) + "'"; }
 
 // Collects what parse_hazard_line finds, field by field.
 struct LineReader {
@@ -59,6 +59,8 @@ struct LineReader {
     } else if (key == "y") {
       y = number(key, value);
     } else if (key == "label") {
+      // A label reaches postings, variable payloads and logs: no control bytes (issue 12).
+      if (detail::has_control_byte(value)) reject(field_value(key, value) + " contains a control byte");
       label = std::string(value);
     } else if (key == "type") {
       if (base::iequals(value, "hazard")) {
