@@ -74,6 +74,7 @@ std::optional<VehicleId> Engine::free_vehicle_slot(std::string_view name, double
                                " s, to make room for " + base::excerpt(name));
     by_name_.erase(name_position(silent->name));
     ++drops_.vehicles_forgotten;
+    warned_vehicle_table_full_ = false;  // a later refusal starts a new episode
     return id;
   }
   ++drops_.vehicles;
