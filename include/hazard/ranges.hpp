@@ -28,6 +28,9 @@ inline constexpr double kMaxMarkerWidth_m = 10000.0;
 /// |X| and |Y| of a NODE_REPORT, m: 100,000 km, ten times the Earth's scale (UTM-scale and
 /// ten-megametre scenes stay valid, tests/hazard/numerics_geometry_test.cpp).
 inline constexpr double kMaxNodeCoordinate_m = 1.0e8;
+/// |x| and |y| of a hazard object (hazard lines, files), m: as kMaxNodeCoordinate_m, so no
+/// field extent can overflow (9e307 and -9e307 used to make it infinite).
+inline constexpr double kMaxObjectCoordinate_m = kMaxNodeCoordinate_m;
 /// SPD of a NODE_REPORT, m/s: [0, this]; a negative or faster speed is refused.
 inline constexpr double kMaxNodeSpeed_mps = 1000.0;
 

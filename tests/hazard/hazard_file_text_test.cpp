@@ -31,6 +31,21 @@ TEST(HazardFileText, ControlBytesInALabelRejectTheLineNamingFileAndLine) {
   }
 }
 
+// A physically meaningful range for object positions (ranges.hpp): 9e307 is refused at the line,
+// so the field's extent stays finite; the bound itself loads.
+TEST(HazardFileText, PositionsBeyondTheBoundRejectTheLine) {
+  HazardField field;
+  std::vector<std::string> warnings;
+  load_hazard_file_text("hazard = x=9e307,y=0,label=a,type=hazard\n"
+                        "hazard = x=-9e307,y=0,label=b,type=hazard\n"
+                        "hazard = x=1,y=-100000000,label=c,type=hazard\n",
+                        "f", field, warnings);
+  EXPECT_EQ(field.size(), 1u);
+  EXPECT_TRUE(contains(warnings, "f:1: position (9e+307, 0) is beyond"));
+  EXPECT_TRUE(contains(warnings, "beyond 100000000 m from the origin (kMaxObjectCoordinate_m); "
+                                 "line rejected"));
+}
+
 TEST(HazardFileText, AByteOrderMarkAtTheStartIsAccepted) {
   const std::string text = "\xEF\xBB\xBFhazard = x=1,y=2,label=first,type=hazard\n"
                            "hazard = x=3,y=4,label=second,type=benign\n";

@@ -1,8 +1,10 @@
 #include "hazard/messages/hazard_line.hpp"
 
+#include <cmath>
 #include <set>
 
 #include "fields.hpp"
+#include "hazard/ranges.hpp"
 #include "hazard/style.hpp"
 #include "base/text.hpp"
 
@@ -156,6 +158,11 @@ struct LineReader {
     if ((!x || !y) && lat_text && lon_text) place_lat_lon();
     if (!result.error.empty()) return;
     if (!x || !y) return reject(missing_field(!x ? "x" : "y"));
+    if (std::fabs(*x) > kMaxObjectCoordinate_m || std::fabs(*y) > kMaxObjectCoordinate_m) {
+      return reject("position (" + base::format_g(*x) + ", " + base::format_g(*y) +
+                    ") is beyond " + base::fmt(kMaxObjectCoordinate_m, 0) +
+                    " m from the origin (kMaxObjectCoordinate_m)");
+    }
     if (!type) type = type_from_hazard_key;
     if (!type) return reject(missing_field("type"));
     if (!label || label->empty()) return reject(missing_field("label"));
