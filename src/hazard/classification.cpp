@@ -53,7 +53,8 @@ void Engine::handle_classify_request(const ClassifyRequest& r, double now_s, Out
   }
   const auto credits = v.credits.find(*object);
   if (credits == v.credits.end() || credits->second.empty()) {
-    out.run_warnings.push_back("No detection credit for " + v.name + " and label " + quoted(r.label) +
+    out.run_warnings.push_back("No detection credit for " + v.name + " and label " +
+                               quoted(r.label) +
                                " (one classification per detection); refused");
     return;
   }

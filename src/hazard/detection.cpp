@@ -63,7 +63,8 @@ void Engine::grant_credit(VehicleState& v, ObjectId id, const Credit& credit, Ou
   ++drops_.credits;
   if (!v.warned_credits_full) {
     out.run_warnings.push_back(v.name + " holds " + std::to_string(kMaxCreditsPerObject) +
-                               " unused credits for label " + base::excerpt(field_.object(id).label) +
+                               " unused credits for label " +
+                               base::excerpt(field_.object(id).label) +
                                " (kMaxCreditsPerObject): further detections grant no credit "
                                "(only counted)");
   }

@@ -85,7 +85,8 @@ void Driver::dispatch(std::string_view variable, std::string_view value, double 
     route(parse_classify_request,
           [&](const ClassifyRequest& r) { engine_.handle_classify_request(r, now_s, out); });
   } else if (variable == kSensorClear) {
-    route(parse_sensor_clear, [&](const SensorClear& r) { engine_.handle_sensor_clear(r, now_s, out); });
+    route(parse_sensor_clear,
+          [&](const SensorClear& r) { engine_.handle_sensor_clear(r, now_s, out); });
   } else if (variable == kPmvConnect) {
     engine_.handle_viewer_connect(out);
   }

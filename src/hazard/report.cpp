@@ -52,7 +52,8 @@ std::string drops_line(const BoundDrops& d) {
       {"teleports", d.teleports}};
   std::string out;
   for (const auto& [name, count] : counts) {
-    if (count > 0) out += (out.empty() ? "" : ", ") + std::string(name) + " " + std::to_string(count);
+    if (count == 0) continue;
+    out += (out.empty() ? "" : ", ") + std::string(name) + " " + std::to_string(count);
   }
   return out.empty() ? "" : "      Drops: " + out + "\n";
 }

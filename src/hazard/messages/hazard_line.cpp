@@ -62,7 +62,9 @@ struct LineReader {
       y = number(key, value);
     } else if (key == "label") {
       // A label reaches postings, variable payloads and logs: no control bytes (issue 12).
-      if (detail::has_control_byte(value)) reject(field_value(key, value) + " contains a control byte");
+      if (detail::has_control_byte(value)) {
+        reject(field_value(key, value) + " contains a control byte");
+      }
       label = std::string(value);
     } else if (key == "type") {
       if (base::iequals(value, "hazard")) {

@@ -53,10 +53,12 @@ std::optional<glm::dvec2> place_lat_lon(const Fields& f, const GeoPlacement* pla
 std::string out_of_range(const Fields& f, glm::dvec2 position, double spd,
                          std::string_view spd_text) {
   const std::string bound = base::fmt(kMaxNodeCoordinate_m, 0);
-  if (std::fabs(position.x) > kMaxNodeCoordinate_m || std::fabs(position.y) > kMaxNodeCoordinate_m) {
+  if (std::fabs(position.x) > kMaxNodeCoordinate_m ||
+      std::fabs(position.y) > kMaxNodeCoordinate_m) {
     const auto x = f.get("X");
     const auto y = f.get("Y");
-    const std::string given = x && y ? detail::field_value("X", *x) + ", " + detail::field_value("Y", *y)
+    const std::string given = x && y ? detail::field_value("X", *x) + ", " +
+                                           detail::field_value("Y", *y)
                                      : "the position placed from LAT/LON";
     return given + ": beyond " + bound + " m from the origin (kMaxNodeCoordinate_m)";
   }
