@@ -73,7 +73,8 @@ inline constexpr double kForgetSilentAfter_s = 3600.0;
 inline constexpr std::size_t kMaxClassifyQueue = 10000;
 /// Unused classification credits per (vehicle, object) (detections never classified); a
 /// detection beyond it is reported but grants no credit. Per vehicle the credits are then
-/// bounded by this times the objects in the field.
+/// bounded by this times the objects in the field (a clear may return queued credits above it:
+/// at most kMaxClassifyQueue more).
 inline constexpr std::size_t kMaxCreditsPerObject = 100;
 /// Longest distance (m) a vehicle may move between two node reports and still have the segment
 /// swept (swath_sweep, swath_substeps): beyond it the move is a teleport, warned and counted;
