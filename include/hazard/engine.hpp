@@ -57,6 +57,40 @@ inline constexpr double kDefaultPd = 0.9;
 /// oldest is dropped (a guard against reports arriving thousands of times per iteration).
 inline constexpr std::size_t kMaxTrackPoses = 4096;
 
+// Bounds on what outside input can make grow (issue 12; docs/robustness.md "Bounds: the
+// engine"). A 100-vehicle, million-object mission never reaches one; reaching one gives a run
+// warning naming the bound and a counted drop (BoundDrops, shown in the report), never growth.
+/// Vehicles in the table (vehicles). A new name when the table is full takes the place of the
+/// vehicle silent longest if that one has had no mail for kForgetSilentAfter_s; otherwise the
+/// new vehicle's mail is dropped.
+inline constexpr std::size_t kMaxVehicles = 1000;
+/// A vehicle with no mail for this long (s) may be forgotten to make room: longer than the
+/// sensor's active window and the width hold, so a forgotten vehicle neither senses nor holds
+/// a width; its pending answers and credits go with it.
+inline constexpr double kForgetSilentAfter_s = 3600.0;
+/// Pending classification answers per vehicle (requests); a request beyond it is refused and
+/// its credit kept.
+inline constexpr std::size_t kMaxClassifyQueue = 10000;
+/// Unused classification credits per (vehicle, object) (detections never classified); a
+/// detection beyond it is reported but grants no credit. Per vehicle the credits are then
+/// bounded by this times the objects in the field (a clear may return queued credits above it:
+/// at most kMaxClassifyQueue more).
+inline constexpr std::size_t kMaxCreditsPerObject = 100;
+/// Longest distance (m) a vehicle may move between two node reports and still have the segment
+/// swept (swath_sweep, swath_substeps): beyond it the move is a teleport, warned and counted;
+/// only the arrival is sensed (sensing_track.hpp). 500 s at the default speed gate; reports
+/// come several times a second.
+inline constexpr double kMaxSweepJump_m = 1000.0;
+
+/// Counted drops when a bound was reached (the report shows them when any is non-zero).
+struct BoundDrops {
+  std::uint64_t vehicles = 0;          ///< mail from a new vehicle refused: table full
+  std::uint64_t vehicles_forgotten = 0;  ///< silent vehicles forgotten to make room
+  std::uint64_t classify_requests = 0;  ///< refused: the vehicle's queue was full
+  std::uint64_t credits = 0;            ///< detections that granted no credit
+  std::uint64_t teleports = 0;          ///< node-report jumps not swept
+};
+
 /// A MOOS variable of the interface, with an example payload (for --interface and the docs).
 struct InterfaceVariable {
   std::string_view name;
@@ -96,6 +130,8 @@ class Engine {
   const SeedChoice& seed() const { return seed_; }
   const std::vector<HazardFileStatus>& hazard_files() const { return hazard_files_; }
   std::optional<double> start_time_s() const { return start_time_s_; }
+  /// What the bounds above have dropped so far.
+  const BoundDrops& drops() const { return drops_; }
 
   std::optional<VehicleId> find_vehicle(std::string_view name) const;
   const VehicleState& vehicle(VehicleId id) const { return vehicles_[id]; }
@@ -117,14 +153,17 @@ class Engine {
   // mail, clamps its time, parses and dispatches (driver.hpp).
   friend class Driver;
   void handle_node_report(const NodeReport& report, double now_s, Outputs& out);
-  void handle_sensor_request(const SensorRequest& request, double now_s);
+  void handle_sensor_request(const SensorRequest& request, double now_s, Outputs& out);
   void handle_config_request(const ConfigRequest& request, double now_s, Outputs& out);
   void handle_classify_request(const ClassifyRequest& request, double now_s, Outputs& out);
-  void handle_sensor_clear(const SensorClear& request, Outputs& out);
+  void handle_sensor_clear(const SensorClear& request, double now_s, Outputs& out);
   /// A viewer connected: the object markers again (only with the hazard_markers effect).
   void handle_viewer_connect(Outputs& out) const;
 
-  void clear_queue(std::string_view vname, Outputs& out);
+  void clear_queue(std::string_view vname, double now_s, Outputs& out);
+  void refuse_queue_full(VehicleState& v, std::string_view label, Outputs& out);
+  /// One credit for a detection, unless the pair holds kMaxCreditsPerObject (counted drop).
+  void grant_credit(VehicleState& v, ObjectId id, const Credit& credit, Outputs& out);
   void post_object_visuals(Outputs& out) const;
 
   // Settings (D3, D4, D11, D20).
@@ -148,6 +187,8 @@ class Engine {
   void update_entries(VehicleState& v, const Swath& swath, double now_s, Outputs& out);
   bool track_mode() const { return effects_.swept_swath || effects_.swath_substeps; }
   void add_to_track(VehicleState& v, Outputs& out);
+  /// A jump beyond kMaxSweepJump_m from `from_m` to v's pose: warned and counted.
+  bool is_teleport(const VehicleState& v, glm::dvec2 from_m, Outputs& out);
   void sense_track(VehicleState& v, double now_s, Outputs& out);
   static void collapse_track(VehicleState& v);
   void roll_detection(VehicleState& v, ObjectId id, double heading_deg, double now_s,
@@ -156,8 +197,12 @@ class Engine {
 
   bool active(const VehicleState& v, double now_s) const;
   double degradation(const HazardObject& o, double heading_deg) const;
-  /// The id of the vehicle `name`, recorded (in name order) when first seen.
-  VehicleId vehicle_id(std::string_view name);
+  /// The id of the vehicle `name`, recorded (in name order) when first seen, its last mail time
+  /// set to `now_s`; nullopt (with a warning and a counted drop) when the table is full.
+  std::optional<VehicleId> vehicle_id(std::string_view name, double now_s, Outputs& out);
+  /// A slot for a new vehicle: a new one below kMaxVehicles, else the place of the vehicle
+  /// silent longest if it has been silent for kForgetSilentAfter_s.
+  std::optional<VehicleId> free_vehicle_slot(std::string_view name, double now_s, Outputs& out);
   /// Where `name` is or belongs in by_name_.
   std::vector<VehicleId>::const_iterator name_position(std::string_view name) const;
   void notify(const VehicleState& v, ObjectId id, std::uint32_t pass, DiePurpose purpose,
@@ -176,6 +221,8 @@ class Engine {
   std::vector<VehicleId> by_name_;  ///< ids in name order; also the name lookup
   std::optional<double> start_time_s_;
   std::optional<double> last_summary_s_;
+  BoundDrops drops_;
+  bool warned_vehicle_table_full_ = false;  ///< one warning per episode of a full table
   std::vector<ObjectId> scratch_inside_;          ///< reused by update_entries and sense_track
   std::vector<ObjectId> scratch_candidates_;      ///< reused by sense_track
   std::vector<std::uint32_t> scratch_event_pieces_;  ///< reused by sense_track

@@ -9,11 +9,10 @@
 #include <vector>
 
 #include "hazard/config.hpp"
+#include "hazard/engine.hpp"
 #include "hazard/vehicle_state.hpp"
 
 namespace hazard {
-
-class Engine;
 
 struct ReportVehicleRow {
   std::string name;
@@ -30,6 +29,7 @@ struct ReportData {
   std::vector<SensorOption> options;  ///< in width order
   std::optional<double> start_time_s;
   std::vector<ReportVehicleRow> vehicles;  ///< vehicles with a setting, in name order
+  BoundDrops drops;  ///< shown in the header block only when a bound was reached
 };
 
 ReportData collect_report_data(const Engine& engine);

@@ -38,6 +38,10 @@
 //   left between two reports is an event, and one that stays inside is one pass however many
 //   reports it spans. Dice keys are unchanged: (seed, vehicle, label, pass, purpose), so the same
 //   sensor events roll the same dice.
+// - Teleports. A report marked `teleport` (a jump no vehicle can make, engine.hpp
+//   kMaxSweepJump_m) ends an unsensed segment: nothing between the two reports is swept or
+//   sampled; the arrival is sensed as one sample (inside/outside there, as a start pose), so a
+//   10 km jump over a dense field costs one swath, not the whole jump.
 // - Order and heading. Events of one evaluation are rolled in the order of the pieces, then of
 //   object load order; the heading used for aspect and for the classification credit is the
 //   piece's heading (the reports' heading on a straight segment).
@@ -61,6 +65,9 @@ struct TrackPose {
   glm::dvec2 position_m{0.0, 0.0};
   double heading_deg = 0.0;  ///< [0, 360)
   bool sensor_on = true;     ///< the gates when this report arrived
+  /// The vehicle jumped to this report (Engine: kMaxSweepJump_m): the segment before it is not
+  /// swept or sub-stepped; the report itself is sensed as one sample, as a start pose is.
+  bool teleport = false;
 };
 
 enum class TrackMode { kSubsteps, kSweep };
@@ -84,6 +91,9 @@ struct TrackPiece {
   std::vector<glm::dvec2> hull;
   double heading_deg = 0.0;  ///< for aspect and credits: the piece's middle heading
   Box box;                   ///< around everything the piece covers
+  /// The sample at a teleport's arrival: the area between it and the previous piece is not
+  /// covered, so candidates are looked up per run of pieces between teleports.
+  bool after_teleport = false;
 };
 
 /// The pieces of `track` (track[0] is where the previous evaluation ended): the start pose when

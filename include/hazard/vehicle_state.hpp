@@ -68,6 +68,8 @@ struct VehicleState {
   std::uint64_t name_hash = 0;  ///< dice key
 
   std::optional<Pose> pose;
+  /// The last mail from or about this vehicle (who may be forgotten, engine.hpp kMaxVehicles).
+  double last_mail_s = 0.0;
   std::optional<double> last_sensor_request_s;
   /// The last configuration or sensor request: the width is held for kWidthHoldWindow_s after
   /// it (rulings "Width choice").
@@ -100,6 +102,8 @@ struct VehicleState {
   VehicleCounters counters;
   bool warned_no_node_report = false;
   bool warned_no_setting = false;
+  bool warned_queue_full = false;    ///< kMaxClassifyQueue reached (warned once per episode)
+  bool warned_credits_full = false;  ///< kMaxCreditsPerObject reached (warned once)
 };
 
 }  // namespace hazard

@@ -24,31 +24,37 @@ std::optional<double> latest(std::optional<double> a, std::optional<double> b) {
   return std::max(*a, *b);
 }
 
+// A label from a request, for a warning: cut and escaped (it is outside text).
+std::string quoted(std::string_view label) { return base::escape_for_log(base::excerpt(label)); }
+
 }  // namespace
 
 void Engine::handle_classify_request(const ClassifyRequest& r, double now_s, Outputs& out) {
-  if (r.action == ClassifyAction::kClear) return clear_queue(r.vname, out);
+  if (r.action == ClassifyAction::kClear) return clear_queue(r.vname, now_s, out);
   const auto id = find_vehicle(r.vname);
   if (!id) {
     out.run_warnings.push_back("Classify request from unknown vehicle " + r.vname +
-                               " (label " + r.label + "); refused");
+                               " (label " + quoted(r.label) + "); refused");
     return;
   }
   VehicleState& v = vehicles_[*id];
+  v.last_mail_s = now_s;
   ++v.counters.classify_requests;
+  if (v.queue.size() >= kMaxClassifyQueue) return refuse_queue_full(v, r.label, out);
   const auto object = field_.find(r.label);
   if (!object) {
-    out.run_warnings.push_back(v.name + " classify request for unknown label: " + r.label);
+    out.run_warnings.push_back(v.name + " classify request for unknown label: " + quoted(r.label));
     return;
   }
   if (!v.setting) {
     out.run_warnings.push_back("No sensor setting (no classifier) for " + v.name +
-                               "; classify request for " + r.label + " refused");
+                               "; classify request for " + quoted(r.label) + " refused");
     return;
   }
   const auto credits = v.credits.find(*object);
   if (credits == v.credits.end() || credits->second.empty()) {
-    out.run_warnings.push_back("No detection credit for " + v.name + " and label " + r.label +
+    out.run_warnings.push_back("No detection credit for " + v.name + " and label " +
+                               quoted(r.label) +
                                " (one classification per detection); refused");
     return;
   }
@@ -83,12 +89,28 @@ void Engine::handle_classify_request(const ClassifyRequest& r, double now_s, Out
                        ", die " + base::fix(die, 4));
 }
 
-void Engine::handle_sensor_clear(const SensorClear& r, Outputs& out) { clear_queue(r.vname, out); }
+// The queue is bounded (kMaxClassifyQueue): the request is refused before its credit is used.
+void Engine::refuse_queue_full(VehicleState& v, std::string_view label, Outputs& out) {
+  ++drops_.classify_requests;
+  if (!v.warned_queue_full) {
+    out.run_warnings.push_back("Classify queue of " + v.name + " full (kMaxClassifyQueue = " +
+                               std::to_string(kMaxClassifyQueue) + " requests): request for " +
+                               quoted(label) +
+                               " refused, its credit kept (further refusals only counted)");
+  }
+  v.warned_queue_full = true;
+}
 
-void Engine::clear_queue(std::string_view vname, Outputs& out) {
+void Engine::handle_sensor_clear(const SensorClear& r, double now_s, Outputs& out) {
+  clear_queue(r.vname, now_s, out);
+}
+
+void Engine::clear_queue(std::string_view vname, double now_s, Outputs& out) {
   const auto id = find_vehicle(vname);
   if (!id) return;
   VehicleState& v = vehicles_[*id];
+  v.last_mail_s = now_s;
+  v.warned_queue_full = false;
   const std::vector<PendingAnswer> cleared = v.queue.clear();
   for (const PendingAnswer& a : cleared) {
     // The credit goes back in pass order, so the same die is rolled again (rulings "Clear").
@@ -108,6 +130,7 @@ void Engine::release_classifications(double now_s, Outputs& out) {
     const auto last = latest(v.last_release_s, v.last_top_s);
     if (last && !elapsed_at_least(now_s, *last, config_.min_classify_interval_s)) continue;
     const PendingAnswer answer = *v.queue.pop();
+    if (v.queue.size() < kMaxClassifyQueue) v.warned_queue_full = false;
     v.last_release_s = now_s;
     ++v.counters.answers;
     const HazardObject& o = field_.object(answer.object);

@@ -4,6 +4,7 @@
 #include <limits>
 #include <map>
 
+#include "hazard/ranges.hpp"
 #include "hazard/style.hpp"
 #include "base/text.hpp"
 
@@ -18,6 +19,7 @@ constexpr double kMaxSwathSubsteps = 100.0;
 
 ValueRange at_least(double lo) { return ValueRange{lo, true, std::nullopt, true, std::nullopt}; }
 ValueRange above(double lo) { return ValueRange{lo, false, std::nullopt, true, std::nullopt}; }
+ValueRange above_to(double lo, double hi) { return ValueRange{lo, false, hi, true, std::nullopt}; }
 ValueRange between(double lo, double hi) { return ValueRange{lo, true, hi, true, std::nullopt}; }
 
 // The one table (style practice 5). Defaults are the rulings' "Effective defaults".
@@ -35,22 +37,23 @@ const std::vector<ParameterSpec>& table() {
        "One sensor option `width=W,exp=E,pclass=P[,max=N]` (`class` = `pclass`); repeatable",
        "manual 4, D20", {}},
       {"swath_length", "", K::kNumber, "m", "5",
-       ValueRange{0.0, false, std::nullopt, true, 1.0},
+       ValueRange{0.0, false, kMaxSwathLength_m, true, 1.0},
        "Total along-track length of the swath, half fore and half aft; below 1 it is raised to 1",
        "D1", &C::swath_length_m},
-      {"min_reset_interval", "", K::kNumber, "s", "300", at_least(0.0),
+      {"min_reset_interval", "", K::kNumber, "s", "300", between(0.0, kMaxInterval_s),
        "Minimum time between width changes of one vehicle; pd may change at any time",
        "manual 4.4, D11", &C::min_reset_interval_s},
-      {"min_classify_interval", "classify_period", K::kNumber, "s", "30", at_least(0.0),
+      {"min_classify_interval", "classify_period", K::kNumber, "s", "30",
+       between(0.0, kMaxInterval_s),
        "At most one classification answer per vehicle per interval", "manual 3.2, D9",
        &C::min_classify_interval_s},
-      {"options_summary_interval", "", K::kNumber, "s", "10", at_least(0.0),
+      {"options_summary_interval", "", K::kNumber, "s", "10", between(0.0, kMaxInterval_s),
        "Time between UHZ_OPTIONS_SUMMARY postings; 0 posts every iteration", "manual 4.5",
        &C::options_summary_interval_s},
-      {"max_turn_rate", "", K::kGate, "deg/s", "1.5", above(0.0),
+      {"max_turn_rate", "", K::kGate, "deg/s", "1.5", above_to(0.0, kMaxTurnRateGate_dps),
        "Sensor off while the turn rate over the last 2 s exceeds this; `off` disables the gate",
        "manual 8, D13", &C::max_turn_rate_dps},
-      {"max_vehicle_speed", "", K::kGate, "m/s", "2", above(0.0),
+      {"max_vehicle_speed", "", K::kGate, "m/s", "2", above_to(0.0, kMaxSpeedGate_mps),
        "Sensor off while the reported speed exceeds this; `off` disables the gate", "manual 9, D14",
        &C::max_vehicle_speed_mps},
       {"ignore_resemblances", "", K::kBool, "", "false", {},
@@ -96,13 +99,14 @@ const std::vector<ParameterSpec>& table() {
       {"default_hazard_shape", "", K::kShape, "", "triangle", {},
        "Marker shape of hazards (circle, square, diamond, triangle, efield, gateway)",
        "manual 7.6", &C::hazard_shape},
-      {"default_hazard_width", "", K::kNumber, "m", "8", at_least(0.0), "Marker width of hazards",
+      {"default_hazard_width", "", K::kNumber, "m", "8", between(0.0, kMaxMarkerWidth_m),
+       "Marker width of hazards",
        "manual 7.6", &C::hazard_marker_width_m},
       {"default_benign_color", "", K::kColor, "", "light_blue", {},
        "Marker colour of benign objects", "manual 7.6, D18", &C::benign_color},
       {"default_benign_shape", "", K::kShape, "", "triangle", {},
        "Marker shape of benign objects", "manual 7.6", &C::benign_shape},
-      {"default_benign_width", "", K::kNumber, "m", "8", at_least(0.0),
+      {"default_benign_width", "", K::kNumber, "m", "8", between(0.0, kMaxMarkerWidth_m),
        "Marker width of benign objects", "manual 7.6", &C::benign_marker_width_m},
       {"rn_algorithm", "", K::kNoEffect, "", "", {},
        "The original's dead feature: accepted with a warning, no effect", "spec 3.2", {}},

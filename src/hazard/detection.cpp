@@ -4,6 +4,7 @@
 #include "hazard/engine.hpp"
 #include "hazard/messages/detection_report.hpp"
 #include "hazard/sensor_model.hpp"
+#include "base/text.hpp"
 #include "visuals.hpp"
 
 namespace hazard {
@@ -41,7 +42,7 @@ void Engine::roll_detection(VehicleState& v, ObjectId id, double heading_deg, do
 
   ++v.counters.detections;
   ++(o.is_hazard() ? v.counters.hazard_reports : v.counters.benign_reports);
-  v.credits[id].push_back(Credit{pass, heading_deg});
+  grant_credit(v, id, Credit{pass, heading_deg}, out);
   DetectionReport report{v.name, o.x_m, o.y_m, o.label,
                          o.aspect_deg, o.aspect_min_deg, o.aspect_max_deg};
   out.post("UHZ_DETECTION_REPORT", format_detection_report(report));
@@ -52,6 +53,22 @@ void Engine::roll_detection(VehicleState& v, ObjectId id, double heading_deg, do
   const ViewCircle c = detection_circle(o, now_s, config_.show_detections.duration_s,
                                         !detection_succeeds(u, plain_p));
   out.post("VIEW_CIRCLE", format_view_circle(c));
+}
+
+// Credits are bounded per (vehicle, object) (kMaxCreditsPerObject): an object passed that often
+// without a request is reported again but grants no further credit.
+void Engine::grant_credit(VehicleState& v, ObjectId id, const Credit& credit, Outputs& out) {
+  std::deque<Credit>& list = v.credits[id];
+  if (list.size() < kMaxCreditsPerObject) return list.push_back(credit);
+  ++drops_.credits;
+  if (!v.warned_credits_full) {
+    out.run_warnings.push_back(v.name + " holds " + std::to_string(kMaxCreditsPerObject) +
+                               " unused credits for label " +
+                               base::excerpt(field_.object(id).label) +
+                               " (kMaxCreditsPerObject): further detections grant no credit "
+                               "(only counted)");
+  }
+  v.warned_credits_full = true;
 }
 
 }  // namespace hazard

@@ -77,7 +77,7 @@ void Driver::dispatch(std::string_view variable, std::string_view value, double 
           [&](const NodeReport& r) { engine_.handle_node_report(r, now_s, out); });
   } else if (variable == kSensorRequest) {
     route(parse_sensor_request,
-          [&](const SensorRequest& r) { engine_.handle_sensor_request(r, now_s); });
+          [&](const SensorRequest& r) { engine_.handle_sensor_request(r, now_s, out); });
   } else if (variable == kConfigRequest) {
     route(parse_config_request,
           [&](const ConfigRequest& r) { engine_.handle_config_request(r, now_s, out); });
@@ -85,7 +85,8 @@ void Driver::dispatch(std::string_view variable, std::string_view value, double 
     route(parse_classify_request,
           [&](const ClassifyRequest& r) { engine_.handle_classify_request(r, now_s, out); });
   } else if (variable == kSensorClear) {
-    route(parse_sensor_clear, [&](const SensorClear& r) { engine_.handle_sensor_clear(r, out); });
+    route(parse_sensor_clear,
+          [&](const SensorClear& r) { engine_.handle_sensor_clear(r, now_s, out); });
   } else if (variable == kPmvConnect) {
     engine_.handle_viewer_connect(out);
   }

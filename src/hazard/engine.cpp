@@ -31,18 +31,61 @@ std::optional<VehicleId> Engine::find_vehicle(std::string_view name) const {
   return *pos;
 }
 
-VehicleId Engine::vehicle_id(std::string_view name) {
+std::optional<VehicleId> Engine::vehicle_id(std::string_view name, double now_s, Outputs& out) {
   const auto pos = name_position(name);
-  if (pos != by_name_.end() && vehicles_[*pos].name == name) return *pos;
-  const auto id = static_cast<VehicleId>(vehicles_.size());
+  if (pos != by_name_.end() && vehicles_[*pos].name == name) {
+    vehicles_[*pos].last_mail_s = now_s;
+    return *pos;
+  }
+  const auto slot = free_vehicle_slot(name, now_s, out);
+  if (!slot) return std::nullopt;
   VehicleState v;
   v.name = std::string(name);
   v.variable_suffix = "_" + base::to_upper(name);
   v.name_hash = hash_name(name);
+  v.last_mail_s = now_s;
   if (effects_.turn_blackout) v.heading_history.emplace();
-  vehicles_.push_back(std::move(v));
-  by_name_.insert(pos, id);
-  return id;
+  if (*slot == vehicles_.size()) {
+    vehicles_.push_back(std::move(v));
+  } else {
+    vehicles_[*slot] = std::move(v);
+  }
+  by_name_.insert(name_position(name), *slot);
+  return *slot;
+}
+
+// The table is bounded (kMaxVehicles): a full table makes room only by forgetting a vehicle
+// that has been silent for kForgetSilentAfter_s, which by then neither senses nor holds a width.
+std::optional<VehicleId> Engine::free_vehicle_slot(std::string_view name, double now_s,
+                                                   Outputs& out) {
+  if (vehicles_.size() < kMaxVehicles) {
+    warned_vehicle_table_full_ = false;
+    return static_cast<VehicleId>(vehicles_.size());
+  }
+  const auto silent = std::min_element(
+      vehicles_.begin(), vehicles_.end(),
+      [](const VehicleState& a, const VehicleState& b) { return a.last_mail_s < b.last_mail_s; });
+  const double silent_s = now_s - silent->last_mail_s;
+  if (silent_s >= kForgetSilentAfter_s) {
+    const auto id = static_cast<VehicleId>(silent - vehicles_.begin());
+    out.run_warnings.push_back("Vehicle table full (kMaxVehicles = " +
+                               std::to_string(kMaxVehicles) + " vehicles): forgot " +
+                               silent->name + ", silent for " + base::fix(silent_s, 0) +
+                               " s, to make room for " + base::excerpt(name));
+    by_name_.erase(name_position(silent->name));
+    ++drops_.vehicles_forgotten;
+    warned_vehicle_table_full_ = false;  // a later refusal starts a new episode
+    return id;
+  }
+  ++drops_.vehicles;
+  if (!warned_vehicle_table_full_) {
+    out.run_warnings.push_back("Vehicle table full (kMaxVehicles = " +
+                               std::to_string(kMaxVehicles) + " vehicles, none silent for " +
+                               base::fix(kForgetSilentAfter_s, 0) + " s): mail from new vehicle " +
+                               base::excerpt(name) + " dropped (further drops only counted)");
+  }
+  warned_vehicle_table_full_ = true;
+  return std::nullopt;
 }
 
 // ---------------------------------------------------------------------------------------------

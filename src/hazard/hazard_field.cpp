@@ -64,7 +64,8 @@ HazardFileCounts load_hazard_file_text(std::string_view text, std::string_view f
                                        const GeoPlacement* placement) {
   HazardFileCounts counts;
   int line_number = 0;
-  std::size_t start = 0;
+  // A UTF-8 byte-order mark is accepted at the start, as in mission files (issue 12).
+  std::size_t start = base::starts_with(text, "\xEF\xBB\xBF") ? 3 : 0;
   while (start <= text.size()) {
     const auto end = text.find('\n', start);
     const std::string_view raw =
@@ -86,7 +87,8 @@ HazardFileCounts load_hazard_file_text(std::string_view text, std::string_view f
     } else if (eq != std::string_view::npos && (base::iequals(key, "region") || base::iequals(key, "source"))) {
       continue;  // gen_hazards' region and the grader's source: not the sensor's business
     } else {
-      warnings.push_back(place(file, line_number) + "unrecognised line '" + base::excerpt(line) +
+      warnings.push_back(place(file, line_number) + "unrecognised line '" +
+                         base::escape_for_log(base::excerpt(line)) +
                          "' ignored (expected 'hazard = ...', 'region = ...' or 'source = ...')");
     }
   }

@@ -43,6 +43,21 @@ std::string join(const std::vector<std::string>& items) {
   return out.empty() ? "none" : out;
 }
 
+// "      Drops: vehicles 2, ..." when a bound of the engine was reached (engine.hpp), else
+// nothing, so the report of a mission that never reaches one is unchanged.
+std::string drops_line(const BoundDrops& d) {
+  const std::pair<const char*, std::uint64_t> counts[] = {
+      {"vehicles refused", d.vehicles},           {"vehicles forgotten", d.vehicles_forgotten},
+      {"classify requests", d.classify_requests}, {"credits", d.credits},
+      {"teleports", d.teleports}};
+  std::string out;
+  for (const auto& [name, count] : counts) {
+    if (count == 0) continue;
+    out += (out.empty() ? "" : ", ") + std::string(name) + " " + std::to_string(count);
+  }
+  return out.empty() ? "" : "      Drops: " + out + "\n";
+}
+
 }  // namespace
 
 std::string format_table(const std::vector<std::vector<std::string>>& header_rows,
@@ -82,6 +97,7 @@ ReportData collect_report_data(const Engine& engine) {
   for (std::string_view name : engine.effects().active_names()) d.effects.emplace_back(name);
   d.options = engine.config().options.by_width();
   d.start_time_s = engine.start_time_s();
+  d.drops = engine.drops();
   for (VehicleId id : engine.vehicles_by_name()) {
     const VehicleState& v = engine.vehicle(id);
     if (v.setting) d.vehicles.push_back({v.name, *v.setting, v.counters});
@@ -95,7 +111,8 @@ std::string format_report(const ReportData& d) {
   out += "     Benign: " + std::to_string(d.benign) + "\n";
   out += "       Seed: " + std::to_string(d.seed.seed) + " (" + seed_source_name(d.seed.source) +
          ")\n";
-  out += "    Effects: " + join(d.effects) + "\n\n";
+  out += "    Effects: " + join(d.effects) + "\n";
+  out += drops_line(d.drops) + "\n";
 
   out += section("Sensor Configuration Options");
   std::vector<std::vector<std::string>> options;

@@ -2,11 +2,13 @@
 // step(): activity, the speed and turn gates, the swath, and the entry events, sampled at the
 // latest pose or along the track of node reports (sensing_track.hpp).
 #include <algorithm>
+#include <cmath>
 #include <iterator>
 #include <string>
 
 #include "hazard/engine.hpp"
 #include "hazard/time_rules.hpp"
+#include "base/text.hpp"
 
 namespace hazard {
 
@@ -20,7 +22,9 @@ std::string no_node_report_warning(const std::string& vname) {
 
 // A LAT/LON-only report was placed by the parser (geodesy.hpp); the engine only sees x/y.
 void Engine::handle_node_report(const NodeReport& r, double now_s, Outputs& out) {
-  VehicleState& v = vehicles_[vehicle_id(r.name)];
+  const auto id = vehicle_id(r.name, now_s, out);
+  if (!id) return;  // the vehicle table is full (warned, counted)
+  VehicleState& v = vehicles_[*id];
   v.pose = Pose{{r.x_m, r.y_m}, r.heading_deg, r.speed_mps};
   if (v.heading_history) v.heading_history->add(r.heading_deg, now_s);
   if (track_mode()) add_to_track(v, out);
@@ -32,8 +36,10 @@ void Engine::handle_node_report(const NodeReport& r, double now_s, Outputs& out)
 
 // A sensor request switches the sensor on for kSensorActiveWindow_s and keeps the vehicle's
 // width held (settings.cpp).
-void Engine::handle_sensor_request(const SensorRequest& r, double now_s) {
-  VehicleState& v = vehicles_[vehicle_id(r.vname)];
+void Engine::handle_sensor_request(const SensorRequest& r, double now_s, Outputs& out) {
+  const auto id = vehicle_id(r.vname, now_s, out);
+  if (!id) return;  // the vehicle table is full (warned, counted)
+  VehicleState& v = vehicles_[*id];
   ++v.counters.sensor_requests;
   v.last_sensor_request_s = now_s;
   v.last_width_claim_s = now_s;
@@ -114,8 +120,25 @@ void Engine::add_to_track(VehicleState& v, Outputs& out) {
     v.track_overflowed = true;
     v.track.erase(v.track.begin());
   }
-  v.track.push_back(TrackPose{v.pose->position_m, v.pose->heading_deg,
-                              gates_pass(v.pose->speed_mps, v.heading_history)});
+  TrackPose pose{v.pose->position_m, v.pose->heading_deg,
+                 gates_pass(v.pose->speed_mps, v.heading_history), false};
+  if (!v.track.empty()) pose.teleport = is_teleport(v, v.track.back().position_m, out);
+  v.track.push_back(pose);
+}
+
+// A jump no vehicle can make between two reports (kMaxSweepJump_m) is not swept: a vehicle that
+// reappears 10 km away would otherwise sweep the whole jump (hundreds of thousands of objects
+// in a dense field). A fixed distance, not max_vehicle_speed times the elapsed time: the
+// driver's clamp can give reports of one mail batch the same time, and the gate may be off.
+bool Engine::is_teleport(const VehicleState& v, glm::dvec2 from_m, Outputs& out) {
+  const glm::dvec2 d = v.pose->position_m - from_m;
+  const double jump_m = std::hypot(d.x, d.y);
+  if (!(jump_m > kMaxSweepJump_m)) return false;
+  ++drops_.teleports;
+  out.run_warnings.push_back(v.name + " jumped " + base::fix(jump_m, 1) +
+                             " m between two node reports (more than kMaxSweepJump_m = " +
+                             base::fix(kMaxSweepJump_m, 0) + " m); the jump is not swept");
+  return true;
 }
 
 // Keeps only the latest report as the start of the next track; its own state is sensed again
@@ -138,12 +161,22 @@ void Engine::sense_track(VehicleState& v, double now_s, Outputs& out) {
   v.track_start_sensed = true;  // ... and has been sensed now
   if (pieces.empty()) return;  // no sensed piece: nothing changes
 
-  Box box = pieces.front().box;
-  for (const TrackPiece& p : pieces) box = merged(box, p.box);
+  // Candidates per run of pieces between teleports: never the box around a jump.
   scratch_candidates_.assign(v.inside.begin(), v.inside.end());
-  field_.grid().for_each_in_box(box, [&](ObjectId id, glm::dvec2) {
-    scratch_candidates_.push_back(id);
-  });
+  auto add_candidates = [&](const Box& box) {
+    field_.grid().for_each_in_box(box, [&](ObjectId id, glm::dvec2) {
+      scratch_candidates_.push_back(id);
+    });
+  };
+  Box box = pieces.front().box;
+  for (const TrackPiece& p : pieces) {
+    if (p.after_teleport) {
+      add_candidates(box);
+      box = p.box;
+    }
+    box = merged(box, p.box);
+  }
+  add_candidates(box);
   std::sort(scratch_candidates_.begin(), scratch_candidates_.end());
   scratch_candidates_.erase(std::unique(scratch_candidates_.begin(), scratch_candidates_.end()),
                             scratch_candidates_.end());

@@ -98,6 +98,12 @@ std::vector<TrackPiece> track_pieces(const std::vector<TrackPose>& track, bool s
     const TrackPose& a = track[k - 1];
     const TrackPose& b = track[k];
     if (!b.sensor_on) continue;  // not sensed: nothing changes over this segment
+    if (b.teleport) {  // not swept: only the arrival is sensed
+      pieces.push_back(
+          piece(b.position_m, b.heading_deg, b.position_m, b.heading_deg, b.heading_deg, w, l));
+      pieces.back().after_teleport = true;
+      continue;
+    }
     const double turn_deg = base::norm180(b.heading_deg - a.heading_deg);
     // Sub-stepping samples N poses; sweeping walks n pieces sharing their junction poses.
     const bool sample = mode == TrackMode::kSubsteps;

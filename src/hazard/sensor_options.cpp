@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "base/text.hpp"
+#include "hazard/ranges.hpp"
 #include "messages/fields.hpp"
 
 namespace hazard {
@@ -51,8 +52,13 @@ SensorConfigParse parse_sensor_config(std::string_view value) {
   SensorOption o;
   const auto w = base::parse_number(*width);
   if (!w || !(*w > 0.0)) return fail(field_value("width", *width) + " is not a number > 0");
+  if (*w > kMaxSwathWidth_m) {
+    return fail(field_value("width", *width) + " is above " + base::fmt(kMaxSwathWidth_m) +
+                " m (kMaxSwathWidth_m)");
+  }
   const auto e = base::parse_number(*exp);
   if (!e || !(*e >= kMinExp)) return fail(field_value("exp", *exp) + " is not a number >= 1");
+
   const auto p = base::parse_number(*pclass);
   if (!p || !(*p >= kMinPclass && *p <= kMaxPclass)) {
     return fail(field_value("pclass", *pclass) + " is not a number in [0.5, 1]");

@@ -93,7 +93,9 @@ void Engine::handle_config_request(const ConfigRequest& r, double now_s, Outputs
                                ": no sensor_config options exist; ignored");
     return;
   }
-  const VehicleId id = vehicle_id(r.vname);
+  const auto found = vehicle_id(r.vname, now_s, out);
+  if (!found) return;  // the vehicle table is full (warned, counted)
+  const VehicleId id = *found;
   VehicleState& v = vehicles_[id];
   v.last_width_claim_s = now_s;  // accepted: the width it ends with is held from now
   const char* what =

@@ -9,9 +9,10 @@ using Result = Parsed<ClassifyRequest>;
 Result parse_classify_request(std::string_view text) {
   const detail::Fields f(text);
   ClassifyRequest r;
-  const auto vname = f.get("vname");
-  if (!vname || vname->empty()) return Result::fail(detail::missing_field("vname"));
-  r.vname = std::string(*vname);
+  std::string error;
+  auto vname = detail::vehicle_name(f, "vname", error);
+  if (!vname) return Result::fail(error);
+  r.vname = std::move(*vname);
   if (const auto action = f.get("action"); action && !action->empty()) {
     if (base::iequals(*action, "top")) {
       r.action = ClassifyAction::kTop;
@@ -21,7 +22,6 @@ Result parse_classify_request(std::string_view text) {
       return Result::fail(detail::field_value("action", *action) + " is neither 'top' nor 'clear'");
     }
   }
-  std::string error;
   r.priority = f.number("priority", error);
   if (!error.empty()) return Result::fail(error);
   if (const auto label = f.get("label")) r.label = std::string(*label);

@@ -1,6 +1,7 @@
 #include "hazard/messages/config_request.hpp"
 
 #include "fields.hpp"
+#include "hazard/ranges.hpp"
 
 namespace hazard {
 
@@ -8,11 +9,11 @@ using Result = Parsed<ConfigRequest>;
 
 Result parse_config_request(std::string_view text) {
   const detail::Fields f(text);
-  const auto vname = f.get("vname");
-  if (!vname || vname->empty()) return Result::fail(detail::missing_field("vname"));
-  ConfigRequest r;
-  r.vname = std::string(*vname);
   std::string error;
+  auto vname = detail::vehicle_name(f, "vname", error);
+  if (!vname) return Result::fail(error);
+  ConfigRequest r;
+  r.vname = std::move(*vname);
   // An empty width ("width=,pd=0.8") is a pd-only update, as in the original (spec 7.2).
   const auto width_text = f.get("width");
   if (width_text && !width_text->empty()) r.width_m = f.number("width", error);
@@ -20,6 +21,10 @@ Result parse_config_request(std::string_view text) {
   if (!error.empty()) return Result::fail(error);
   if (r.width_m && !(*r.width_m > 0.0)) {
     return Result::fail(detail::field_value("width", *f.get("width")) + " is not > 0");
+  }
+  if (r.width_m && *r.width_m > kMaxSwathWidth_m) {
+    return Result::fail(detail::field_value("width", *f.get("width")) + " is above " +
+                        base::fmt(kMaxSwathWidth_m) + " m (kMaxSwathWidth_m)");
   }
   if (r.pd && !(*r.pd >= 0.0 && *r.pd <= 1.0)) {
     return Result::fail(detail::field_value("pd", *f.get("pd")) + " is outside [0, 1]");

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "hazard/ranges.hpp"
+
 namespace hazard::detail {
 
 std::optional<std::string_view> Fields::get(std::string_view key) const {
@@ -30,8 +32,35 @@ std::vector<std::string_view> Fields::unknown_keys(
   return out;
 }
 
+bool has_control_byte(std::string_view text) {
+  return std::any_of(text.begin(), text.end(), [](char c) {
+    const auto b = static_cast<unsigned char>(c);
+    return b < 0x20 || b == 0x7F;
+  });
+}
+
 std::string field_value(std::string_view key, std::string_view value) {
-  return "field '" + std::string(key) + "' value '" + base::excerpt(value) + "'";
+  return "field '" + std::string(key) + "' value '" + base::escape_for_log(base::excerpt(value)) +
+         "'";
+}
+
+std::optional<std::string> vehicle_name(const Fields& f, std::string_view key,
+                                        std::string& error) {
+  const auto name = f.get(key);
+  if (!name || name->empty()) {
+    error = missing_field(key);
+    return std::nullopt;
+  }
+  if (name->size() > kMaxVehicleNameBytes) {
+    error = field_value(key, *name) + " is longer than " + std::to_string(kMaxVehicleNameBytes) +
+            " bytes";
+    return std::nullopt;
+  }
+  if (has_control_byte(*name)) {
+    error = field_value(key, *name) + " contains a control byte";
+    return std::nullopt;
+  }
+  return std::string(*name);
 }
 
 std::string missing_field(std::string_view key) {

@@ -30,8 +30,14 @@ class Fields {
   std::vector<base::KeyValue> pieces_;
 };
 
-/// "field 'pd' value 'abc'".
+/// Whether `text` holds a control byte (below 0x20, or 0x7F): names and labels must not, since
+/// they reach variable names, postings and log lines.
+bool has_control_byte(std::string_view text);
+/// "field 'pd' value 'abc'" (the value cut and escaped: it is outside text).
 std::string field_value(std::string_view key, std::string_view value);
+/// The vehicle name in field `key`: present, non-empty, at most kMaxVehicleNameBytes and free
+/// of control bytes (ranges.hpp); nullopt with `error` set otherwise.
+std::optional<std::string> vehicle_name(const Fields& f, std::string_view key, std::string& error);
 /// "missing field 'vname'".
 std::string missing_field(std::string_view key);
 

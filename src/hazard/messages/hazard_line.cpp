@@ -1,8 +1,10 @@
 #include "hazard/messages/hazard_line.hpp"
 
+#include <cmath>
 #include <set>
 
 #include "fields.hpp"
+#include "hazard/ranges.hpp"
 #include "hazard/style.hpp"
 #include "base/text.hpp"
 
@@ -17,7 +19,7 @@ using detail::missing_field;
 constexpr double kMaxAspectDeg = 360.0;       // aspect in [0, 360)
 constexpr double kMaxAspectWindowDeg = 90.0;  // aspect_min, aspect_max in [0, 90], sum <= 90
 
-std::string quoted(std::string_view s) { return "'" + std::string(s) + "'"; }
+std::string quoted(std::string_view s) { return "'" + base::escape_for_log(s) + "'"; }
 
 // Collects what parse_hazard_line finds, field by field.
 struct LineReader {
@@ -59,6 +61,10 @@ struct LineReader {
     } else if (key == "y") {
       y = number(key, value);
     } else if (key == "label") {
+      // A label reaches postings, variable payloads and logs: no control bytes (issue 12).
+      if (detail::has_control_byte(value)) {
+        reject(field_value(key, value) + " contains a control byte");
+      }
       label = std::string(value);
     } else if (key == "type") {
       if (base::iequals(value, "hazard")) {
@@ -154,6 +160,11 @@ struct LineReader {
     if ((!x || !y) && lat_text && lon_text) place_lat_lon();
     if (!result.error.empty()) return;
     if (!x || !y) return reject(missing_field(!x ? "x" : "y"));
+    if (std::fabs(*x) > kMaxObjectCoordinate_m || std::fabs(*y) > kMaxObjectCoordinate_m) {
+      return reject("position (" + base::format_g(*x) + ", " + base::format_g(*y) +
+                    ") is beyond " + base::fmt(kMaxObjectCoordinate_m, 0) +
+                    " m from the origin (kMaxObjectCoordinate_m)");
+    }
     if (!type) type = type_from_hazard_key;
     if (!type) return reject(missing_field("type"));
     if (!label || label->empty()) return reject(missing_field("label"));

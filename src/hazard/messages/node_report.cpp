@@ -1,6 +1,9 @@
 #include "hazard/messages/node_report.hpp"
 
+#include <cmath>
+
 #include "fields.hpp"
+#include "hazard/ranges.hpp"
 
 namespace hazard {
 
@@ -45,6 +48,27 @@ std::optional<glm::dvec2> place_lat_lon(const Fields& f, const GeoPlacement* pla
   return placement->projection->to_local(*lat, *lon);
 }
 
+// Physically meaningful ranges (ranges.hpp): a position beyond kMaxNodeCoordinate_m, or a
+// speed that is negative or beyond kMaxNodeSpeed_mps, is refused; empty when in range.
+std::string out_of_range(const Fields& f, glm::dvec2 position, double spd,
+                         std::string_view spd_text) {
+  const std::string bound = base::fmt(kMaxNodeCoordinate_m, 0);
+  if (std::fabs(position.x) > kMaxNodeCoordinate_m ||
+      std::fabs(position.y) > kMaxNodeCoordinate_m) {
+    const auto x = f.get("X");
+    const auto y = f.get("Y");
+    const std::string given = x && y ? detail::field_value("X", *x) + ", " +
+                                           detail::field_value("Y", *y)
+                                     : "the position placed from LAT/LON";
+    return given + ": beyond " + bound + " m from the origin (kMaxNodeCoordinate_m)";
+  }
+  if (!(spd >= 0.0 && spd <= kMaxNodeSpeed_mps)) {
+    return detail::field_value("SPD", spd_text) + " is outside [0, " +
+           base::fmt(kMaxNodeSpeed_mps, 0) + "] m/s";
+  }
+  return {};
+}
+
 }  // namespace
 
 Parsed<NodeReport> parse_node_report(std::string_view text) {
@@ -54,11 +78,11 @@ Parsed<NodeReport> parse_node_report(std::string_view text) {
 Parsed<NodeReport> parse_node_report(std::string_view text, const GeoPlacement* placement) {
   const Fields f(text, /*respect_braces=*/true);
   NodeReport r;
-  const auto name = f.get("NAME");
-  if (!name || name->empty()) return Parsed<NodeReport>::fail(missing_field("NAME"));
-  r.name = std::string(*name);
-
   std::string error;
+  auto name = detail::vehicle_name(f, "NAME", error);
+  if (!name) return Parsed<NodeReport>::fail(error);
+  r.name = std::move(*name);
+
   const auto x = f.number("X", error);
   const auto y = f.number("Y", error);
   const auto spd_text = either(f, "SPD", "SPEED");
@@ -90,6 +114,8 @@ Parsed<NodeReport> parse_node_report(std::string_view text, const GeoPlacement* 
   r.y_m = position->y;
   r.speed_mps = *spd;
   r.heading_deg = base::norm360(*hdg);
+  const std::string why = out_of_range(f, {r.x_m, r.y_m}, r.speed_mps, spd_text.value_or(""));
+  if (!why.empty()) return Parsed<NodeReport>::fail(why);
   r.lat_deg = optional_number(f, "LAT");
   r.lon_deg = optional_number(f, "LON");
   r.time_s = optional_number(f, "TIME");

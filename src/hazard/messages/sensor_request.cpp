@@ -6,9 +6,10 @@ namespace hazard {
 
 Parsed<SensorRequest> parse_sensor_request(std::string_view text) {
   const detail::Fields f(text);
-  const auto vname = f.get("vname");
-  if (!vname || vname->empty()) return Parsed<SensorRequest>::fail(detail::missing_field("vname"));
-  return Parsed<SensorRequest>::ok(SensorRequest{std::string(*vname)});
+  std::string error;
+  auto vname = detail::vehicle_name(f, "vname", error);
+  if (!vname) return Parsed<SensorRequest>::fail(error);
+  return Parsed<SensorRequest>::ok(SensorRequest{std::move(*vname)});
 }
 
 std::string format_sensor_request(const SensorRequest& request) { return "vname=" + request.vname; }
