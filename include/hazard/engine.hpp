@@ -57,6 +57,12 @@ inline constexpr double kDefaultPd = 0.9;
 /// oldest is dropped (a guard against reports arriving thousands of times per iteration).
 inline constexpr std::size_t kMaxTrackPoses = 4096;
 
+/// At most this many objects' visuals (a VIEW_MARKER and, for an aspect object, a VIEW_SEGLIST)
+/// are posted by one call (start-up, PMV_CONNECT, restart_field_visuals, or an iteration); a
+/// bigger field's visuals follow over successive iterations in load order, so the iteration
+/// holds its tick at start-up (issue 14). A field this small posts everything at once.
+inline constexpr std::size_t kFieldVisualsPerIteration = 2000;
+
 /// A MOOS variable of the interface, with an example payload (for --interface and the docs).
 struct InterfaceVariable {
   std::string_view name;
@@ -84,6 +90,12 @@ class Engine {
   Outputs start(double now_s);
   /// One iteration at `now_s`.
   Outputs step(double now_s);
+  /// The field's visuals (object markers and aspect axes) again from the first object: the
+  /// first batch now, the rest over the next iterations (kFieldVisualsPerIteration). Nothing
+  /// without the hazard_markers effect. Used on PMV_CONNECT and by a reconnecting app.
+  void restart_field_visuals(Outputs& out);
+  /// Objects whose visuals are still to be posted by the coming iterations.
+  std::size_t field_visuals_pending() const { return field_.size() - visuals_cursor_; }
 
   static const std::vector<InterfaceVariable>& subscriptions();
   static const std::vector<InterfaceVariable>& publications();
@@ -122,10 +134,12 @@ class Engine {
   void handle_classify_request(const ClassifyRequest& request, double now_s, Outputs& out);
   void handle_sensor_clear(const SensorClear& request, Outputs& out);
   /// A viewer connected: the object markers again (only with the hazard_markers effect).
-  void handle_viewer_connect(Outputs& out) const;
+  void handle_viewer_connect(Outputs& out);
 
   void clear_queue(std::string_view vname, Outputs& out);
-  void post_object_visuals(Outputs& out) const;
+  /// The next batch of at most kFieldVisualsPerIteration objects' visuals from visuals_cursor_.
+  void post_field_visuals_batch(Outputs& out);
+  void post_object_visuals(ObjectId id, Outputs& out) const;
 
   // Settings (D3, D4, D11, D20).
   void set_default_width(VehicleId id, double pd, double now_s, Outputs& out);
@@ -176,6 +190,8 @@ class Engine {
   std::vector<VehicleId> by_name_;  ///< ids in name order; also the name lookup
   std::optional<double> start_time_s_;
   std::optional<double> last_summary_s_;
+  /// The next object whose visuals are due; field_.size() when none are (nothing scheduled).
+  std::size_t visuals_cursor_ = 0;
   std::vector<ObjectId> scratch_inside_;          ///< reused by update_entries and sense_track
   std::vector<ObjectId> scratch_candidates_;      ///< reused by sense_track
   std::vector<std::uint32_t> scratch_event_pieces_;  ///< reused by sense_track
