@@ -38,6 +38,9 @@ class HazardField {
   /// Adds an object; false (and nothing changes) if its label is already present or the label
   /// table would pass 4 GiB.
   bool add(const HazardObject& object);
+  /// Room for `objects` in all (a loader that can count its lines calls it first, so the label
+  /// table is not rebuilt as it grows).
+  void reserve(std::size_t objects);
   /// Builds the spatial index and releases spare capacity; call after the last add() (Engine does).
   void build_index();
 
@@ -73,7 +76,8 @@ class HazardField {
   };
   /// Slot of `label` in label_slots_: where it is, or the empty slot where it belongs.
   std::size_t slot_of(std::string_view label, std::uint64_t hash) const;
-  void grow_label_slots();
+  /// The label table rebuilt with at least 2 * `objects` slots.
+  void grow_label_slots(std::size_t objects);
 
   std::vector<glm::dvec2> positions_;
   std::vector<std::uint8_t> types_;

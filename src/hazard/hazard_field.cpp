@@ -28,7 +28,7 @@ std::string_view without_comment(std::string_view line) {
 
 bool HazardField::add(const HazardObject& object) {
   const std::uint64_t hash = hash_name(object.label);
-  if (label_slots_.empty() || 2 * (size() + 1) > label_slots_.size()) grow_label_slots();
+  if (2 * (size() + 1) > label_slots_.size()) grow_label_slots(2 * (size() + 1));
   const std::size_t slot = slot_of(object.label, hash);
   if (label_slots_[slot] != kNone) return false;
   if (label_chars_.size() + object.label.size() > UINT32_MAX) return false;
@@ -107,18 +107,35 @@ std::uint64_t HazardField::label_hash(ObjectId id) const { return hash_name(labe
 
 std::size_t HazardField::slot_of(std::string_view label, std::uint64_t hash) const {
   const std::size_t mask = label_slots_.size() - 1;  // a power of two
-  for (std::size_t slot = hash & mask;; slot = (slot + 1) & mask) {
+  // FNV's low bits follow the labels' low bits (numeric labels cluster): mixed first.
+  for (std::size_t slot = mix64(hash) & mask;; slot = (slot + 1) & mask) {
     const std::uint32_t id = label_slots_[slot];
     if (id == kNone || this->label(id) == label) return slot;
   }
 }
 
-void HazardField::grow_label_slots() {
-  std::vector<std::uint32_t> old = std::move(label_slots_);
-  label_slots_.assign(std::max<std::size_t>(16, old.size() * 2), kNone);
-  for (std::uint32_t id : old) {
-    if (id != kNone) label_slots_[slot_of(label(id), label_hash(id))] = id;
+void HazardField::grow_label_slots(std::size_t objects) {
+  std::size_t slots = 16;
+  while (slots < 2 * objects) slots *= 2;
+  if (slots <= label_slots_.size()) return;
+  label_slots_.assign(slots, kNone);
+  // Labels already in are unique: each goes to the first free slot of its probe sequence.
+  const std::size_t mask = slots - 1;
+  for (ObjectId id = 0; id < size(); ++id) {
+    std::size_t slot = mix64(label_hash(id)) & mask;
+    while (label_slots_[slot] != kNone) slot = (slot + 1) & mask;
+    label_slots_[slot] = id;
   }
+}
+
+void HazardField::reserve(std::size_t objects) {
+  grow_label_slots(objects);
+  positions_.reserve(objects);
+  types_.reserve(objects);
+  resemblances_.reserve(objects);
+  aspect_index_.reserve(objects);
+  style_index_.reserve(objects);
+  label_ends_.reserve(objects);
 }
 
 std::optional<ObjectId> HazardField::find(std::string_view label) const {
@@ -161,6 +178,7 @@ HazardFileCounts load_hazard_file_text(std::string_view text, std::string_view f
                                        HazardField& field, std::vector<std::string>& warnings,
                                        const GeoPlacement* placement) {
   HazardFileCounts counts;
+  field.reserve(field.size() + static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1);
   int line_number = 0;
   std::size_t start = 0;
   while (start <= text.size()) {
