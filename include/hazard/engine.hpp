@@ -85,6 +85,10 @@ class Engine {
  public:
   Engine(EngineSetup setup, SeedChoice seed);
 
+  /// This engine as built, with another seed: a study over seeds loads the field once
+  /// (hazard_replay --seeds). Only before start(): the copy has no start time, vehicles or mail.
+  Engine with_seed(SeedChoice seed) const;
+
   /// Start-up: the loader's config warnings and, if show_hazards, the object visuals.
   /// Records `now_s` as the start time (the report's relative times).
   Outputs start(double now_s);

@@ -19,6 +19,13 @@ Engine::Engine(EngineSetup setup, SeedChoice seed)
   visuals_cursor_ = field_.size();
 }
 
+Engine Engine::with_seed(SeedChoice seed) const {
+  Engine copy(*this);
+  copy.seed_ = seed;
+  copy.dice_ = Dice(seed.seed);
+  return copy;
+}
+
 // The name index is the lookup: a binary search over the ids in name order (a few compares for
 // a fleet of 100), so no second name -> id map has to be kept in step with it.
 std::vector<VehicleId>::const_iterator Engine::name_position(std::string_view name) const {

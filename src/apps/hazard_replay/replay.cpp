@@ -104,13 +104,10 @@ int run(const Options& options, std::ostream& out, std::ostream& err) {
 
   // Hazard files are named relative to the mission file.
   // LatOrigin/LongOrigin place LAT/LON-only node reports and lat/lon hazard lines (geodesy).
-  const auto make_driver = [&](std::optional<std::uint64_t> seed) {
-    return hazard::Driver(app_support::make_sensor_engine(
-        block->lines, mission->directory(), app_support::mission_origin(*mission), seed,
-        app_support::operating_system_seed));
-  };
-  hazard::Driver driver = make_driver(options.seeds ? options.seeds->first : options.seed);
-  const double tick_hz = driver.engine().config().app_tick_hz;
+  hazard::Engine built = app_support::make_sensor_engine(
+      block->lines, mission->directory(), app_support::mission_origin(*mission),
+      options.seeds ? options.seeds->first : options.seed, app_support::operating_system_seed);
+  const double tick_hz = built.config().app_tick_hz;
   const auto& mail = input->entries;
   const double start_s = mail.empty() ? 0.0 : mail.front().time_s;
   const double end_s = options.until_s.value_or(mail.empty() ? start_s : mail.back().time_s);
@@ -125,7 +122,7 @@ int run(const Options& options, std::ostream& out, std::ostream& err) {
     err << "hazard_replay: seeds " << options.seeds->first << ".." << options.seeds->last
         << ", AppTick " << base::fmt(tick_hz) << " Hz\n";
     for (std::uint64_t seed = options.seeds->first;; ++seed) {
-      hazard::Driver seeded = make_driver(seed);
+      hazard::Driver seeded(built.with_seed({seed, hazard::SeedSource::kCommandLine}));
       out << seed_summary_json(seed, count_reports(seeded, timeline)) << "\n";
       if (seed == options.seeds->last) break;
     }
@@ -133,6 +130,7 @@ int run(const Options& options, std::ostream& out, std::ostream& err) {
     return 0;
   }
 
+  hazard::Driver driver(std::move(built));
   const hazard::SeedChoice& seed = driver.engine().seed();
   err << "hazard_replay: seed " << seed.seed << " (" << hazard::seed_source_name(seed.source)
       << "), AppTick " << base::fmt(tick_hz) << " Hz\n";
