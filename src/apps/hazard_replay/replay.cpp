@@ -42,10 +42,13 @@ std::optional<Input> read_input(const std::string& path, std::ostream& err) {
       err << path << ":" << number << ": warning: " << p.error << "; line skipped\n";
     }
   }
-  std::stable_sort(input.entries.begin(), input.entries.end(),
-                   [](const moos::AlogEntry& a, const moos::AlogEntry& b) {
-                     return a.time_s < b.time_s;
-                   });
+  const auto earlier = [](const moos::AlogEntry& a, const moos::AlogEntry& b) {
+    return a.time_s < b.time_s;
+  };
+  // A logger writes in time order: sorting (moving every entry) only when it did not.
+  if (!std::is_sorted(input.entries.begin(), input.entries.end(), earlier)) {
+    std::stable_sort(input.entries.begin(), input.entries.end(), earlier);
+  }
   return input;
 }
 
