@@ -6,19 +6,21 @@
 //   build/release/bench/engine/scale_bench                 # every row (1e6 rows take a minute)
 //   build/release/bench/engine/scale_bench 1000000         # only fields of this size
 //
-// Bytes per object: the heap in use (glibc mallinfo2: uordblks + hblkhd) after the Driver is built minus before,
-// divided by the objects; the field's text is held outside the measurement.
+// Bytes per object: the heap in use (glibc mallinfo2: uordblks + hblkhd) after the Driver is
+// built minus before, divided by the objects; the field's text is held outside the measurement.
 #include <malloc.h>
 #include <time.h>
 
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
+#include <cstdint>
+#include <optional>
 #include <memory>
 #include <random>
 #include <string>
 #include <vector>
 
+#include "base/text.hpp"
 #include "hazard/driver.hpp"
 #include "hazard/messages/node_report.hpp"
 #include "scenario/reference_scenario.hpp"
@@ -58,7 +60,8 @@ std::string clustered_field_text(int objects) {
     const auto& c = centres[static_cast<std::size_t>(i % kClusters)];
     char line[160];
     std::snprintf(line, sizeof line, "hazard = x=%.1f,y=%.1f,label=o%d,type=%s\n",
-                  c.first + spread(rng), c.second + spread(rng), i, i % 3 == 0 ? "hazard" : "benign");
+                  c.first + spread(rng), c.second + spread(rng), i,
+                  i % 3 == 0 ? "hazard" : "benign");
     text += line;
   }
   return text;
@@ -136,12 +139,17 @@ void row(int objects, bool clustered) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const int only = argc > 1 ? std::atoi(argv[1]) : 0;
+  const std::optional<std::uint64_t> only =
+      argc > 1 ? base::parse_unsigned(argv[1]) : std::optional<std::uint64_t>(0);
+  if (argc > 2 || !only) {
+    std::fprintf(stderr, "usage: scale_bench [OBJECTS] (1000, 10000, 100000 or 1000000)\n");
+    return 2;
+  }
   std::printf("| objects | layout | bytes/object | load CPU s | idle iteration µs |"
               " 1 vehicle: µs/iteration / reports per CPU s | 10 vehicles | 100 vehicles |\n"
               "|---|---|---|---|---|---|---|---|\n");
   for (int objects : {1000, 10000, 100000, 1000000}) {
-    if (only != 0 && objects != only) continue;
+    if (*only != 0 && static_cast<std::uint64_t>(objects) != *only) continue;
     for (bool clustered : {false, true}) row(objects, clustered);
   }
   return 0;

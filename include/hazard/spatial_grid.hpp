@@ -64,7 +64,7 @@ class SpatialGrid {
   int cells_y() const { return ny_; }
   /// Bytes the index holds (capacity).
   std::size_t memory_bytes() const {
-    return cell_start_.capacity() * sizeof(std::uint32_t) + ids_.capacity() * sizeof(std::uint32_t) +
+    return (cell_start_.capacity() + ids_.capacity()) * sizeof(std::uint32_t) +
            positions_.capacity() * sizeof(glm::dvec2);
   }
 

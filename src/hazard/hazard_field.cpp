@@ -41,10 +41,14 @@ bool HazardField::add(const HazardObject& object) {
   resemblances_.push_back(object.resemblance.value_or(std::numeric_limits<double>::quiet_NaN()));
   const bool has_aspect = object.aspect_deg || object.aspect_min_deg || object.aspect_max_deg;
   aspect_index_.push_back(has_aspect ? static_cast<std::uint32_t>(aspects_.size()) : kNone);
-  if (has_aspect) aspects_.push_back({object.aspect_deg, object.aspect_min_deg, object.aspect_max_deg});
+  if (has_aspect) {
+    aspects_.push_back({object.aspect_deg, object.aspect_min_deg, object.aspect_max_deg});
+  }
   const bool has_style = object.color || object.shape || object.source || object.marker_width_m;
   style_index_.push_back(has_style ? static_cast<std::uint32_t>(styles_.size()) : kNone);
-  if (has_style) styles_.push_back({object.color, object.shape, object.source, object.marker_width_m});
+  if (has_style) {
+    styles_.push_back({object.color, object.shape, object.source, object.marker_width_m});
+  }
   if (object.is_hazard()) ++hazards_;
   return true;
 }
@@ -178,7 +182,8 @@ HazardFileCounts load_hazard_file_text(std::string_view text, std::string_view f
                                        HazardField& field, std::vector<std::string>& warnings,
                                        const GeoPlacement* placement) {
   HazardFileCounts counts;
-  field.reserve(field.size() + static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1);
+  const auto lines = static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1;
+  field.reserve(field.size() + lines);
   int line_number = 0;
   std::size_t start = 0;
   while (start <= text.size()) {

@@ -22,8 +22,8 @@ constexpr int kObjects = 100000;
 std::string lattice_field(int objects) {
   std::string text = "show_hazards = true\n";
   for (int i = 0; i < objects; ++i) {
-    text += "hazard = x=" + std::to_string((i % 300) * 10) + ",y=" + std::to_string((i / 300) * 10) +
-            ",label=o" + std::to_string(i) + (i % 2 ? ",type=hazard" : ",type=benign") +
+    text += "hazard = x=" + std::to_string((i % 300) * 10) +
+            ",y=" + std::to_string((i / 300) * 10) + ",label=o" + std::to_string(i) + (i % 2 ? ",type=hazard" : ",type=benign") +
             (i % 10 == 0 ? ",aspect=30,aspect_min=10,aspect_max=20" : "") + "\n";
   }
   return text;
