@@ -7,9 +7,10 @@
 // (driver.hpp), which owns the time clamp and the dispatch of mail by variable name to the
 // handlers below, so the app, hazard_replay and the benchmarks cannot differ. Mail stamped at
 // or before an iteration's time must be delivered before step() for that time (the caller's loop).
-// step(now) runs three phases in order: post the options summary when due; sense (per active
+// step(now) runs four phases in order: post the options summary when due; sense (per active
 // vehicle in name order: automatic default setting, gates, swath, entry events, detection dice);
-// release classification answers (per vehicle in name order, rate-limited).
+// release classification answers (per vehicle in name order, rate-limited); post the next batch
+// of the field's visuals while a big field's are still going out (kFieldVisualsPerIteration).
 // The pipeline is assembled at construction from the configuration and the field (Effects):
 // what a scene does not use is not computed, stored or allocated. Entry events are sampled at
 // each iteration's latest pose (the original), or along the track of node reports when
