@@ -11,7 +11,8 @@ HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 ROOT="$(cd "$HERE/.." && pwd)"
 BUILD="${1:-$ROOT/build/release}"
 
-cmake --build "$BUILD" --target effects_bench accuracy_bench moosdb_bench process_bench -j2 >&2
+cmake --build "$BUILD" --target effects_bench scale_bench hazard_replay gen_hazards accuracy_bench \
+  moosdb_bench process_bench -j2 >&2
 echo "# docs/effects.md"
 "$BUILD/bench/engine/effects_bench"
 echo
@@ -24,8 +25,11 @@ echo "(plot: docs/images/accuracy.svg)" >&2
 echo
 echo "# docs/performance.md (about ten minutes; a reference MOOSDB or original"
 echo "# uFldHazardSensor on PATH is measured side by side)"
+"$BUILD/bench/engine/scale_bench"
+BUILD_DIR="$BUILD" "$HERE/engine/replay_rate.sh" 120
 "$BUILD/bench/moosdb/moosdb_bench"
 BUILD_DIR="$BUILD" "$HERE/process/run.sh" all 1M-idle
+BUILD_DIR="$BUILD" "$HERE/process/run.sh" 1M-markers -- --duration=300
 BUILD_DIR="$BUILD" "$HERE/process/run.sh" sweep -- --csv="$DATA/performance.csv"
 python3 "$HERE/process/plot_performance.py" "$DATA/performance.csv" "$ROOT/docs/images/performance.svg"
 echo "(plot: docs/images/performance.svg)" >&2

@@ -58,6 +58,9 @@ class Driver {
   TimedOutputs deliver(const Mail& mail) { return deliver(mail, mail.time_s); }
   /// One iteration at max(now_s, last time given).
   TimedOutputs step(double now_s);
+  /// The field's visuals again (Engine::restart_field_visuals): the first batch in the returned
+  /// postings, the rest over the next steps. For an app that reconnected to its MOOSDB.
+  TimedOutputs restart_field_visuals(double now_s);
 
   /// The last time given to the engine; nullopt before the first call.
   std::optional<double> last_time_s() const { return last_time_s_; }

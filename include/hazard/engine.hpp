@@ -7,9 +7,10 @@
 // (driver.hpp), which owns the time clamp and the dispatch of mail by variable name to the
 // handlers below, so the app, hazard_replay and the benchmarks cannot differ. Mail stamped at
 // or before an iteration's time must be delivered before step() for that time (the caller's loop).
-// step(now) runs three phases in order: post the options summary when due; sense (per active
+// step(now) runs four phases in order: post the options summary when due; sense (per active
 // vehicle in name order: automatic default setting, gates, swath, entry events, detection dice);
-// release classification answers (per vehicle in name order, rate-limited).
+// release classification answers (per vehicle in name order, rate-limited); post the next batch
+// of the field's visuals while a big field's are still going out (kFieldVisualsPerIteration).
 // The pipeline is assembled at construction from the configuration and the field (Effects):
 // what a scene does not use is not computed, stored or allocated. Entry events are sampled at
 // each iteration's latest pose (the original), or along the track of node reports when
@@ -91,6 +92,12 @@ struct BoundDrops {
   std::uint64_t teleports = 0;          ///< node-report jumps not swept
 };
 
+/// At most this many objects' visuals (a VIEW_MARKER and, for an aspect object, a VIEW_SEGLIST)
+/// are posted by one call (start-up, PMV_CONNECT, restart_field_visuals, or an iteration); a
+/// bigger field's visuals follow over successive iterations in load order, so the iteration
+/// holds its tick at start-up (issue 14). A field this small posts everything at once.
+inline constexpr std::size_t kFieldVisualsPerIteration = 2000;
+
 /// A MOOS variable of the interface, with an example payload (for --interface and the docs).
 struct InterfaceVariable {
   std::string_view name;
@@ -113,11 +120,21 @@ class Engine {
  public:
   Engine(EngineSetup setup, SeedChoice seed);
 
+  /// This engine as built, with another seed: a study over seeds loads the field once
+  /// (hazard_replay --seeds). Only before start(): the copy has no start time, vehicles or mail.
+  Engine with_seed(SeedChoice seed) const;
+
   /// Start-up: the loader's config warnings and, if show_hazards, the object visuals.
   /// Records `now_s` as the start time (the report's relative times).
   Outputs start(double now_s);
   /// One iteration at `now_s`.
   Outputs step(double now_s);
+  /// The field's visuals (object markers and aspect axes) again from the first object: the
+  /// first batch now, the rest over the next iterations (kFieldVisualsPerIteration). Nothing
+  /// without the hazard_markers effect. Used on PMV_CONNECT and by a reconnecting app.
+  void restart_field_visuals(Outputs& out);
+  /// Objects whose visuals are still to be posted by the coming iterations.
+  std::size_t field_visuals_pending() const { return field_.size() - visuals_cursor_; }
 
   static const std::vector<InterfaceVariable>& subscriptions();
   static const std::vector<InterfaceVariable>& publications();
@@ -158,13 +175,15 @@ class Engine {
   void handle_classify_request(const ClassifyRequest& request, double now_s, Outputs& out);
   void handle_sensor_clear(const SensorClear& request, double now_s, Outputs& out);
   /// A viewer connected: the object markers again (only with the hazard_markers effect).
-  void handle_viewer_connect(Outputs& out) const;
+  void handle_viewer_connect(Outputs& out);
 
   void clear_queue(std::string_view vname, double now_s, Outputs& out);
   void refuse_queue_full(VehicleState& v, std::string_view label, Outputs& out);
   /// One credit for a detection, unless the pair holds kMaxCreditsPerObject (counted drop).
   void grant_credit(VehicleState& v, ObjectId id, const Credit& credit, Outputs& out);
-  void post_object_visuals(Outputs& out) const;
+  /// The next batch of at most kFieldVisualsPerIteration objects' visuals from visuals_cursor_.
+  void post_field_visuals_batch(Outputs& out);
+  void post_object_visuals(ObjectId id, Outputs& out) const;
 
   // Settings (D3, D4, D11, D20).
   void set_default_width(VehicleId id, double pd, double now_s, Outputs& out);
@@ -223,6 +242,8 @@ class Engine {
   std::optional<double> last_summary_s_;
   BoundDrops drops_;
   bool warned_vehicle_table_full_ = false;  ///< one warning per episode of a full table
+  /// The next object whose visuals are due; field_.size() when none are (nothing scheduled).
+  std::size_t visuals_cursor_ = 0;
   std::vector<ObjectId> scratch_inside_;          ///< reused by update_entries and sense_track
   std::vector<ObjectId> scratch_candidates_;      ///< reused by sense_track
   std::vector<std::uint32_t> scratch_event_pieces_;  ///< reused by sense_track

@@ -62,6 +62,11 @@ class SpatialGrid {
   double cell_size_m() const { return cell_m_; }
   int cells_x() const { return nx_; }
   int cells_y() const { return ny_; }
+  /// Bytes the index holds (capacity).
+  std::size_t memory_bytes() const {
+    return (cell_start_.capacity() + ids_.capacity()) * sizeof(std::uint32_t) +
+           positions_.capacity() * sizeof(glm::dvec2);
+  }
 
  private:
   int cell_x(double x) const;

@@ -52,6 +52,13 @@ TimedOutputs Driver::step(double now_s) {
   return {engine_.step(t), t};
 }
 
+TimedOutputs Driver::restart_field_visuals(double now_s) {
+  const double t = advance_to(now_s);
+  TimedOutputs out{{}, t};
+  engine_.restart_field_visuals(out.outputs);
+  return out;
+}
+
 void Driver::dispatch(std::string_view variable, std::string_view value, double now_s,
                       Outputs& out) {
   if (!subscribed(variable)) return;

@@ -23,17 +23,21 @@ std::vector<std::string_view> Effects::active_names() const {
 }
 
 Effects choose_effects(const EngineConfig& config, const HazardField& field) {
-  const auto& objects = field.objects();
+  // Any object meeting `test`, by id (the field is stored as tables, not objects).
+  const auto any_object = [&](auto test) {
+    for (ObjectId id = 0; id < field.size(); ++id)
+      if (test(id)) return true;
+    return false;
+  };
   Effects e;
   e.speed_gate = config.max_vehicle_speed_mps.has_value();
   e.turn_blackout = config.max_turn_rate_dps.has_value();
   e.resemblance = !config.ignore_resemblances &&
-                  std::any_of(objects.begin(), objects.end(), [](const HazardObject& o) {
-                    return !o.is_hazard() && o.resemblance.has_value();
+                  any_object([&](ObjectId id) {
+                    return !field.is_hazard(id) && field.resemblance(id).has_value();
                   });
   e.aspect = !config.ignore_aspect &&
-             std::any_of(objects.begin(), objects.end(),
-                         [](const HazardObject& o) { return o.has_aspect_triple(); });
+             any_object([&](ObjectId id) { return field.has_aspect_triple(id); });
   e.swept_swath = config.swath_sweep;
   e.swath_substeps = !config.swath_sweep && config.swath_substeps > 0;
   e.geodesy = config.origin.has_value() && config.geodesy != GeodesyMode::kOff;

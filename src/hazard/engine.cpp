@@ -16,6 +16,14 @@ Engine::Engine(EngineSetup setup, SeedChoice seed)
       seed_(seed),
       dice_(seed.seed) {
   field_.build_index();
+  visuals_cursor_ = field_.size();
+}
+
+Engine Engine::with_seed(SeedChoice seed) const {
+  Engine copy(*this);
+  copy.seed_ = seed;
+  copy.dice_ = Dice(seed.seed);
+  return copy;
 }
 
 // The name index is the lookup: a binary search over the ids in name order (a few compares for
@@ -95,23 +103,25 @@ Outputs Engine::start(double now_s) {
   Outputs out;
   start_time_s_ = now_s;
   out.config_warnings = setup_warnings_;
-  if (effects_.hazard_markers) post_object_visuals(out);
+  restart_field_visuals(out);
   return out;
 }
 
 // The phases in order: the options summary (settings.cpp), sensing per vehicle in name order
-// (sensing.cpp, detection.cpp), the release of classification answers (classification.cpp).
+// (sensing.cpp, detection.cpp), the release of classification answers (classification.cpp),
+// the next batch of the field's visuals if a big field's are still being posted (visuals.cpp).
 Outputs Engine::step(double now_s) {
   Outputs out;
   post_options_summary_if_due(now_s, out);
   for (VehicleId id : by_name_) sense(id, now_s, out);
   release_classifications(now_s, out);
+  post_field_visuals_batch(out);
   return out;
 }
 
 void Engine::notify(const VehicleState& v, ObjectId id, std::uint32_t pass, DiePurpose purpose,
                     bool outcome) const {
-  if (observer_) observer_(Decision{v.name, field_.object(id).label, pass, purpose, outcome});
+  if (observer_) observer_(Decision{v.name, field_.label(id), pass, purpose, outcome});
 }
 
 }  // namespace hazard

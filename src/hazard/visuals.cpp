@@ -2,6 +2,8 @@
 // polygon, and the detection and classification cue circles.
 #include "visuals.hpp"
 
+#include <algorithm>
+
 #include "hazard/engine.hpp"
 #include "hazard/messages/view_marker.hpp"
 #include "hazard/messages/view_polygon.hpp"
@@ -68,38 +70,48 @@ ViewCircle classification_circle(const HazardObject& o, double now_s, ObjectType
   return c;
 }
 
-void Engine::handle_viewer_connect(Outputs& out) const {
-  if (effects_.hazard_markers) post_object_visuals(out);
+void Engine::handle_viewer_connect(Outputs& out) { restart_field_visuals(out); }
+
+void Engine::restart_field_visuals(Outputs& out) {
+  if (!effects_.hazard_markers) return;
+  visuals_cursor_ = 0;
+  post_field_visuals_batch(out);
 }
 
-void Engine::post_object_visuals(Outputs& out) const {
-  for (const HazardObject& o : field_.objects()) {
-    const bool hazard = o.is_hazard();
-    ViewMarker m;
-    m.x_m = o.x_m;
-    m.y_m = o.y_m;
-    m.width_m = o.marker_width_m.value_or(hazard ? config_.hazard_marker_width_m
-                                                 : config_.benign_marker_width_m);
-    m.primary_color = o.color.value_or(hazard ? config_.hazard_color : config_.benign_color);
-    m.shape = o.shape.value_or(hazard ? config_.hazard_shape : config_.benign_shape);
-    m.label = o.label;
-    if (!hazard) m.fill_transparency = 1.0 - o.resemblance.value_or(kMarkerFillWithoutHr);
-    out.post("VIEW_MARKER", format_view_marker(m));
-    if (!o.aspect_deg) continue;
-    // The aspect axis (spec 5.4; rulings "Visuals": every aspect, 0 included).
-    const double length_m =
-        (o.aspect_min_deg && o.aspect_max_deg)
-            ? kSeglistBaseLength_m + kSeglistWindowLength_m *
-                                         ((*o.aspect_min_deg + *o.aspect_max_deg) / 2.0) /
-                                         kQuarterTurnDeg
-            : kSeglistPartialLength_m;
-    const glm::dvec2 at{o.x_m, o.y_m};
-    ViewSeglist s;
-    s.points = {project(at, *o.aspect_deg, length_m), project(at, *o.aspect_deg + 180.0, length_m)};
-    s.edge_color = "gray70";
-    s.edge_size = 1.0;
-    out.post("VIEW_SEGLIST", format_view_seglist(s));
+void Engine::post_field_visuals_batch(Outputs& out) {
+  const std::size_t end = std::min(field_.size(), visuals_cursor_ + kFieldVisualsPerIteration);
+  for (; visuals_cursor_ < end; ++visuals_cursor_) {
+    post_object_visuals(static_cast<ObjectId>(visuals_cursor_), out);
   }
+}
+
+void Engine::post_object_visuals(ObjectId id, Outputs& out) const {
+  const HazardObject o = field_.object(id);
+  const bool hazard = o.is_hazard();
+  ViewMarker m;
+  m.x_m = o.x_m;
+  m.y_m = o.y_m;
+  m.width_m = o.marker_width_m.value_or(hazard ? config_.hazard_marker_width_m
+                                               : config_.benign_marker_width_m);
+  m.primary_color = o.color.value_or(hazard ? config_.hazard_color : config_.benign_color);
+  m.shape = o.shape.value_or(hazard ? config_.hazard_shape : config_.benign_shape);
+  m.label = o.label;
+  if (!hazard) m.fill_transparency = 1.0 - o.resemblance.value_or(kMarkerFillWithoutHr);
+  out.post("VIEW_MARKER", format_view_marker(m));
+  if (!o.aspect_deg) return;
+  // The aspect axis (spec 5.4; rulings "Visuals": every aspect, 0 included).
+  const double length_m =
+      (o.aspect_min_deg && o.aspect_max_deg)
+          ? kSeglistBaseLength_m + kSeglistWindowLength_m *
+                                       ((*o.aspect_min_deg + *o.aspect_max_deg) / 2.0) /
+                                       kQuarterTurnDeg
+          : kSeglistPartialLength_m;
+  const glm::dvec2 at{o.x_m, o.y_m};
+  ViewSeglist s;
+  s.points = {project(at, *o.aspect_deg, length_m), project(at, *o.aspect_deg + 180.0, length_m)};
+  s.edge_color = "gray70";
+  s.edge_size = 1.0;
+  out.post("VIEW_SEGLIST", format_view_seglist(s));
 }
 
 void Engine::post_swath(const VehicleState& v, const Swath& swath, bool on, Outputs& out) const {

@@ -149,7 +149,7 @@ Outputs HazardMetric::start(double now_s) {
   if (region_) {
     std::vector<glm::dvec2> hazards;
     for (hazard::ObjectId id = 0; id < truth_.size(); ++id)
-      if (truth_.object(id).is_hazard()) hazards.push_back(truth_.position(id));
+      if (truth_.is_hazard(id)) hazards.push_back(truth_.position(id));
     lane_ = min_hazard_lane(*region_, hazards, kTransitPathWidth_m);
     hazard::ViewPolygon poly;
     poly.points = region_->vertices();
@@ -195,7 +195,8 @@ HazardsetEval HazardMetric::evaluate(const HazardsetReport& report, double now_s
   std::unordered_set<std::string_view> reported_labels;
   for (const ReportedObject& r : report.objects)
     if (r.label) reported_labels.insert(*r.label);
-  for (const hazard::HazardObject& truth : truth_.objects()) {
+  for (hazard::ObjectId id = 0; id < truth_.size(); ++id) {
+    const hazard::HazardObject truth = truth_.object(id);
     ObjectEval o{truth.label, hazard::type_name(truth.type), reported_labels.count(truth.label) > 0,
                  std::nullopt};
     if (o.reported && truth.is_hazard()) {

@@ -169,3 +169,67 @@ TEST(SpatialGrid, DegenerateFieldsWork) {
 
 }  // namespace
 }  // namespace hazard
+
+namespace hazard {
+namespace {
+
+// The compact tables give back every field of every object as it was added (issue 14).
+TEST(HazardField, TablesGiveBackEachObjectAsAdded) {
+  HazardField field;
+  std::vector<HazardObject> added(3);
+  added[0].label = "plain";
+  added[0].x_m = -3.5;
+  added[1].label = "styled";
+  added[1].type = ObjectType::kHazard;
+  added[1].color = "a_colour_name_longer_than_fifteen";
+  added[1].shape = "circle";
+  added[1].marker_width_m = 4.0;
+  added[1].source = "survey";
+  added[2].label = "aspect";
+  added[2].y_m = 7.25;
+  added[2].resemblance = 0.0;
+  added[2].aspect_deg = 30.0;
+  added[2].aspect_min_deg = 10.0;
+  for (const HazardObject& o : added) ASSERT_TRUE(field.add(o));
+  field.build_index();
+  for (ObjectId id = 0; id < field.size(); ++id) {
+    const HazardObject o = field.object(id);
+    const HazardObject& a = added[id];
+    EXPECT_EQ(o.label, a.label);
+    EXPECT_EQ(field.label(id), a.label);
+    EXPECT_EQ(o.x_m, a.x_m);
+    EXPECT_EQ(o.y_m, a.y_m);
+    EXPECT_EQ(o.type, a.type);
+    EXPECT_EQ(o.resemblance, a.resemblance);
+    EXPECT_EQ(o.aspect_deg, a.aspect_deg);
+    EXPECT_EQ(o.aspect_min_deg, a.aspect_min_deg);
+    EXPECT_EQ(o.aspect_max_deg, a.aspect_max_deg);
+    EXPECT_EQ(o.color, a.color);
+    EXPECT_EQ(o.shape, a.shape);
+    EXPECT_EQ(o.marker_width_m, a.marker_width_m);
+    EXPECT_EQ(o.source, a.source);
+    EXPECT_EQ(field.has_aspect_triple(id), a.has_aspect_triple());
+    EXPECT_EQ(field.find(a.label), id);
+  }
+  EXPECT_EQ(field.hazard_count(), 1);
+}
+
+// The label lookup stays exact while it grows past many rehashes.
+TEST(HazardField, LabelLookupSurvivesGrowth) {
+  HazardField field;
+  for (int i = 0; i < 50000; ++i) {
+    HazardObject o;
+    o.label = "n" + std::to_string(i);
+    ASSERT_TRUE(field.add(o));
+  }
+  for (int i = 0; i < 50000; i += 97) EXPECT_EQ(field.find("n" + std::to_string(i)), ObjectId(i));
+  EXPECT_FALSE(field.find("n50000"));
+  HazardObject dup;
+  dup.label = "n123";
+  EXPECT_FALSE(field.add(dup));
+  EXPECT_EQ(field.size(), 50000u);
+  EXPECT_GT(field.memory_bytes(), 0u);
+}
+
+}  // namespace
+}  // namespace hazard

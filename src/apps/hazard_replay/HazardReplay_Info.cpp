@@ -3,8 +3,8 @@
 namespace hazard_replay {
 
 std::string usage_line() {
-  return "Usage: hazard_replay CONFIG.moos INPUT.alog [--alias=NAME] [--seed=N] [--until=T] "
-         "[--output=OUT.alog]";
+  return "Usage: hazard_replay CONFIG.moos INPUT.alog [--alias=NAME] [--seed=N | --seeds=A..B] "
+         "[--until=T] [--output=OUT.alog]";
 }
 
 std::string help_text() {
@@ -23,6 +23,8 @@ std::string help_text() {
          "  --alias=NAME       read `ProcessConfig = NAME` instead; NAME is also the source\n"
          "                     column of the output\n"
          "  --seed=N           dice seed, a whole number (beats random_seed and seed_random)\n"
+         "  --seeds=A..B       replay once per seed A to B; instead of the .alog, one JSON line\n"
+         "                     per seed: {\"seed\":S,\"detections\":D,\"classifications\":C}\n"
          "  --until=T          stop at time T (input time base) instead of the last input\n"
          "  --output=OUT.alog  write the postings to OUT.alog instead of standard output\n"
          "  --help, -h         this text\n"

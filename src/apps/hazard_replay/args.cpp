@@ -2,6 +2,8 @@
 
 #include "args.hpp"
 
+#include "base/text.hpp"
+
 namespace hazard_replay {
 
 const moos::SwitchTable& switch_table() {
@@ -10,6 +12,7 @@ const moos::SwitchTable& switch_table() {
     moos::SwitchTable t;
     t.rules = {moos::switch_rule("--alias", SwitchKind::kText, "a name"),
                moos::switch_rule("--seed", SwitchKind::kUnsigned, "a whole number in [0, 2^64)"),
+               moos::switch_rule("--seeds", SwitchKind::kText, "a range A..B of whole numbers"),
                moos::switch_rule("--until", SwitchKind::kNumber, "a finite number of seconds"),
                moos::switch_rule("--output", SwitchKind::kText, "a file name"),
                moos::help_switch_rule()};
@@ -20,6 +23,15 @@ const moos::SwitchTable& switch_table() {
     return t;
   }();
   return table;
+}
+
+std::optional<SeedRange> parse_seed_range(std::string_view text) {
+  const auto dots = text.find("..");
+  if (dots == std::string_view::npos) return std::nullopt;
+  const auto first = base::parse_unsigned(text.substr(0, dots));
+  const auto last = base::parse_unsigned(text.substr(dots + 2));
+  if (!first || !last || *last < *first || *last - *first >= kMaxSeedsPerRun) return std::nullopt;
+  return SeedRange{*first, *last};
 }
 
 ParsedArgs parse_args(const std::vector<std::string>& args) {
@@ -39,6 +51,14 @@ ParsedArgs parse_args(const std::vector<std::string>& args) {
   o.input_path = files[1];
   o.app_name = v.text("--alias").value_or(o.app_name);
   o.seed = v.whole("--seed");
+  if (const auto range = v.text("--seeds")) {
+    if (o.seed) return fail("--seed and --seeds exclude each other");
+    o.seeds = parse_seed_range(*range);
+    if (!o.seeds) {
+      return fail("--seeds needs A..B, whole numbers with A <= B and at most " +
+                  std::to_string(kMaxSeedsPerRun) + " seeds: '--seeds=" + *range + "'");
+    }
+  }
   o.until_s = v.number("--until");
   o.output_path = v.text("--output");
   return ParsedArgs{o, {}};

@@ -9,6 +9,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "moos/command_line.hpp"
@@ -23,6 +24,9 @@ struct ParsedArgs {
   std::optional<Options> options;
   std::string error;  ///< names the offending argument
 };
+
+/// `A..B` (both whole numbers, A <= B, at most kMaxSeedsPerRun seeds), or nullopt.
+std::optional<SeedRange> parse_seed_range(std::string_view text);
 
 /// Arguments after the program name.
 ParsedArgs parse_args(const std::vector<std::string>& args);

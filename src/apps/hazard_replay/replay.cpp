@@ -42,10 +42,13 @@ std::optional<Input> read_input(const std::string& path, std::ostream& err) {
       err << path << ":" << number << ": warning: " << p.error << "; line skipped\n";
     }
   }
-  std::stable_sort(input.entries.begin(), input.entries.end(),
-                   [](const moos::AlogEntry& a, const moos::AlogEntry& b) {
-                     return a.time_s < b.time_s;
-                   });
+  const auto earlier = [](const moos::AlogEntry& a, const moos::AlogEntry& b) {
+    return a.time_s < b.time_s;
+  };
+  // A logger writes in time order: sorting (moving every entry) only when it did not.
+  if (!std::is_sorted(input.entries.begin(), input.entries.end(), earlier)) {
+    std::stable_sort(input.entries.begin(), input.entries.end(), earlier);
+  }
   return input;
 }
 
@@ -104,14 +107,10 @@ int run(const Options& options, std::ostream& out, std::ostream& err) {
 
   // Hazard files are named relative to the mission file.
   // LatOrigin/LongOrigin place LAT/LON-only node reports and lat/lon hazard lines (geodesy).
-  hazard::Driver driver(app_support::make_sensor_engine(
-      block->lines, mission->directory(), app_support::mission_origin(*mission), options.seed,
-      app_support::operating_system_seed));
-  const double tick_hz = driver.engine().config().app_tick_hz;
-  const hazard::SeedChoice& seed = driver.engine().seed();
-  err << "hazard_replay: seed " << seed.seed << " (" << hazard::seed_source_name(seed.source)
-      << "), AppTick " << base::fmt(tick_hz) << " Hz\n";
-
+  hazard::Engine built = app_support::make_sensor_engine(
+      block->lines, mission->directory(), app_support::mission_origin(*mission),
+      options.seeds ? options.seeds->first : options.seed, app_support::operating_system_seed);
+  const double tick_hz = built.config().app_tick_hz;
   const auto& mail = input->entries;
   const double start_s = mail.empty() ? 0.0 : mail.front().time_s;
   const double end_s = options.until_s.value_or(mail.empty() ? start_s : mail.back().time_s);
@@ -121,30 +120,53 @@ int run(const Options& options, std::ostream& out, std::ostream& err) {
         << " is refused (check --until and AppTick)\n";
     return 1;
   }
+  const Timeline timeline{&mail, start_s, end_s, tick_hz};
+  if (options.seeds) {
+    err << "hazard_replay: seeds " << options.seeds->first << ".." << options.seeds->last
+        << ", AppTick " << base::fmt(tick_hz) << " Hz\n";
+    for (std::uint64_t seed = options.seeds->first;; ++seed) {
+      hazard::Driver seeded(built.with_seed({seed, hazard::SeedSource::kCommandLine}));
+      out << seed_summary_json(seed, count_reports(seeded, timeline)) << "\n";
+      if (seed == options.seeds->last) break;
+    }
+    out.flush();
+    return 0;
+  }
+
+  hazard::Driver driver(std::move(built));
+  const hazard::SeedChoice& seed = driver.engine().seed();
+  err << "hazard_replay: seed " << seed.seed << " (" << hazard::seed_source_name(seed.source)
+      << "), AppTick " << base::fmt(tick_hz) << " Hz\n";
   out << moos::alog_header(fs::path(options.input_path).filename().string(), input->logstart_s);
-  Writer writer(out, err, options.app_name);
   if (mail.empty()) {
     err << "hazard_replay: '" << options.input_path << "' holds no input lines\n";
     return 0;
   }
-  writer.write(driver.start(start_s));
+  Writer writer(out, err, options.app_name);
+  replay(driver, timeline, [&](const hazard::TimedOutputs& t) { writer.write(t); });
+  out.flush();
+  return 0;
+}
 
+void replay(hazard::Driver& driver, const Timeline& timeline,
+            const std::function<void(const hazard::TimedOutputs&)>& sink) {
+  const std::vector<moos::AlogEntry>& mail = *timeline.mail;
+  if (mail.empty()) return;
+  sink(driver.start(timeline.start_s));
   std::size_t next = 0;
   auto deliver_until = [&](double t) {
     for (; next < mail.size() && mail[next].time_s <= t; ++next) {
       const moos::AlogEntry& m = mail[next];
-      writer.write(driver.deliver(hazard::Mail{m.variable, m.value, m.time_s}));
+      sink(driver.deliver(hazard::Mail{m.variable, m.value, m.time_s}));
     }
   };
   for (long k = 0;; ++k) {
-    const double now_s = start_s + static_cast<double>(k) / tick_hz;
-    if (now_s > end_s) break;
+    const double now_s = timeline.start_s + static_cast<double>(k) / timeline.tick_hz;
+    if (now_s > timeline.end_s) break;
     deliver_until(now_s);
-    writer.write(driver.step(now_s));
+    sink(driver.step(now_s));
   }
-  deliver_until(end_s);
-  out.flush();
-  return 0;
+  deliver_until(timeline.end_s);
 }
 
 }  // namespace hazard_replay

@@ -2,6 +2,9 @@
 // hazard_replay: the options and the replay loop (the command line: args.hpp) (issue 2; rulings "hazard_replay
 // output", "Release timing", "Seeds").
 //
+// With --seeds=A..B the same replay runs once per seed and, instead of the .alog, writes one
+// JSON line per seed: {"seed":S,"detections":D,"classifications":C} (no metric score).
+//
 // Contract: the loop delivers each input line at its time through hazard::Driver::deliver, the
 // same entry point the app uses, and runs Driver::step at t0 + k / AppTick (k = 0, 1, ...) while
 // that time is at or before the end (the last input, or --until); mail stamped at or before an
@@ -15,24 +18,64 @@
 // --seed, random_seed nor seed_random = false fixes one.
 
 #include <cstdint>
+#include <functional>
 #include <iosfwd>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "hazard/driver.hpp"
+#include "moos/alog.hpp"
+
 namespace hazard_replay {
 
 inline constexpr const char* kDefaultAppName = "uFldHazardSensor";
+
+/// Seeds first..last, both included.
+struct SeedRange {
+  std::uint64_t first = 0;
+  std::uint64_t last = 0;
+};
+/// Bound on one --seeds run (a mistyped range must not run for days).
+inline constexpr std::uint64_t kMaxSeedsPerRun = 1000000;
 
 struct Options {
   std::string config_path;
   std::string input_path;
   std::string app_name = kDefaultAppName;
   std::optional<std::uint64_t> seed;
+  /// --seeds=A..B: one replay per seed, one JSON line each instead of the .alog (seeds.cpp).
+  std::optional<SeedRange> seeds;
   std::optional<double> until_s;
   std::optional<std::string> output_path;
   bool help = false;
 };
+
+/// The input mail in time order and the iteration times: t0 + k / tick_hz up to end_s.
+struct Timeline {
+  const std::vector<moos::AlogEntry>* mail = nullptr;
+  double start_s = 0.0;
+  double end_s = 0.0;
+  double tick_hz = 4.0;
+};
+
+/// The replay loop (contract above): start, then mail and iterations in time order; every
+/// call's outputs go to `sink`. Nothing when there is no mail.
+void replay(hazard::Driver& driver, const Timeline& timeline,
+            const std::function<void(const hazard::TimedOutputs&)>& sink);
+
+/// What one seed's replay produced (--seeds): detection and classification reports, counted
+/// once each (the un-suffixed UHZ_DETECTION_REPORT and UHZ_HAZARD_REPORT postings).
+struct SeedCounts {
+  std::uint64_t detections = 0;
+  std::uint64_t classifications = 0;
+};
+
+/// Replays `timeline` through `driver`, counting its reports (seeds.cpp).
+SeedCounts count_reports(hazard::Driver& driver, const Timeline& timeline);
+
+/// One JSON line, `{"seed":S,"detections":D,"classifications":C}` (no newline).
+std::string seed_summary_json(std::uint64_t seed, const SeedCounts& counts);
 
 /// Runs the replay; writes the .alog to `out` and diagnostics to `err`. Returns the exit code
 /// (0 done, 1 a file or block problem).

@@ -80,3 +80,26 @@ TEST(ReplayArgs, TheDocsSwitchTableIsTheSwitchTable) {
 
 }  // namespace
 }  // namespace hazard_replay
+
+namespace hazard_replay {
+namespace {
+
+TEST(ReplayArgs, SeedsTakeARange) {
+  const ParsedArgs p = parse_args({"m.moos", "in.alog", "--seeds=3..7"});
+  ASSERT_TRUE(p.options) << p.error;
+  ASSERT_TRUE(p.options->seeds);
+  EXPECT_EQ(p.options->seeds->first, 3u);
+  EXPECT_EQ(p.options->seeds->last, 7u);
+  EXPECT_TRUE(parse_args({"m.moos", "in.alog", "--seeds=5..5"}).options);
+  for (const char* bad : {"--seeds=7..3", "--seeds=3", "--seeds=a..b", "--seeds=1..",
+                          "--seeds=0..1000000", "--seeds=-1..2"}) {
+    const ParsedArgs q = parse_args({"m.moos", "in.alog", bad});
+    EXPECT_FALSE(q.options) << bad;
+    EXPECT_NE(q.error.find(std::string("'") + bad + "'"), std::string::npos) << q.error;
+  }
+  const ParsedArgs both = parse_args({"m.moos", "in.alog", "--seed=1", "--seeds=1..2"});
+  EXPECT_EQ(both.error, "--seed and --seeds exclude each other");
+}
+
+}  // namespace
+}  // namespace hazard_replay

@@ -1,0 +1,33 @@
+// hazard_replay --seeds: one replay per seed, summarised as a JSON line (contract in replay.hpp).
+#include <string>
+
+#include "replay.hpp"
+
+namespace hazard_replay {
+
+namespace {
+
+constexpr const char* kDetectionReport = "UHZ_DETECTION_REPORT";
+constexpr const char* kHazardReport = "UHZ_HAZARD_REPORT";
+
+}  // namespace
+
+SeedCounts count_reports(hazard::Driver& driver, const Timeline& timeline) {
+  SeedCounts counts;
+  replay(driver, timeline, [&](const hazard::TimedOutputs& t) {
+    for (const hazard::Posting& p : t.outputs.postings) {
+      // Each report is posted twice, once per vehicle variable: count the shared one.
+      if (p.variable == kDetectionReport) ++counts.detections;
+      if (p.variable == kHazardReport) ++counts.classifications;
+    }
+  });
+  return counts;
+}
+
+std::string seed_summary_json(std::uint64_t seed, const SeedCounts& counts) {
+  return "{\"seed\":" + std::to_string(seed) + ",\"detections\":" +
+         std::to_string(counts.detections) + ",\"classifications\":" +
+         std::to_string(counts.classifications) + "}";
+}
+
+}  // namespace hazard_replay
