@@ -49,13 +49,9 @@ bool HazardSensor::on_start_up() {
 
 void HazardSensor::on_connect_to_server() {
   if (!driver_ || comms().connection_count() == start_up_connection_) return;
-  publish(field_visuals(cycle_time()));
-}
-
-hazard::TimedOutputs HazardSensor::field_visuals(double now_s) {
-  // The engine's one request for the field's visuals is the viewer's PMV_CONNECT (driver.hpp);
-  // a new database is, for these visuals, a viewer that has seen nothing.
-  return driver_->deliver(hazard::Mail{"PMV_CONNECT", "", now_s}, now_s);
+  // A new database is, for the field's visuals, a viewer that has seen nothing: they go out
+  // again, in the engine's bounded batches (driver.hpp).
+  publish(driver_->restart_field_visuals(cycle_time()));
 }
 
 void HazardSensor::on_new_mail(const std::vector<moos::Message>& mail) {

@@ -80,8 +80,6 @@ class HazardSensor final : public moos::MoosApp {
 
  private:
   void publish(const hazard::TimedOutputs& out);
-  /// The visuals that describe the field, as the engine posts them for a viewer that connects.
-  hazard::TimedOutputs field_visuals(double now_s);
   void write_verbose(double now_s, const std::string& variable, const std::string& value) const;
 
   HazardSensorOptions options_;
