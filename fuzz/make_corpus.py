@@ -34,6 +34,9 @@ def seed_hazard_parsers():
     write("hazard_file", "latlon", "// geodesy\nsource = gen_hazards\n"
           "hazard = lat=43.8253,lon=-70.3304,label=a,type=hazard\n"
           "hazard = x=1,y=2,label=b,hazard=false\nbogus line\n")
+    # Issue 12: the field wider than the largest double (aborted uFldHazardSensor at start-up).
+    write("hazard_file", "far_apart", "hazard = x=9e307,y=0,label=a,type=hazard\n"
+          "hazard = x=-9e307,y=0,label=b,type=benign\n")
     write("node_report", "example", "NAME=archie,X=10,Y=-5,LAT=43.8,LON=-70.3,SPD=1.5,HDG=90,"
           "TIME=123,TYPE=kayak")
     write("node_report", "latlon", "NAME=betty,LAT=43.82,LON=-70.33,SPEED=2,HEADING=1e15,"

@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -37,15 +38,31 @@ ProcessConfig = uFldHazardSensor
 }
 )";
 
-/// A scratch folder holding the mission; created once per fuzzing process.
-const std::string& scratch_dir() {
-  static const std::string dir = [] {
+/// A scratch folder holding the mission, created once per fuzzing process and removed when it
+/// exits.
+class ScratchDir {
+ public:
+  ScratchDir() {
     char pattern[] = "/tmp/hazard-fuzz-replay-XXXXXX";
     if (mkdtemp(pattern) == nullptr) std::abort();
-    std::ofstream(std::string(pattern) + "/mission.moos") << kMission;
-    return std::string(pattern);
-  }();
-  return dir;
+    path_ = pattern;
+    std::ofstream(path_ + "/mission.moos") << kMission;
+  }
+  ~ScratchDir() {
+    std::error_code ignored;
+    std::filesystem::remove_all(path_, ignored);
+  }
+  ScratchDir(const ScratchDir&) = delete;
+  ScratchDir& operator=(const ScratchDir&) = delete;
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+};
+
+const std::string& scratch_dir() {
+  static const ScratchDir dir;
+  return dir.path();
 }
 
 }  // namespace
