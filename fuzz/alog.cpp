@@ -15,8 +15,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     std::string again = moos::format_alog_line(parsed.entry);
     if (!again.empty() && again.back() == '\n') again.pop_back();
     const moos::AlogParse reread = moos::parse_alog_line(again);
-    if (reread.kind != moos::AlogLineKind::kEntry || reread.entry.variable != parsed.entry.variable ||
-        reread.entry.source != parsed.entry.source)
+    const bool same = reread.kind == moos::AlogLineKind::kEntry &&
+                      reread.entry.variable == parsed.entry.variable &&
+                      reread.entry.source == parsed.entry.source;
+    if (!same)
       std::abort();
   }
   return 0;

@@ -4,7 +4,7 @@
 #include "hazard/messages/config_request.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  const auto parsed = hazard::parse_config_request(fuzz::as_text(data, size));
-  if (parsed.value) (void)hazard::parse_config_request(hazard::format_config_request(*parsed.value));
+  fuzz::parse_and_reread(fuzz::as_text(data, size), hazard::parse_config_request,
+                         hazard::format_config_request);
   return 0;
 }

@@ -26,4 +26,12 @@ inline std::vector<std::string_view> lines_of(std::string_view text) {
   return lines;
 }
 
+/// Parses `text`; when accepted, formats the value and parses that too (what we write must read
+/// back without a crash). Works for every parser returning hazard::Parsed<T>.
+template <class Parse, class Format>
+void parse_and_reread(std::string_view text, Parse parse, Format format) {
+  const auto parsed = parse(text);
+  if (parsed.value) (void)parse(format(*parsed.value));
+}
+
 }  // namespace fuzz

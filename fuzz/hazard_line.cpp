@@ -2,16 +2,10 @@
 // placement for lat/lon-only lines, and the formatted line of every accepted object read back.
 
 #include "fuzz_input.hpp"
-#include "hazard/geodesy.hpp"
+#include "geo_placement.hpp"
 #include "hazard/messages/hazard_line.hpp"
 
 namespace {
-
-const hazard::GeoPlacement& placement() {
-  static const hazard::GeoPlacement p{
-      hazard::LocalProjection({43.825300, -70.330400}, hazard::GeodesyMode::kTangent), ""};
-  return p;
-}
 
 void parse_and_reread(std::string_view spec, const hazard::GeoPlacement* where) {
   const hazard::HazardLineParse parsed = hazard::parse_hazard_line(spec, where);
@@ -26,6 +20,6 @@ void parse_and_reread(std::string_view spec, const hazard::GeoPlacement* where) 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view spec = fuzz::as_text(data, size);
   parse_and_reread(spec, nullptr);
-  parse_and_reread(spec, &placement());
+  parse_and_reread(spec, &fuzz::jake_placement(hazard::GeodesyMode::kTangent));
   return 0;
 }

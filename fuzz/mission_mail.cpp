@@ -9,20 +9,11 @@
 #include "mission/messages/hazardset_report.hpp"
 #include "mission/messages/mission_params.hpp"
 
-namespace {
-
-template <class Parse, class Format>
-void parse_and_reread(std::string_view text, Parse parse, Format format) {
-  const auto parsed = parse(text);
-  if (parsed.value) (void)parse(format(*parsed.value));
-}
-
-}  // namespace
-
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size == 0) return 0;
   const std::string_view text = fuzz::as_text(data + 1, size - 1);
   using namespace mission;
+  using fuzz::parse_and_reread;
   switch (data[0] % 6) {
     case 0: parse_and_reread(text, parse_handover, format_handover); break;
     case 1:

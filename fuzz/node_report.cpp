@@ -2,16 +2,10 @@
 // reports; an accepted report is formatted and read back.
 
 #include "fuzz_input.hpp"
-#include "hazard/geodesy.hpp"
+#include "geo_placement.hpp"
 #include "hazard/messages/node_report.hpp"
 
 namespace {
-
-const hazard::GeoPlacement& placement() {
-  static const hazard::GeoPlacement p{
-      hazard::LocalProjection({43.825300, -70.330400}, hazard::GeodesyMode::kUtm), ""};
-  return p;
-}
 
 void parse_and_reread(std::string_view text, const hazard::GeoPlacement* where) {
   const auto parsed = hazard::parse_node_report(text, where);
@@ -23,6 +17,6 @@ void parse_and_reread(std::string_view text, const hazard::GeoPlacement* where) 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text = fuzz::as_text(data, size);
   parse_and_reread(text, nullptr);
-  parse_and_reread(text, &placement());
+  parse_and_reread(text, &fuzz::jake_placement(hazard::GeodesyMode::kUtm));
   return 0;
 }

@@ -4,7 +4,7 @@
 #include "hazard/messages/sensor_clear.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  const auto parsed = hazard::parse_sensor_clear(fuzz::as_text(data, size));
-  if (parsed.value) (void)hazard::parse_sensor_clear(hazard::format_sensor_clear(*parsed.value));
+  fuzz::parse_and_reread(fuzz::as_text(data, size), hazard::parse_sensor_clear,
+                         hazard::format_sensor_clear);
   return 0;
 }

@@ -13,20 +13,11 @@
 #include "hazard/messages/view_polygon.hpp"
 #include "hazard/messages/view_seglist.hpp"
 
-namespace {
-
-template <class Parse, class Format>
-void parse_and_reread(std::string_view text, Parse parse, Format format) {
-  const auto parsed = parse(text);
-  if (parsed.value) (void)parse(format(*parsed.value));
-}
-
-}  // namespace
-
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size == 0) return 0;
   const std::string_view text = fuzz::as_text(data + 1, size - 1);
   using namespace hazard;
+  using fuzz::parse_and_reread;
   switch (data[0] % 8) {
     case 0: parse_and_reread(text, parse_config_ack, format_config_ack); break;
     case 1: parse_and_reread(text, parse_detection_report, format_detection_report); break;
