@@ -283,7 +283,7 @@ TEST(Handover, BadHeaderIsAnErrorAndBadObjectsAreSkippedWithAWarning) {
 // Issue 12 (found by fuzz/mission_mail): an empty header part has no key=value pair at all; it
 // used to throw std::out_of_range out of the parser (and terminate pHazardMgr).
 TEST(Handover, EmptyHeaderPartsAreErrorsNotExceptions) {
-  EXPECT_EQ(parse_handover("##").error, "HAZARD_HANDOVER needs source, dest and prior parts");
+  EXPECT_EQ(parse_handover("##").error, "HAZARD_HANDOVER first part '' is not source=<vehicle>");
   EXPECT_EQ(parse_handover("#dest=b#prior=0.5").error,
             "HAZARD_HANDOVER first part '' is not source=<vehicle>");
   EXPECT_EQ(parse_handover("source=a##prior=0.5").error,
