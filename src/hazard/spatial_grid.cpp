@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace hazard {
 
@@ -39,12 +40,13 @@ SpatialGrid::SpatialGrid(const std::vector<glm::dvec2>& positions) {
   }
   // The field is measured in half-extents: two finite coordinates of opposite sign (x = 9e307
   // and -9e307) span more than the largest double, and an infinite extent would make the cell
-  // size infinite and the cell counts NaN. Every quantity below stays finite.
+  // size infinite and the cell counts NaN. The cell size and the counts stay finite.
   const double half_w = max_x_ / 2 - min_x_ / 2, half_h = max_y_ / 2 - min_y_ / 2;
   const double by_density = 2 * std::sqrt(half_w) * std::sqrt(half_h) *
                             std::sqrt(kTargetObjectsPerCell / static_cast<double>(n));
   const double by_axis_limit = std::max(half_w, half_h) / kMaxCellsPerAxis * 2;
-  cell_m_ = std::max(by_density, by_axis_limit);
+  // The density rule can still overflow for such a field: the largest double is cell enough.
+  cell_m_ = std::min(std::max(by_density, by_axis_limit), std::numeric_limits<double>::max());
   if (!(cell_m_ > 0)) cell_m_ = 1.0;  // every object at one point
   nx_ = cells_along(half_w, cell_m_);
   ny_ = cells_along(half_h, cell_m_);
