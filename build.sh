@@ -4,7 +4,12 @@
 #   ./build.sh demo [WARP] [--seed=N] [--moosdb=lite|real]
 #                       install dependencies, build the programs, run the Jake mission headless;
 #                       ends with the score table and the picture's path (missions/jake/launch.sh)
-#   ./build.sh test     install dependencies, build (warnings as errors), run every test
+#   ./build.sh test     install dependencies, then every test phase CI runs, in order (each
+#                       builds its own preset): release (the suite, warnings as errors),
+#                       sanitize (the whole suite again under ASan + UBSan, halting), fuzz (each
+#                       fuzz target for HAZARD_FUZZ_SECONDS seconds on its seed corpus, default 20)
+#                       HAZARD_TEST_PHASES="release sanitize" runs only the phases named
+#   ./build.sh test-release | test-sanitize | test-fuzz   one phase
 #   ./build.sh build    install dependencies and build only
 #   ./build.sh deps     install dependencies only
 #   ./build.sh packages print the Debian packages it needs, one a line (for .ci/run)
@@ -28,6 +33,7 @@ DEBIAN_PACKAGES=(
   python3 python3-venv
   librsvg2-bin
   libcpp-httplib-dev chromium
+  clang libclang-rt-14-dev
 )
 # playwright drives Debian's chromium in pWebViewer's browser tests (no browser download).
 PYPI_PACKAGES=(pymoos2==0.1.0 playwright==1.65.2)
@@ -97,12 +103,78 @@ run_tests() {
   ctest --preset "$PRESET" -j "$JOBS"
 }
 
+# The test phases of `./build.sh test` (docs/robustness.md, "Sanitizer CI"). Each selects its
+# own preset and build folder, so a phase never reuses another's objects.
+TEST_PHASES_ALL=(release sanitize fuzz)
+FUZZ_SECONDS="${HAZARD_FUZZ_SECONDS:-20}"
+
+use_preset() {
+  PRESET="$1"
+  BUILD_DIR="$HERE/build/$PRESET"
+}
+
+test_phase_release() {
+  use_preset release
+  configure_and_build
+  run_tests
+}
+
+test_phase_sanitize() {
+  use_preset sanitize
+  configure_and_build
+  run_tests
+}
+
+# Runs every fuzz target for FUZZ_SECONDS on its seed corpus (fuzz/corpus/<target>); inputs the
+# run finds go to build/fuzz/corpus/<target>, a crashing input to build/fuzz/artifacts/. Any
+# crash, leak, sanitizer report or input slower than 10 s fails the phase.
+test_phase_fuzz() {
+  use_preset fuzz
+  configure_and_build
+  local artifacts="$BUILD_DIR/artifacts" failed=() program target
+  mkdir -p "$artifacts"
+  for program in "$BUILD_DIR"/fuzz/fuzz_*; do
+    target="${program##*/fuzz_}"
+    mkdir -p "$BUILD_DIR/corpus/$target"
+    say "fuzzing $target for ${FUZZ_SECONDS}s"
+    if ! "$program" -max_total_time="$FUZZ_SECONDS" -timeout=10 -rss_limit_mb=2048 \
+          -print_final_stats=1 -artifact_prefix="$artifacts/$target-" \
+          "$BUILD_DIR/corpus/$target" "$HERE/fuzz/corpus/$target" \
+          >"$BUILD_DIR/$target.log" 2>&1; then
+      say "fuzz target $target failed (log: $BUILD_DIR/$target.log)"
+      tail -n 40 "$BUILD_DIR/$target.log" >&2
+      failed+=("$target")
+    fi
+  done
+  if [ "${#failed[@]}" -gt 0 ]; then
+    say "fuzz targets with findings: ${failed[*]} (inputs in $artifacts)"
+    return 1
+  fi
+}
+
+run_test_phases() {
+  local phases phase
+  read -r -a phases <<<"${HAZARD_TEST_PHASES:-${TEST_PHASES_ALL[*]}}"
+  for phase in "${phases[@]}"; do
+    case "$phase" in
+      release|sanitize|fuzz) ;;
+      *) say "unknown test phase '$phase' (phases: ${TEST_PHASES_ALL[*]})"; return 2 ;;
+    esac
+  done
+  for phase in "${phases[@]}"; do
+    say "test phase: $phase"
+    "test_phase_$phase"
+  done
+}
+
 case "${1:-build}" in
   demo)  shift; run_demo "$@" ;;
   deps)  install_dependencies ;;
   packages) printf '%s\n' "${DEBIAN_PACKAGES[@]}" ;;
   build) install_dependencies; configure_and_build ;;
-  test)  install_dependencies; configure_and_build; run_tests ;;
-  -h|--help|help) sed -n '2,12p' "$0" ;;
-  *) say "unknown job '$1' (try: demo, test, build, deps, packages)"; exit 2 ;;
+  test)  install_dependencies; run_test_phases ;;
+  test-release|test-sanitize|test-fuzz)
+         install_dependencies; HAZARD_TEST_PHASES="${1#test-}" run_test_phases ;;
+  -h|--help|help) sed -n '2,17p' "$0" ;;
+  *) say "unknown job '$1' (try: demo, test, test-release, test-sanitize, test-fuzz, build, deps, packages)"; exit 2 ;;
 esac

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace hazard {
 
@@ -12,6 +13,13 @@ int clamp_cell(double offset_m, double cell_m, int cells) {
   if (!(c >= 0)) return 0;  // also catches NaN
   if (c >= cells - 1) return cells - 1;
   return static_cast<int>(c);
+}
+
+/// Cells along an axis of half-extent `half_m`: at least 1, at most kMaxCellsPerAxis.
+/// `cell_m` > 0 is at least the axis length / kMaxCellsPerAxis, so the ratio is finite.
+int cells_along(double half_m, double cell_m) {
+  const double cells = std::floor(half_m / cell_m * 2) + 1;
+  return static_cast<int>(std::min<double>(cells, SpatialGrid::kMaxCellsPerAxis));
 }
 
 }  // namespace
@@ -30,13 +38,18 @@ SpatialGrid::SpatialGrid(const std::vector<glm::dvec2>& positions) {
     min_y_ = std::min(min_y_, p.y);
     max_y_ = std::max(max_y_, p.y);
   }
-  const double w = max_x_ - min_x_, h = max_y_ - min_y_;
-  const double by_density = std::sqrt(w * h * kTargetObjectsPerCell / static_cast<double>(n));
-  const double by_axis_limit = std::max(w, h) / kMaxCellsPerAxis;
-  cell_m_ = std::max(by_density, by_axis_limit);
+  // The field is measured in half-extents: two finite coordinates of opposite sign (x = 9e307
+  // and -9e307) span more than the largest double, and an infinite extent would make the cell
+  // size infinite and the cell counts NaN. The cell size and the counts stay finite.
+  const double half_w = max_x_ / 2 - min_x_ / 2, half_h = max_y_ / 2 - min_y_ / 2;
+  const double by_density = 2 * std::sqrt(half_w) * std::sqrt(half_h) *
+                            std::sqrt(kTargetObjectsPerCell / static_cast<double>(n));
+  const double by_axis_limit = std::max(half_w, half_h) / kMaxCellsPerAxis * 2;
+  // The density rule can still overflow for such a field: the largest double is cell enough.
+  cell_m_ = std::min(std::max(by_density, by_axis_limit), std::numeric_limits<double>::max());
   if (!(cell_m_ > 0)) cell_m_ = 1.0;  // every object at one point
-  nx_ = static_cast<int>(std::min<double>(std::floor(w / cell_m_) + 1, kMaxCellsPerAxis));
-  ny_ = static_cast<int>(std::min<double>(std::floor(h / cell_m_) + 1, kMaxCellsPerAxis));
+  nx_ = cells_along(half_w, cell_m_);
+  ny_ = cells_along(half_h, cell_m_);
 
   const std::size_t cells = static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_);
   std::vector<std::uint32_t> cell_of(n);

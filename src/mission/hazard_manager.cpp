@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <cstdint>
 #include <functional>
 
 #include "hazard/messages/classify_request.hpp"
@@ -33,9 +34,20 @@ namespace {
 /// instead of 16 times with 50 m cells) and cost little in sparse ones.
 constexpr double kCell_m = 10.0;
 
-std::int64_t cell_of(double v) { return static_cast<std::int64_t>(std::floor(v / kCell_m)); }
+/// Cell indices are clamped to 32 bits (positions within 2e10 m, far beyond the Earth, keep their
+/// own cells; a farther one, or NaN, shares the edge cell): the conversion to an integer stays
+/// defined whatever a detection report says, and a key holds both indices.
+constexpr double kMaxCellIndex = 2147483647.0;
+std::int64_t cell_of(double v) {
+  const double c = std::floor(v / kCell_m);
+  if (!(c > -kMaxCellIndex)) return -static_cast<std::int64_t>(kMaxCellIndex);
+  if (c > kMaxCellIndex) return static_cast<std::int64_t>(kMaxCellIndex);
+  return static_cast<std::int64_t>(c);
+}
+/// Bits shifted as unsigned: shifting a negative index is undefined behaviour.
 std::int64_t cell_key(std::int64_t cx, std::int64_t cy) {
-  return (cx << 32) ^ (cy & 0xffffffffLL);
+  return static_cast<std::int64_t>((static_cast<std::uint64_t>(cx) << 32) ^
+                                   (static_cast<std::uint64_t>(cy) & 0xffffffffULL));
 }
 
 // Calls f(cell key) for every cell of the square of half side `radius_m` around `center_m`.

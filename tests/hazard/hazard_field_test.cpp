@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 
 #include "hazard/hazard_field.hpp"
@@ -165,6 +166,39 @@ TEST(SpatialGrid, DegenerateFieldsWork) {
   EXPECT_EQ(n, 3);
   const SpatialGrid empty{std::vector<glm::dvec2>{}};
   empty.for_each_in_box(Box{0, 0, 1, 1}, [&](std::uint32_t, glm::dvec2) { ADD_FAILURE(); });
+}
+
+// Issue 12: two finite positions whose distance exceeds the largest double (the field's extent
+// overflowed to infinity, the cell counts became NaN and their cast to int aborted start-up).
+TEST(SpatialGrid, FieldWiderThanTheLargestDoubleIsIndexed) {
+  const std::vector<glm::dvec2> far{{9e307, 0}, {-9e307, 0}, {0, 9e307}, {0, -9e307}, {1, 1}};
+  const SpatialGrid grid(far);
+  EXPECT_GE(grid.cells_x(), 1);
+  EXPECT_LE(grid.cells_x(), SpatialGrid::kMaxCellsPerAxis);
+  EXPECT_GE(grid.cells_y(), 1);
+  EXPECT_LE(grid.cells_y(), SpatialGrid::kMaxCellsPerAxis);
+  EXPECT_TRUE(std::isfinite(grid.cell_size_m()));
+  for (std::uint32_t id = 0; id < far.size(); ++id) {
+    const glm::dvec2 p = far[id];
+    int hits = 0;
+    grid.for_each_in_box(Box{p.x - 1, p.y - 1, p.x + 1, p.y + 1},
+                         [&](std::uint32_t found, glm::dvec2) { hits += found == id; });
+    EXPECT_EQ(hits, 1) << "object " << id;
+  }
+}
+
+TEST(HazardFile, ObjectsAtOppositeEndsOfTheDoubleRangeLoadAndIndex) {
+  HazardField field;
+  std::vector<std::string> warnings;
+  load_hazard_file_text("hazard = x=9e307,y=0,label=a,type=hazard\n"
+                        "hazard = x=-9e307,y=0,label=b,type=benign\n",
+                        "far.txt", field, warnings);
+  ASSERT_EQ(field.size(), 2u);
+  field.build_index();
+  int found = 0;
+  field.grid().for_each_in_box(Box{-1e308, -1, 1e308, 1},
+                               [&](std::uint32_t, glm::dvec2) { ++found; });
+  EXPECT_EQ(found, 2);
 }
 
 }  // namespace

@@ -358,5 +358,22 @@ TEST(Manager, DetectionBeforeAnyAckIsCountedButNotWeighed) {
   EXPECT_EQ(m.belief("a")->own.detections, 1);
 }
 
+// Issue 12 (found under -fsanitize=undefined,float-cast-overflow): detections anywhere, even at
+// positions no grid cell index can hold, and at negative coordinates (cell indices below zero,
+// whose key was a left shift of a negative number), are indexed without undefined behaviour.
+TEST(Manager, DetectionsAtAnyPositionAreIndexedWithoutOverflow) {
+  HazardManager m(archie_config());
+  m.on_config_ack(archie_ack(), 0.0);
+  m.on_pose({-20, -30}, 0, 1.5, 1.0);
+  m.on_detection(detection("far", 1e300, -1e300), 1.1);
+  m.on_detection(detection("beyond_cells", 3e10, -3e10), 1.1);
+  m.on_detection(detection("near", -10, -30), 1.2);
+  for (const char* label : {"far", "beyond_cells", "near"}) {
+    const auto b = m.belief(label);
+    ASSERT_TRUE(b.has_value()) << label;
+    EXPECT_NEAR(b->p_hazard, 0.9 / (0.9 + 0.6561), 1e-12) << label;
+  }
+}
+
 }  // namespace
 }  // namespace mission

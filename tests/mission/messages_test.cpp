@@ -280,5 +280,17 @@ TEST(Handover, BadHeaderIsAnErrorAndBadObjectsAreSkippedWithAWarning) {
             "HAZARD_HANDOVER object 'label=3,x=1,y=1': missing field 'evidence'");
 }
 
+// Issue 12 (found by fuzz/mission_mail): an empty header part has no key=value pair at all; it
+// used to throw std::out_of_range out of the parser (and terminate pHazardMgr).
+TEST(Handover, EmptyHeaderPartsAreErrorsNotExceptions) {
+  EXPECT_EQ(parse_handover("##").error, "HAZARD_HANDOVER first part '' is not source=<vehicle>");
+  EXPECT_EQ(parse_handover("#dest=b#prior=0.5").error,
+            "HAZARD_HANDOVER first part '' is not source=<vehicle>");
+  EXPECT_EQ(parse_handover("source=a##prior=0.5").error,
+            "HAZARD_HANDOVER second part '' is not dest=<vehicle>");
+  EXPECT_EQ(parse_handover("source=a#dest=b# #label=1").error,
+            "HAZARD_HANDOVER part '' is not prior=<p> with p in (0, 1)");
+}
+
 }  // namespace
 }  // namespace mission

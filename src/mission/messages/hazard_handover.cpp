@@ -11,9 +11,13 @@ namespace {
 /// A count above this is certainly corrupt (a mission has far fewer passes).
 constexpr std::uint64_t kMaxCount = 1000000000;
 
+/// The value of `key=value` when it is the part's first pair; "" otherwise (an empty part, as
+/// in `source=a##prior=0.5`, has no pair at all).
 std::string header_value(std::string_view part, std::string_view key) {
-  const base::KeyValue kv = base::split_key_values(part).at(0);
-  return base::to_lower(kv.key) == key ? std::string(kv.value) : std::string();
+  const std::vector<base::KeyValue> pairs = base::split_key_values(part);
+  if (pairs.empty()) return {};
+  return base::to_lower(pairs.front().key) == key ? std::string(pairs.front().value)
+                                                  : std::string();
 }
 
 // Parses one object part; returns the problem ("" when fine).
