@@ -7,6 +7,8 @@
 
 #include "fuzz_input.hpp"
 #include "moos/command_line.hpp"
+#include "moos/launch.hpp"
+#include "args.hpp"
 #include "options.hpp"
 #include "replay.hpp"
 
@@ -32,9 +34,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
   const moos::CommandLine generic = moos::parse_command_line(argv);
   (void)moos::app_name_from(generic, "uFldHazardSensor");
-  (void)moos::decide_launch(generic);
-  (void)generic.has_flag("--help", {"-h"});
-  (void)generic.flag_value("--seed");
+  (void)moos::decide_launch(generic, {});
+  (void)moos::first_information_switch(generic);
 
   const moosdb_lite::CommandLine server = moosdb_lite::parse_command_line(args);
   std::vector<std::string> errors, notes;

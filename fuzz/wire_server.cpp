@@ -9,13 +9,13 @@
 
 #include <vector>
 
-#include "database.hpp"
 #include "moos/codec.hpp"
+#include "moos/database.hpp"
 
 namespace {
 
-using Db = moosdb_lite::Database;
-using ClientId = moosdb_lite::ClientId;
+using Db = moos::Database;
+using ClientId = moos::ClientId;
 
 constexpr double kStartMoosS = 1700000000.0;
 constexpr ClientId kWatcher = 1;
