@@ -187,18 +187,25 @@ TEST(SpatialGrid, FieldWiderThanTheLargestDoubleIsIndexed) {
   }
 }
 
-TEST(HazardFile, ObjectsAtOppositeEndsOfTheDoubleRangeLoadAndIndex) {
+// The issue's crash (std::length_error at start-up): objects at x = +-9e307. Such positions are
+// now refused at the line (kMaxObjectCoordinate_m), and the grid itself indexes a field wider
+// than the largest double (SpatialGrid.FieldWiderThanTheLargestDoubleIsIndexed), so neither
+// layer alone can crash.
+TEST(HazardFile, ObjectsAtOppositeEndsOfTheDoubleRangeAreRefusedWithoutACrash_Issue12) {
   HazardField field;
   std::vector<std::string> warnings;
   load_hazard_file_text("hazard = x=9e307,y=0,label=a,type=hazard\n"
-                        "hazard = x=-9e307,y=0,label=b,type=benign\n",
+                        "hazard = x=-9e307,y=0,label=b,type=benign\n"
+                        "hazard = x=10,y=0,label=c,type=hazard\n",
                         "far.txt", field, warnings);
-  ASSERT_EQ(field.size(), 2u);
+  ASSERT_EQ(field.size(), 1u);
+  EXPECT_EQ(warnings.size(), 2u);
+  for (const std::string& w : warnings) EXPECT_NE(w.find("far.txt:"), std::string::npos) << w;
   field.build_index();
   int found = 0;
   field.grid().for_each_in_box(Box{-1e308, -1, 1e308, 1},
                                [&](std::uint32_t, glm::dvec2) { ++found; });
-  EXPECT_EQ(found, 2);
+  EXPECT_EQ(found, 1);
 }
 
 }  // namespace
