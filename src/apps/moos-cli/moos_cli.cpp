@@ -7,13 +7,12 @@
 
 #include <chrono>
 #include <cmath>
-#include <condition_variable>
 #include <limits>
-#include <mutex>
 #include <ostream>
 
 #include "moos/alog.hpp"
 #include "moos/limits.hpp"
+#include "moos/mail_signal.hpp"
 #include "moos/tcp_client.hpp"
 #include "base/text.hpp"
 #include "moos/wildcard.hpp"
@@ -199,12 +198,8 @@ int run_poke(const Options& o, std::ostream& out, std::ostream& err) {
 
 int run_watch(const Options& o, std::ostream& out, std::ostream& err) {
   moos::TcpClient client(client_options(o));
-  std::mutex mutex;
-  std::condition_variable mail;
-  client.set_on_mail([&] {
-    std::lock_guard<std::mutex> lock(mutex);
-    mail.notify_all();
-  });
+  moos::MailSignal mail;
+  client.set_on_mail([&mail] { mail.notify(); });
   const auto started = std::chrono::steady_clock::now();
   if (auto code = connect(client, o, err)) return *code;
   const double start_moos_s = client.moos_time();
@@ -215,26 +210,22 @@ int run_watch(const Options& o, std::ostream& out, std::ostream& err) {
       return kExitUsage;
     }
   }
+  const auto deadline = started + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                      std::chrono::duration<double>(o.timeout_s.value_or(0.0)));
   long long received = 0;
   while (true) {
+    mail.take();  // before the fetch: mail arriving from now on ends the next wait at once
     for (const auto& m : client.fetch()) {
       out << format_watch_line(m, start_moos_s) << std::flush;
       if (o.count && ++received >= *o.count) return kExitOk;
     }
-    std::unique_lock<std::mutex> lock(mutex);
-    if (o.timeout_s) {
-      const auto deadline = started + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                          std::chrono::duration<double>(*o.timeout_s));
-      if (std::chrono::steady_clock::now() >= deadline) {
-        if (!o.count) return kExitOk;
-        err << "moos-cli: timed out after " << *o.timeout_s << " s with " << received << " of "
-            << *o.count << " messages\n";
-        return kExitWatchTimeout;
-      }
-      mail.wait_until(lock, deadline);
-    } else {
-      mail.wait_for(lock, std::chrono::milliseconds(100));
-    }
+    // Without --timeout the watch never ends by itself: wait in steps of a second.
+    const auto wait_end = o.timeout_s ? deadline : std::chrono::steady_clock::now() + std::chrono::seconds(1);
+    if (mail.wait_until(wait_end) || !o.timeout_s) continue;
+    if (!o.count) return kExitOk;
+    err << "moos-cli: timed out after " << *o.timeout_s << " s with " << received << " of "
+        << *o.count << " messages\n";
+    return kExitWatchTimeout;
   }
 }
 
