@@ -197,7 +197,8 @@ TEST_F(SensorProcess, AVehicleKilledMidPassLeavesTheOtherServed_Issue12) {
 /// connection: a warning, a throttle or a drop.
 std::vector<std::string> actions_on(const MoosdbServer& server, const std::string& client) {
   std::vector<std::string> out;
-  for (const auto& line : base::split(server.stderr_text(), '\n'))
+  const std::string log = server.stderr_text();  // the split's views point into it
+  for (const auto& line : base::split(log, '\n'))
     if (line.find("\"" + client + "\" (") != std::string::npos &&
         line.find("): connected") == std::string::npos)
       out.emplace_back(line);
