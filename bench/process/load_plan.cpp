@@ -132,6 +132,8 @@ std::string mission_text(const MissionSpec& spec) {
   text += "ProcessConfig = uFldHazardSensor\n{\n";
   text += "  AppTick = " + base::format_g(spec.app_tick_hz) + "\n";
   text += "  CommsTick = " + base::format_g(spec.app_tick_hz) + "\n";
+  if (spec.idle_app_tick_hz)
+    text += "  IdleAppTick = " + base::format_g(*spec.idle_app_tick_hz) + "\n";
   text += "  hazard_file = " + spec.hazard_file + "\n";
   text += "  sensor_config = width=25, exp=4, pclass=0.85\n";
   text += "  sensor_config = width=50, exp=2, pclass=0.60\n";

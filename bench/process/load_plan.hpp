@@ -80,6 +80,7 @@ struct MissionSpec {
   double time_warp = 1;
   std::string community = "shoreside";
   double app_tick_hz = 4;
+  std::optional<double> idle_app_tick_hz;  ///< IdleAppTick (ours, opt-in); none: not written
   std::string hazard_file;
   double swath_length_m = 5;
   bool show_hazards = false;

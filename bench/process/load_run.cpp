@@ -122,6 +122,7 @@ class Run {
     mission.time_warp = spec_.time_warp;
     mission.community = kCommunity;
     mission.app_tick_hz = spec_.app_tick_hz;
+    mission.idle_app_tick_hz = target_.idle_app_tick_hz;
     mission.hazard_file = fs::absolute(target_.hazard_file).string();
     mission.swath_length_m = spec_.swath_length_m;
     mission.show_hazards = spec_.show_hazards;

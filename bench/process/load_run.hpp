@@ -21,6 +21,7 @@
 
 #include <cstddef>
 #include <ostream>
+#include <optional>
 #include <string>
 
 namespace bench {
@@ -54,6 +55,8 @@ struct Target {
   std::string moosdb;     ///< the MOOSDB program (MOOSDB or moosdb-lite)
   std::string hazard_file;
   std::string work_dir;
+  /// IdleAppTick for this sensor's block (ours only: the original does not know it).
+  std::optional<double> idle_app_tick_hz;
 };
 
 struct LoadResult {

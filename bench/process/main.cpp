@@ -35,6 +35,8 @@ load and MOOSDB, and a ratio column is printed.
   --report-hz=HZ       node reports per vehicle per MOOS second (default 10)
   --request-hz=HZ      UHZ_SENSOR_REQUEST per vehicle per MOOS second (default 4)
   --app-tick=HZ        the sensor's AppTick (default 4)
+  --idle-app-tick=HZ   IdleAppTick for our sensor (opt-in: it skips AppTick slots while it has
+                       nothing to do; default: not set, every slot is a cycle)
   --area-per-object=M2 field area per object, square metres (default 400: 10k objects in
                        2 km x 2 km)
   --markers            show_hazards = true (default false)
@@ -70,6 +72,7 @@ struct Options {
   std::string moosdb = HAZARD_MOOSDB_LITE_PROGRAM;
   std::string gen_hazards = HAZARD_GEN_HAZARDS_PROGRAM;
   std::string original;  // "" = look on PATH
+  std::optional<double> idle_app_tick_hz;  // ours only
   std::string work_dir;
   std::string csv;
 };
@@ -114,6 +117,9 @@ std::optional<Options> parse(int argc, char** argv) {
     } else if (name == "--app-tick") {
       ok = number.has_value();
       if (ok) o.spec.app_tick_hz = *number;
+    } else if (name == "--idle-app-tick") {
+      ok = number.has_value();
+      if (ok) o.idle_app_tick_hz = *number;
     } else if (name == "--area-per-object") {
       ok = number.has_value();
       if (ok) o.area_per_object_m2 = *number;
@@ -275,14 +281,14 @@ int main(int argc, char** argv) {
     return 1;
   }
   Runs runs;
-  bench::Target ours{"ours", o.sensor, o.moosdb, field, o.work_dir + "/ours"};
+  bench::Target ours{"ours", o.sensor, o.moosdb, field, o.work_dir + "/ours", o.idle_app_tick_hz};
   runs.emplace_back("ours", bench::run_load(o.spec, ours, std::cerr));
   const std::string original = original_sensor(o);
   if (!original.empty()) {
     // The original's swath reaches swath_length fore and aft (D1), ours half of it.
     bench::LoadSpec spec = o.spec;
     spec.swath_half_length_m = spec.swath_length_m;
-    bench::Target theirs{"original", original, o.moosdb, field, o.work_dir + "/original"};
+    bench::Target theirs{"original", original, o.moosdb, field, o.work_dir + "/original", {}};
     runs.emplace_back("original", bench::run_load(spec, theirs, std::cerr));
   } else {
     std::cerr << "process_bench: no original uFldHazardSensor (give --original=PATH); ours only\n";

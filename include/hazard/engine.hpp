@@ -135,6 +135,11 @@ class Engine {
   void restart_field_visuals(Outputs& out);
   /// Objects whose visuals are still to be posted by the coming iterations.
   std::size_t field_visuals_pending() const { return field_.size() - visuals_cursor_; }
+  /// The earliest time at which step() could post anything or change any state if no mail
+  /// arrives before it (quiet_time.cpp): `now_s` while a vehicle's sensor is active, an answer
+  /// is queued or field visuals are pending; otherwise when UHZ_OPTIONS_SUMMARY falls due. Every
+  /// step before that time does nothing, so an app may skip it (moos::MoosApp, IdleAppTick).
+  double quiet_until_s(double now_s) const;
 
   static const std::vector<InterfaceVariable>& subscriptions();
   static const std::vector<InterfaceVariable>& publications();

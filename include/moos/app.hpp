@@ -27,6 +27,13 @@
 // - An app reads its mission through its settings: the block lines (config_lines), the folder of
 //   the mission file (mission_directory) and the globals it needs itself (global, global_double,
 //   e.g. LatOrigin). The file is read once, by whoever resolves the settings (run_app or a test).
+// - IdleAppTick (ours, opt-in; docs/differences.md): an app that can tell until when its
+//   iterate() would do nothing (quiet_until_moos_s) may skip cycles while it is quiet: with
+//   IdleAppTick = F it cycles at least every 1/F MOOS s and whenever it stops being quiet, and mail
+//   ends the skipping at once. Every cycle still falls on the AppTick grid (start + k / AppTick),
+//   so mail is handled at the same cycle as without the option; only the framework's postings
+//   (_ITER_GAP, _ITER_LEN, _STATUS, the iteration count) see fewer cycles. Without the option
+//   every slot of the grid is a cycle, as in libMOOS.
 // - Iterate modes 1 and 2, command messages (`<APP>_CMD`) and cpu/memory in the status are not
 //   implemented: their configuration keys produce a configuration warning when enabled.
 
@@ -44,6 +51,7 @@
 #include "moos/appcast.hpp"
 #include "moos/command_line.hpp"
 #include "moos/comms.hpp"
+#include "moos/mail_signal.hpp"
 #include "moos/mission.hpp"
 
 namespace moos {
@@ -80,6 +88,9 @@ struct AppSettings {
   std::size_t max_appcast_run_warnings = AppCast::kDefaultMaxRunWarnings;
   std::optional<bool> term_reporting;    ///< mission TERM_REPORTING; nullopt when absent
   bool sort_mail_by_time = true;
+  /// IdleAppTick (ours, opt-in): MOOS-time Hz of the cycles of a quiet app (see the contract);
+  /// nullopt: every AppTick slot is a cycle (libMOOS).
+  std::optional<double> idle_app_tick_hz;
   /// The application's own lines of its block (framework keys removed), in file order.
   std::vector<ConfigLine> config_lines;
   bool have_block = false;
@@ -98,7 +109,7 @@ struct AppSettings {
   std::optional<double> global_double(std::string_view key) const;
 };
 
-/// True for the block keys the base handles (AppTick, CommsTick, MaxAppTick, IterateMode,
+/// True for the block keys the base handles (AppTick, IdleAppTick, CommsTick, MaxAppTick, IterateMode,
 /// SortMailByTime, CatchCommandMessages, TERM_REPORT_INTERVAL, MAX_APPCAST_EVENTS,
 /// MAX_APPCAST_RUN_WARNINGS, moos_time_warp), compared case-insensitively.
 bool is_framework_parameter(std::string_view key);
@@ -131,15 +142,19 @@ class MoosApp {
   bool start(Comms& comms, AppSettings settings);
   /// One main-loop pass now (see the contract above).
   void cycle();
-  /// MOOS time at which the next cycle is due.
-  double next_cycle_due_moos_s() const { return next_due_moos_s_; }
+  /// MOOS time at which the next cycle is due (later while the app is quiet, IdleAppTick).
+  double next_cycle_due_moos_s() const { return due_moos_s(); }
   /// Runs a cycle if it is due; true if it ran.
   bool cycle_if_due();
   /// Sleeps on the comms clock from cycle to cycle until `moos_s` MOOS seconds have passed.
   void run_for(double moos_s);
   /// The real main loop: cycles until request_stop() or `external_stop` becomes true.
   void run_until_stopped(const std::atomic<bool>* external_stop = nullptr);
-  void request_stop() { stop_ = true; }
+  /// Ends run_until_stopped / run_for at once, even in an idle sleep; any thread may call it.
+  void request_stop() {
+    stop_ = true;
+    mail_signal_.notify();
+  }
 
   /// Where terminal reports go (main: standard output when it is a terminal). None: no
   /// terminal reports.
@@ -169,6 +184,9 @@ class MoosApp {
   virtual void iterate() {}
   /// The report body (the appcast `messages`): text lines separated by '\n'.
   virtual std::string build_report() { return {}; }
+  /// Until when (MOOS s) iterate() would do nothing if no mail arrived: cycles before it may be
+  /// skipped when IdleAppTick is set. The default, `now_moos_s`, means "never quiet".
+  virtual double quiet_until_moos_s(double now_moos_s) const { return now_moos_s; }
 
   // ---- services ----------------------------------------------------------------------------------
   Comms& comms() const { return *comms_; }
@@ -207,7 +225,31 @@ class MoosApp {
   void post_status_if_due();
   void post_report(double iterate_start_moos_s);
   void schedule_next(double cycle_start_moos_s);
+  // IdleAppTick (app_idle.cpp).
+  /// When the next cycle is due: the next AppTick slot, or while quiet and without mail the
+  /// first slot at or after idle_resume_moos_s_.
+  double due_moos_s() const;
+  /// The first slot of the AppTick grid (next_due_moos_s_ + k / AppTick) at or after `t`.
+  double grid_slot_at_or_after(double t) const;
+  /// After a cycle: until when the following cycles may be skipped (none without IdleAppTick).
+  void plan_idle(double cycle_start_moos_s);
+  /// From the comms thread: mail (or a connection) arrived; the first since the last fetch
+  /// records its MOOS time.
+  void note_mail();
+  /// Mail arrived since the last fetch.
+  bool mail_waiting() const { return mail_signal_.pending(); }
+  /// Sleeps until the next cycle is due, `real_s` from now: while the app is quiet in one sleep
+  /// that mail and request_stop() end early, else in plain sleeps of at most
+  /// kMaxLoopSleep_real_s.
+  void sleep_until_due(Clock& clock, double real_s);
   bool term_reporting_enabled() const;
+
+  /// A cycle this close to its due time (as a fraction of the period) counts as on time; MOOS
+  /// times near 1e12 (epoch x warp 400) carry only ~1e-4 s of resolution.
+  static constexpr double kScheduleToleranceFraction = 1e-3;
+  /// Longest plain sleep of the real main loop, so that `external_stop` is seen promptly (an
+  /// idle sleep is woken by mail and by request_stop() instead).
+  static constexpr double kMaxLoopSleep_real_s = 0.1;
 
   const AppTraits traits_;
   Comms* comms_ = nullptr;
@@ -219,6 +261,9 @@ class MoosApp {
   double start_time_ = 0.0;
   double curr_time_ = 0.0;  // MOOS time of the current cycle (libMOOS m_curr_time)
   double next_due_moos_s_ = 0.0;
+  std::optional<double> idle_resume_moos_s_;  ///< IdleAppTick: skip cycles before it, unless mail
+  MailSignal mail_signal_;
+  std::atomic<double> first_mail_moos_s_{0.0};  ///< arrival of the first mail since the fetch
   std::uint64_t iteration_ = 0;
   std::uint64_t seen_connections_ = 0;
   std::uint64_t reported_mail_dropped_ = 0;  ///< comms_->mail_dropped() when last reported

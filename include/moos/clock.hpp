@@ -10,6 +10,8 @@
 
 #include <mutex>
 
+#include "moos/mail_signal.hpp"
+
 namespace moos {
 
 class Clock {
@@ -19,6 +21,12 @@ class Clock {
   virtual double unix_now_s() const = 0;
   /// Waits `real_s` real seconds (nothing for real_s <= 0).
   virtual void sleep_real_s(double real_s) = 0;
+  /// As sleep_real_s, but ends as soon as `wake` records mail (at once if it already has).
+  /// A clock that no other thread can outrun (ManualClock) just advances.
+  virtual void sleep_real_s_unless_woken(double real_s, MailSignal& wake) {
+    (void)wake;
+    sleep_real_s(real_s);
+  }
 };
 
 /// The operating system's clock.
@@ -26,6 +34,7 @@ class SystemClock final : public Clock {
  public:
   double unix_now_s() const override;
   void sleep_real_s(double real_s) override;
+  void sleep_real_s_unless_woken(double real_s, MailSignal& wake) override;
 };
 
 /// One process-wide SystemClock.

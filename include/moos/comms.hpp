@@ -79,6 +79,11 @@ class Comms {
 
   /// All mail received since the last call, oldest first.
   virtual std::vector<Message> fetch() = 0;
+  /// Postings between hold_sends() and release_sends() may leave together: an implementation
+  /// may wait for the release before it starts sending (TcpClient: one packet per app cycle,
+  /// not one for the first posting and one for the rest). Postings are never lost or reordered.
+  virtual void hold_sends() {}
+  virtual void release_sends() {}
   /// Mail dropped unread since the start because the inbox was full (never decreases).
   std::uint64_t mail_dropped() const { return mail_dropped_.load(); }
 

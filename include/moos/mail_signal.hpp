@@ -25,6 +25,12 @@ class MailSignal {
     arrived_.notify_all();
   }
 
+  /// Whether mail was recorded since the last take().
+  bool pending() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return pending_;
+  }
+
   void take() {
     std::lock_guard<std::mutex> lock(mutex_);
     pending_ = false;
@@ -36,7 +42,7 @@ class MailSignal {
   }
 
  private:
-  std::mutex mutex_;
+  mutable std::mutex mutex_;
   std::condition_variable arrived_;
   bool pending_ = false;  ///< mail arrived since the last take()
 };

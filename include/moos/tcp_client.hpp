@@ -121,6 +121,8 @@ class TcpClient final : public Comms {
   double time_warp() const override { return options_.time_warp; }
   double skew_s() const override { return skew_s_.load(); }
   std::vector<Message> fetch() override;
+  void hold_sends() override;
+  void release_sends() override;
 
  protected:
   bool transmit(Message msg) override;
@@ -164,6 +166,8 @@ class TcpClient final : public Comms {
   mutable std::condition_variable changed_;
   ConnectionState state_ = ConnectionState::kNotStarted;
   std::vector<Message> outbox_;
+  bool holding_sends_ = false;  ///< hold_sends(): the outbox's first message does not wake
+  bool wake_deferred_ = false;  ///< ... and release_sends() must
   std::vector<Message> inbox_;
   std::size_t inbox_bytes_ = 0;  ///< approximate, see inbox_cost()
   std::int32_t next_id_ = 0;

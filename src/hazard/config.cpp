@@ -115,6 +115,10 @@ const std::vector<ParameterSpec>& table() {
       {"AppTick", "", K::kFramework, "Hz", "4", above(0.0),
        "Iterations per second (MOOS time); hazard_replay iterates at this rate",
        "wire spec 6.3", &C::app_tick_hz},
+      {"IdleAppTick", "", K::kFramework, "Hz", "", {},
+       "Ours, opt-in: while nothing is to be done, iterate at this rate instead of every AppTick "
+       "slot; mail wakes the app at once (docs/differences.md)",
+       "include/moos/app.hpp", {}},
       {"CommsTick", "", K::kFramework, "Hz", "", {}, "Mail fetches per second", "wire spec 6.3",
        {}},
       {"MaxAppTick", "", K::kFramework, "Hz", "", {}, "Iteration rate limit in iterate mode 1",

@@ -4,11 +4,11 @@
 #include "moos/app.hpp"
 
 #include <algorithm>
-#include <csignal>
 #include <limits>
 #include <ostream>
 
 #include "moos/limits.hpp"
+#include "moos/stop_signals.hpp"
 #include "moos/tcp_client.hpp"
 #include "base/text.hpp"
 
@@ -20,17 +20,12 @@ constexpr double kMaxTermReportInterval_s = 10.0;  // spec 7.2 clamp 0-10
 constexpr long long kMaxAppCastRunWarnings = 1000; // core-moos upper bound
 /// libMOOS waits this many MOOS seconds for the first connection before starting up (7.1).
 constexpr double kConnectWait_moos_s = 5.0;
-/// Longest single sleep of the real main loop, so a stop request is seen promptly.
-constexpr double kMaxLoopSleep_real_s = 0.1;
-/// A cycle this close to its due time (as a fraction of the period) counts as on time; MOOS
-/// times near 1e12 (epoch x warp 400) carry only ~1e-4 s of resolution.
-constexpr double kScheduleToleranceFraction = 1e-3;
 
 constexpr std::string_view kAppCastRequestKey = "APPCAST_REQ";
 constexpr std::string_view kAppCastKey = "APPCAST";
 
 constexpr std::string_view kFrameworkKeys[] = {
-    "APPTICK",        "COMMSTICK",          "MAXAPPTICK",         "ITERATEMODE",
+    "APPTICK",        "IDLEAPPTICK",        "COMMSTICK",          "MAXAPPTICK",         "ITERATEMODE",
     "SORTMAILBYTIME", "CATCHCOMMANDMESSAGES", "TERM_REPORT_INTERVAL", "MAX_APPCAST_EVENTS",
     "MAX_APPCAST_RUN_WARNINGS", "MOOS_TIME_WARP"};
 
@@ -74,6 +69,14 @@ void apply_framework_line(const ConfigLine& line, AppSettings& s, bool& block_ap
     } else {
       warn("Invalid AppTick: " + v + " (must be a number in [" + base::format_g(kMinAppTickHz) +
            ", " + base::format_g(kMaxAppTickHz) + "] Hz)");
+    }
+  } else if (key == "IDLEAPPTICK") {
+    const auto f = base::parse_number(v);
+    if (f && is_valid_app_tick(*f)) {
+      s.idle_app_tick_hz = *f;
+    } else {
+      warn("Invalid IdleAppTick: " + v + " (must be a number in [" +
+           base::format_g(kMinAppTickHz) + ", " + base::format_g(kMaxAppTickHz) + "] Hz)");
     }
   } else if (key == "COMMSTICK") {
     if (auto t = base::parse_integer(v, 1, kMaxCommsTickHz)) s.comms_tick_hz = static_cast<int>(*t);
@@ -159,9 +162,6 @@ void apply_globals(const MissionFile& mission, AppSettings& s) {
       s.config_warnings.push_back("Invalid value for TERM_REPORTING: " + term->value + place(*term));
   }
 }
-
-std::atomic<bool> g_signal_stop{false};
-extern "C" void on_stop_signal(int) { g_signal_stop = true; }
 
 }  // namespace
 
@@ -250,6 +250,11 @@ bool MoosApp::start(Comms& comms, AppSettings settings) {
   for (const auto& w : settings_.config_warnings) report_config_warning(w);
 
   start_time_ = curr_time_ = next_due_moos_s_ = moos_time();
+  if (settings_.idle_app_tick_hz) {
+    // Mail, and a new connection (whose on_connect_to_server is due), end an idle sleep.
+    comms.set_on_mail([this] { note_mail(); });
+    comms.set_on_connect([this] { note_mail(); });
+  }
   comms.register_variable(std::string(kAppCastRequestKey), 0.0);
   return on_start_up();
 }
@@ -268,7 +273,7 @@ void MoosApp::schedule_next(double cycle_start) {
 
 bool MoosApp::cycle_if_due() {
   const double tolerance = kScheduleToleranceFraction / settings_.app_tick_hz;
-  if (moos_time() + tolerance < next_due_moos_s_) return false;
+  if (moos_time() + tolerance < due_moos_s()) return false;
   cycle();
   return true;
 }
@@ -279,8 +284,8 @@ void MoosApp::run_for(double moos_s) {
   const double warp = comms_->time_warp();
   const double end = moos_time() + moos_s;
   const double tolerance = kScheduleToleranceFraction / settings_.app_tick_hz;
-  while (!stop_ && next_due_moos_s_ <= end + tolerance) {
-    clock.sleep_real_s((next_due_moos_s_ - moos_time()) / warp);
+  while (!stop_ && due_moos_s() <= end + tolerance) {
+    clock.sleep_real_s((due_moos_s() - moos_time()) / warp);
     cycle();
   }
   clock.sleep_real_s((end - moos_time()) / warp);
@@ -290,9 +295,9 @@ void MoosApp::run_until_stopped(const std::atomic<bool>* external_stop) {
   if (!comms_) return;
   Clock& clock = comms_->clock();
   while (!stop_ && !(external_stop && *external_stop)) {
-    const double wait_real = (next_due_moos_s_ - moos_time()) / comms_->time_warp();
+    const double wait_real = (due_moos_s() - moos_time()) / comms_->time_warp();
     if (wait_real > 0) {
-      clock.sleep_real_s(std::min(wait_real, kMaxLoopSleep_real_s));
+      sleep_until_due(clock, wait_real);
       continue;
     }
     cycle();
@@ -301,9 +306,19 @@ void MoosApp::run_until_stopped(const std::atomic<bool>* external_stop) {
 
 void MoosApp::cycle() {
   if (!comms_) return;
+  // Everything this cycle posts leaves together (Comms::hold_sends).
+  struct SendBatch {
+    Comms& comms;
+    explicit SendBatch(Comms& c) : comms(c) { comms.hold_sends(); }
+    ~SendBatch() { comms.release_sends(); }
+    SendBatch(const SendBatch&) = delete;
+    SendBatch& operator=(const SendBatch&) = delete;
+  } batch(*comms_);
   const double now = moos_time();
   curr_time_ = now;
   schedule_next(now);
+  idle_resume_moos_s_.reset();
+  mail_signal_.take();  // before the fetch: mail arriving during it still ends the next sleep
 
   const std::uint64_t connections = comms_->connection_count();
   if (connections != seen_connections_) {
@@ -330,6 +345,7 @@ void MoosApp::cycle() {
   last_iterate_start_moos_s_ = now;
   iterate();
   post_report(now);
+  plan_idle(now);
 }
 
 void MoosApp::report_dropped_mail() {
@@ -511,6 +527,8 @@ int run_app(MoosApp& app, const CommandLine& cl, std::ostream& out, std::ostream
   client_options.name = settings.moos_name;
   client_options.time_warp = settings.time_warp;
   client_options.tw_delay_factor_ms = *tw_delay_factor;
+  // Before the comms thread starts, so that only the watcher takes SIGINT and SIGTERM.
+  StopSignals stop_signals;
   TcpClient client(client_options);
   if (!client.start()) {
     err << "cannot start the MOOS client: " << client.last_error() << "\n";
@@ -536,10 +554,8 @@ int run_app(MoosApp& app, const CommandLine& cl, std::ostream& out, std::ostream
     for (const auto& w : app.appcast().config_warnings()) err << "  " << w << "\n";
     return 1;
   }
-  g_signal_stop = false;
-  std::signal(SIGINT, on_stop_signal);
-  std::signal(SIGTERM, on_stop_signal);
-  app.run_until_stopped(&g_signal_stop);
+  stop_signals.set_handler([&app] { app.request_stop(); });
+  app.run_until_stopped();
   client.close();
   return 0;
 }

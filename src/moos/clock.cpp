@@ -16,6 +16,13 @@ void SystemClock::sleep_real_s(double real_s) {
   std::this_thread::sleep_for(std::chrono::duration<double>(real_s));
 }
 
+void SystemClock::sleep_real_s_unless_woken(double real_s, MailSignal& wake) {
+  if (real_s <= 0) return;
+  const auto span = std::chrono::duration_cast<MailSignal::Clock::duration>(
+      std::chrono::duration<double>(real_s));
+  wake.wait_until(MailSignal::Clock::now() + span);
+}
+
 SystemClock& system_clock() {
   static SystemClock clock;
   return clock;

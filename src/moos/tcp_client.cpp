@@ -24,6 +24,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <utility>
 
 #include "moos/limits.hpp"
 #include "base/text.hpp"
@@ -227,14 +228,37 @@ std::vector<Message> TcpClient::fetch() {
 }
 
 bool TcpClient::transmit(Message msg) {
+  bool was_empty = false;
   {
     std::lock_guard<std::mutex> lock(mutex_);
     if (state_ != ConnectionState::kConnected) return false;
     msg.id = next_id_++;  // every posted message consumes an id (spec 2.5)
+    was_empty = outbox_.empty();
     outbox_.push_back(std::move(msg));
+    if (was_empty && holding_sends_) {
+      wake_deferred_ = true;
+      was_empty = false;
+    }
   }
-  wake();
+  // Only the first message of a batch wakes the comms thread: it takes the whole outbox, and it
+  // never sleeps past its next send slot while the outbox holds anything (serve()).
+  if (was_empty) wake();
   return true;
+}
+
+void TcpClient::hold_sends() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  holding_sends_ = true;
+}
+
+void TcpClient::release_sends() {
+  bool wake_now = false;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    holding_sends_ = false;
+    wake_now = std::exchange(wake_deferred_, false);
+  }
+  if (wake_now) wake();
 }
 
 // ---- comms thread ---------------------------------------------------------------------------

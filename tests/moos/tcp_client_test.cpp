@@ -296,6 +296,34 @@ TEST_F(TcpClientTest, RegistrationsAndNotificationsGoOutWithIncreasingIds_2_5) {
   EXPECT_EQ(got[3].id, 3);
 }
 
+// An app cycle's postings leave in one packet (Comms::hold_sends), however long the cycle.
+TEST_F(TcpClientTest, HeldSendsLeaveTogetherInOnePacket) {
+  TcpClient client(options());
+  ASSERT_TRUE(client.start());
+  handshake();
+  ASSERT_TRUE(client.wait_until_connected(kWait_s));
+  client.hold_sends();
+  for (const char* var : {"A", "B", "C"}) {
+    ASSERT_TRUE(client.notify(var, 1.0));
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));  // unheld, A would leave alone
+  }
+  client.release_sends();
+  const double deadline = steady_now_s() + kWait_s;
+  std::vector<std::vector<std::string>> packets;  // the notifications of each packet
+  std::size_t seen = 0;
+  while (seen < 3 && steady_now_s() < deadline) {
+    auto pkt = server.read_packet(deadline - steady_now_s());
+    ASSERT_TRUE(pkt.has_value());
+    std::vector<std::string> keys;
+    for (auto& m : *pkt)
+      if (m.type == msg_type::kNotify) keys.push_back(m.key);
+    seen += keys.size();
+    if (!keys.empty()) packets.push_back(keys);
+  }
+  ASSERT_EQ(packets.size(), 1u);
+  EXPECT_EQ(packets[0], (std::vector<std::string>{"A", "B", "C"}));
+}
+
 TEST_F(TcpClientTest, FirstPacketLeadsWithTimingMatchingVectorI_4_3) {
   TcpClient client(options());
   ASSERT_TRUE(client.start());

@@ -66,6 +66,10 @@ void HazardSensor::iterate() {
   publish(driver_->step(cycle_time()));
 }
 
+double HazardSensor::quiet_until_moos_s(double now_moos_s) const {
+  return driver_ ? driver_->engine().quiet_until_s(now_moos_s) : now_moos_s;
+}
+
 std::string HazardSensor::build_report() {
   if (!driver_) return {};
   return hazard::format_report(hazard::collect_report_data(driver_->engine()));

@@ -25,6 +25,7 @@
 //   has none of them; libmoos re-sends the registrations itself. The engine is kept as it is
 //   (settings, credits, queues): only the database was lost, not the mission. The connection
 //   that start-up already served gets nothing twice.
+// - Idle (IdleAppTick, opt-in): the app is quiet until Engine::quiet_until_s.
 // - build_report: hazard::format_report (spec 11, seed and active effects in its header).
 // The app therefore posts exactly what the engine decided; hazard_replay drives the same engine
 // the same way (start, mail before the iteration of its time, step per AppTick).
@@ -77,6 +78,9 @@ class HazardSensor final : public moos::MoosApp {
   void on_new_mail(const std::vector<moos::Message>& mail) override;
   void iterate() override;
   std::string build_report() override;
+  /// The engine's quiet time (Engine::quiet_until_s): with IdleAppTick, cycles before it are
+  /// skipped unless mail arrives.
+  double quiet_until_moos_s(double now_moos_s) const override;
 
  private:
   void publish(const hazard::TimedOutputs& out);

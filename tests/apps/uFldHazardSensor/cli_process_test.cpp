@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <signal.h>
 
+#include <chrono>
 #include <set>
 
 #include "HazardSensor.hpp"
@@ -153,6 +154,31 @@ TEST_F(SensorProcess, TerminalReportWhenAskedAndSigtermExitsZero_12) {
   EXPECT_NE(out.find("       Seed: 5 (random_seed)"), std::string::npos) << out;
   EXPECT_NE(out.find("Setting sensor settings for: alpha"), std::string::npos) << out;
   EXPECT_EQ(app->stderr_text(), "");  // not verbose
+}
+
+}  // namespace
+}  // namespace ufld_hazard_sensor
+
+namespace ufld_hazard_sensor {
+namespace {
+
+// IdleAppTick (opt-in): a quiet sensor sleeps for long stretches, and still answers mail at once
+// and stops at once on SIGTERM (a stop signal wakes the sleep; it once polled every 0.1 s).
+TEST_F(SensorProcess, AnIdleSensorAnswersMailAndStopsAtOnce_IdleAppTick) {
+  // Quiet for 1,000 MOOS s at a time (50 real s at warp 20); no options summary for an hour.
+  ASSERT_NO_FATAL_FAILURE(start(std::string(kSmallBlock) + "  IdleAppTick = 0.001\n" +
+                                "  options_summary_interval = 3600\n"));
+  const auto before_request = std::chrono::steady_clock::now();
+  post("UHZ_CONFIG_REQUEST", "vname=alpha,width=20,pd=1");
+  ASSERT_TRUE(wait_for_value("UHZ_CONFIG_ACK_ALPHA", kSmallAck));
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - before_request).count(),
+            kPatience_s);
+  sleep_ticks(8);  // asleep again
+  const auto before_stop = std::chrono::steady_clock::now();
+  stop_all();
+  const double stop_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - before_stop).count();
+  EXPECT_EQ(app_exit, 0);
+  EXPECT_LT(stop_s, 5.0);  // the sleep would have lasted about 50 s
 }
 
 }  // namespace
