@@ -86,6 +86,13 @@ struct DropRequest {
 /// Reasons of the reference DB's POISON messages (spec 1.6), kept verbatim.
 std::string duplicate_name_reason(const std::string& name);
 inline constexpr const char* kNoNameReason = "Failed to read receive client's name";
+/// The longest client name accepted, bytes (issue 12). The reference DB has no bound, but a
+/// name is repeated in DB_CLIENTS, DB_EVENT and every log line about its client, so a name as
+/// long as a packet may be (hundreds of MB) would make each of those as long. libMOOS names
+/// are a few dozen bytes.
+inline constexpr std::size_t kMaxClientNameBytes = 1024;
+/// The POISON text for a name longer than kMaxClientNameBytes (ours: the reference has none).
+std::string overlong_name_reason(std::size_t name_bytes);
 
 class Database {
  public:
@@ -102,6 +109,8 @@ class Database {
   /// Queues WELCOME (returns true; the client is now connected, DB_EVENT and DB_CLIENTS are
   /// published) or POISON (returns false; the caller closes the connection after sending).
   bool connect(ClientId id, const std::vector<Message>& identification, double now_moos_s);
+  /// Why connect() would refuse `identification` now (the POISON's text), or nullopt.
+  std::optional<std::string> handshake_refusal(const std::vector<Message>& identification) const;
 
   /// Disconnect clean-up of spec 1.9: subscriptions, filters and undelivered mail go, the
   /// name is free, DB_EVENT/DB_CLIENTS are published. Unknown ids are ignored.

@@ -335,5 +335,83 @@ TEST(MoosdbLiteBadInput, FloodOfOneHundredThousandMessagesLosesNothing) {
   others.expect_everything_received();
 }
 
+// A name is repeated in DB_CLIENTS, DB_EVENT and every log line about its client (issue 12).
+TEST(MoosdbLiteBadInput, ATenKilobyteClientNameIsPoisonedNamingTheBound_Issue12) {
+  MoosdbServer server(MOOSDB_LITE_PATH, {kPatientClients});
+  ASSERT_TRUE(server.ok());
+  Bystanders others;
+  others.join(server.port());
+  RawClient verbose;
+  ASSERT_TRUE(verbose.connect(server.port()));
+  const auto reply = verbose.handshake(std::string(10 * 1024, 'n'), true, moos_now());
+  ASSERT_TRUE(reply);
+  ASSERT_FALSE(reply->empty());
+  EXPECT_EQ(reply->front().type, mt::kPoison);
+  EXPECT_EQ(reply->front().sval, "A client name of 10240 bytes is longer than the 1024 allowed");
+  EXPECT_TRUE(verbose.wait_closed(kArrivalTimeout_s));
+  EXPECT_TRUE(server.wait_for_log(
+      "handshake refused: A client name of 10240 bytes is longer than the 1024 allowed",
+      kArrivalTimeout_s));
+  others.post();
+  others.expect_everything_received();
+  const std::string log = server.stderr_text();
+  EXPECT_EQ(log.find(std::string(2000, 'n')), std::string::npos) << "the name reached the log";
+}
+
+TEST(MoosdbLiteBadInput, ANegativeMessageCountDropsTheSender) {
+  MoosdbServer server(MOOSDB_LITE_PATH, {kPatientClients});
+  ASSERT_TRUE(server.ok());
+  Bystanders others;
+  others.join(server.port());
+  RawClient liar;
+  ASSERT_TRUE(liar.join(server.port(), "pNegative", true));
+  std::string packet = moos::encode_packet({notify_double("BYSTANDER", 999, "pNegative")});
+  packet[4] = packet[5] = packet[6] = packet[7] = '\xff';  // count -1
+  ASSERT_TRUE(liar.send_bytes(packet));
+  EXPECT_TRUE(liar.wait_closed(kArrivalTimeout_s));
+  EXPECT_TRUE(server.wait_for_log("client \"pNegative\"", kArrivalTimeout_s));
+  EXPECT_TRUE(server.wait_for_log("bad packet (negative message count -1 at byte 4)",
+                                  kArrivalTimeout_s));
+  others.post();
+  others.expect_everything_received();  // 999 never appears
+}
+
+TEST(MoosdbLiteBadInput, GarbageInsteadOfAnIdentificationIsPoisoned) {
+  MoosdbServer server(MOOSDB_LITE_PATH, {kPatientClients});
+  ASSERT_TRUE(server.ok());
+  Bystanders others;
+  others.join(server.port());
+  RawClient garbled;
+  ASSERT_TRUE(garbled.connect(server.port()));
+  std::string ident = moos::encode_packet({identification("pGarbled", true, moos_now())});
+  ident[9 + 10] = '\x40';  // the first string's length runs past the message
+  ASSERT_TRUE(garbled.send_bytes(moos::protocol_banner() + ident));
+  const auto reply = garbled.read_packet();
+  ASSERT_TRUE(reply);
+  ASSERT_FALSE(reply->empty());
+  EXPECT_EQ(reply->front().type, mt::kPoison);
+  EXPECT_TRUE(garbled.wait_closed(kArrivalTimeout_s));
+  EXPECT_TRUE(server.wait_for_log("in the handshake", kArrivalTimeout_s));
+  others.post();
+  others.expect_everything_received();
+}
+
+// A few bytes of a header, then nothing: the partial header is no sign of life for ever.
+TEST(MoosdbLiteBadInput, PartOfAHeaderThenSilenceIsDroppedAtTheClientTimeout) {
+  MoosdbServer server(MOOSDB_LITE_PATH, {"--moos_timeout=1"});
+  ASSERT_TRUE(server.ok());
+  RawClient stall;
+  ASSERT_TRUE(stall.join(server.port(), "pStall", true));
+  ASSERT_TRUE(stall.send_bytes(std::string("\x40\x00\x00\x00", 4)));
+  const double start = steady_now_s();
+  EXPECT_TRUE(stall.wait_closed(kArrivalTimeout_s));
+  EXPECT_GE(steady_now_s() - start, 0.9);
+  EXPECT_TRUE(server.wait_for_log("client \"pStall\"", kArrivalTimeout_s));
+  EXPECT_TRUE(server.wait_for_log("nothing received for more than 1 s", kArrivalTimeout_s));
+  RawClient later;  // the server still serves
+  ASSERT_TRUE(later.join(server.port(), "pLater", false));
+  EXPECT_TRUE(later.exchange({null_message("pLater")}));
+}
+
 }  // namespace
 }  // namespace moosdb_lite::test
