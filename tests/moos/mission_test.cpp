@@ -260,6 +260,32 @@ TEST(MissionDefines, UnknownBraceNameBecomesTheBareNameWithAnError_6_1) {
   EXPECT_TRUE(has_error(errors, "test.moos", 2, "${NOPE}")) << dump(errors);
 }
 
+// Defines that name themselves or each other (issue 12): one pass, so no loop and no growth; the
+// inner name stays as written.
+TEST(MissionDefines, SelfAndMutualReferencesAreNotExpandedAgain_Issue12) {
+  std::vector<MissionError> errors;
+  MissionOptions options;
+  options.use_environment = false;
+  std::string chain = "define: D0 = xx\n";
+  for (int i = 1; i <= 40; ++i)  // each doubles the one before: 2^41 bytes if expanded again
+    chain += "define: D" + std::to_string(i) + " = ${D" + std::to_string(i - 1) + "}${D" +
+             std::to_string(i - 1) + "}\n";
+  const auto m = parse("define: A = ${A}\ndefine: B = ${C}\ndefine: C = ${B}\n" + chain +
+                           "Community = ${A}\nServerHost = ${B}\nServerPort = ${D40}\n",
+                       &errors, options);
+  EXPECT_TRUE(errors.empty()) << dump(errors);
+  EXPECT_EQ(m.global("Community"), "${A}");
+  EXPECT_EQ(m.global("ServerHost"), "${C}");
+  EXPECT_EQ(m.global("ServerPort"), "${D39}${D39}");
+}
+
+TEST(MissionDefines, AnUnterminatedBraceIsReportedAndKeptAsWritten) {
+  std::vector<MissionError> errors;
+  const auto m = parse("define: A = 1\nCommunity = x${A\n", &errors);
+  EXPECT_EQ(m.global("Community"), "x${A");
+  EXPECT_TRUE(has_error(errors, "test.moos", 2, "unterminated ${")) << dump(errors);
+}
+
 TEST(MissionDefines, BraceNameFallsBackToTheEnvironment_6_1) {
   ::setenv("MOOS_MISSION_TEST_ENV", "fromenv", 1);
   std::vector<MissionError> errors;
