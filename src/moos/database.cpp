@@ -171,8 +171,8 @@ void Database::handle_message(ClientId id, Message msg, double now) {
     case mt::kTiming:   // only meaningful first in a packet
       break;
     default:
-      refuse(id, std::string("message of unknown type '") + msg.type + "' (key \"" + msg.key +
-                     "\") ignored");
+      refuse(id, std::string("message of unknown type '") + msg.type + "' (key \"" +
+                     base::excerpt(msg.key) + "\") ignored");
       break;
   }
 }

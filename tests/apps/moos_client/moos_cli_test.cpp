@@ -78,7 +78,8 @@ TEST(MoosCliOptions, WaitsBeyondTheLargestAreRefused_Issue12) {
   EXPECT_FALSE(parse_options({"watch", "A", "--connect-timeout=1e18"}, &error));
   EXPECT_EQ(error, "bad timeout: --connect-timeout=1e18");
   EXPECT_FALSE(parse_options({"poke", "--connect-timeout=1e300", "A=1"}, &error));
-  const auto longest = parse_options({"watch", "A", "--timeout=1e8", "--connect-timeout=1e8"}, &error);
+  const auto longest =
+      parse_options({"watch", "A", "--timeout=1e8", "--connect-timeout=1e8"}, &error);
   ASSERT_TRUE(longest.has_value()) << error;
   EXPECT_EQ(longest->timeout_s, std::optional<double>(moos::kMaxRealWait_s));
 }

@@ -413,5 +413,34 @@ TEST(MoosdbLiteBadInput, PartOfAHeaderThenSilenceIsDroppedAtTheClientTimeout) {
   EXPECT_TRUE(later.exchange({null_message("pLater")}));
 }
 
+// Ever new variable names: the store is bounded (--max-stored-bytes); beyond it a write is
+// refused with a logged reason, the writer stays, and the others are served (issue 12).
+TEST(MoosdbLiteBadInput, NewVariablesBeyondTheStoreBoundAreRefusedAndTheWriterStays_Issue12) {
+  MoosdbServer server(MOOSDB_LITE_PATH, {"--max-stored-bytes=200000", kPatientClients});
+  ASSERT_TRUE(server.ok());
+  Bystanders others;
+  others.join(server.port());
+  others.post();
+  RawClient hoarder;
+  ASSERT_TRUE(hoarder.join(server.port(), "pHoardVars", false));
+  for (int i = 0; i < 100; ++i)  // 100 variables of 10 kB: 1 MB asked, 200 kB allowed
+    ASSERT_TRUE(hoarder.exchange(
+        {notify_string("HOARD_" + std::to_string(i), std::string(10000, 'h'), "pHoardVars")}));
+  EXPECT_TRUE(server.wait_for_log("client \"pHoardVars\"", kArrivalTimeout_s));
+  EXPECT_TRUE(server.wait_for_log("refused: the store would hold more than its 200000 bytes",
+                                  kArrivalTimeout_s));
+  RawClient reader;
+  ASSERT_TRUE(reader.join(server.port(), "pReadVars", false));
+  const auto first = reader.exchange({registration("HOARD_0", 0, "pReadVars")});
+  ASSERT_TRUE(first);
+  EXPECT_EQ(first->size(), 2u) << "the NULL and HOARD_0's snapshot: it was stored";
+  const auto last = reader.exchange({registration("HOARD_99", 0, "pReadVars")});
+  ASSERT_TRUE(last);
+  EXPECT_EQ(last->size(), 1u) << "the NULL only: HOARD_99 was refused";
+  ASSERT_TRUE(hoarder.exchange({null_message("pHoardVars")})) << "the writer stays";
+  others.post();
+  others.expect_everything_received();
+}
+
 }  // namespace
 }  // namespace moosdb_lite::test
