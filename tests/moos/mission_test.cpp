@@ -1,5 +1,6 @@
 // Mission reader: wire spec section 6.1-6.3 plus the nsplug habits of include/moos/mission.hpp.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -425,6 +426,25 @@ TEST(MissionInclude, MissingIncludedFileIsAnErrorAtTheIncludeLine) {
   const auto m = MissionFile::load(top, {}, &errors);
   ASSERT_TRUE(m.has_value());
   EXPECT_TRUE(has_error(errors, top, 2, "cannot read included file")) << dump(errors);
+  EXPECT_EQ(m->global("X"), "1");
+}
+
+// A device, a directory or a FIFO as an included file: refused at once naming the kind, never
+// read (a FIFO without a writer would block, /dev/zero would never end).
+TEST(MissionInclude, ASpecialFileIsRefusedAtTheIncludeLine_Issue12) {
+  const test_support::ScratchDir dir;
+  const std::string fifo = (dir / "pipe").string();
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const std::string top = write_in(dir, "m.moos",
+                                   "#include /dev/zero\n#include " + dir.path().string() +
+                                       "\n#include " + fifo + "\nX = 1\n");
+  std::vector<MissionError> errors;
+  const auto m = MissionFile::load(top, {}, &errors);
+  ASSERT_TRUE(m.has_value());
+  EXPECT_TRUE(has_error(errors, top, 1, "/dev/zero: is a device, not a regular file"))
+      << dump(errors);
+  EXPECT_TRUE(has_error(errors, top, 2, "is a directory")) << dump(errors);
+  EXPECT_TRUE(has_error(errors, top, 3, "is a FIFO, not a regular file")) << dump(errors);
   EXPECT_EQ(m->global("X"), "1");
 }
 
