@@ -62,10 +62,10 @@ inline constexpr const char* kDefaultCommunity = "#1";
 /// subscribes to what it posts always gets the echo of its largest packet (issue 12).
 inline constexpr std::size_t kDefaultMaxPendingBytes = 512u * 1024u * 1024u;
 /// Refusals logged per client before further ones are only counted (keeps a misbehaving
-/// client from flooding the log; the count is logged when it disconnects).
+/// client from flooding the log; the count is logged when it disconnects). A refusal quotes
+/// the client's text (variable names, patterns) as a base::excerpt: a name can be as long as a
+/// packet.
 inline constexpr int kLoggedRefusalsPerClient = 20;
-// A refusal quotes the client's text (variable names, patterns) as a base::excerpt: a name can
-// be as long as a packet.
 
 /// What the stored variables may hold in all, bytes (issue 12): each variable's name and last
 /// value with its writer and community, plus kVariableOverheadBytes for its bookkeeping. A

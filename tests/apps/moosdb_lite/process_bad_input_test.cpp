@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <functional>
 #include <iostream>
 #include <string>
 #include <thread>
@@ -141,23 +142,34 @@ TEST(MoosdbLiteBadInput, TruncatedPacketThenDisconnectIsDiscardedWithReason) {
   others.expect_everything_received();  // 999 never appears
 }
 
-TEST(MoosdbLiteBadInput, StructurallyMalformedMessageDropsTheSender_2_7) {
+/// `name` joins and sends a NOTIFY of 999 to BYSTANDER made malformed by `corrupt`: it must be
+/// dropped with `reason` in the log, and the bystanders must get everything else.
+void expect_a_corrupt_packet_drops_its_sender(const std::string& name,
+                                              const std::function<void(std::string&)>& corrupt,
+                                              const std::string& reason) {
   MoosdbServer server(MOOSDB_LITE_PATH, {kPatientClients});
   ASSERT_TRUE(server.ok());
   Bystanders others;
   others.join(server.port());
   others.post();
   RawClient bad;
-  ASSERT_TRUE(bad.join(server.port(), "pMalformed", true));
-  std::string packet = moos::encode_packet({notify_double("BYSTANDER", 999, "pMalformed")});
-  packet[9 + 10] = '\x40';  // source length now runs past the end of the message
+  ASSERT_TRUE(bad.join(server.port(), name, true));
+  std::string packet = moos::encode_packet({notify_double("BYSTANDER", 999, name)});
+  corrupt(packet);
   ASSERT_TRUE(bad.send_bytes(packet));
   EXPECT_TRUE(bad.wait_closed(kArrivalTimeout_s));
-  EXPECT_TRUE(server.wait_for_log("client \"pMalformed\"", kArrivalTimeout_s));
-  EXPECT_TRUE(server.wait_for_log("bad packet (message 0: string source runs past the end of the message",
-                                  kArrivalTimeout_s));
+  EXPECT_TRUE(server.wait_for_log("client \"" + name + "\"", kArrivalTimeout_s));
+  EXPECT_TRUE(server.wait_for_log(reason, kArrivalTimeout_s));
   others.post();
-  others.expect_everything_received();
+  others.expect_everything_received();  // 999 never appears
+}
+
+TEST(MoosdbLiteBadInput, StructurallyMalformedMessageDropsTheSender_2_7) {
+  expect_a_corrupt_packet_drops_its_sender(
+      "pMalformed",
+      // the source's length now runs past the end of the message
+      [](std::string& packet) { packet[9 + 10] = '\x40'; },
+      "bad packet (message 0: string source runs past the end of the message");
 }
 
 TEST(MoosdbLiteBadInput, SemanticallyMalformedMessageIsRefusedAndTheClientStays) {
@@ -359,21 +371,10 @@ TEST(MoosdbLiteBadInput, ATenKilobyteClientNameIsPoisonedNamingTheBound_Issue12)
 }
 
 TEST(MoosdbLiteBadInput, ANegativeMessageCountDropsTheSender) {
-  MoosdbServer server(MOOSDB_LITE_PATH, {kPatientClients});
-  ASSERT_TRUE(server.ok());
-  Bystanders others;
-  others.join(server.port());
-  RawClient liar;
-  ASSERT_TRUE(liar.join(server.port(), "pNegative", true));
-  std::string packet = moos::encode_packet({notify_double("BYSTANDER", 999, "pNegative")});
-  packet[4] = packet[5] = packet[6] = packet[7] = '\xff';  // count -1
-  ASSERT_TRUE(liar.send_bytes(packet));
-  EXPECT_TRUE(liar.wait_closed(kArrivalTimeout_s));
-  EXPECT_TRUE(server.wait_for_log("client \"pNegative\"", kArrivalTimeout_s));
-  EXPECT_TRUE(server.wait_for_log("bad packet (negative message count -1 at byte 4)",
-                                  kArrivalTimeout_s));
-  others.post();
-  others.expect_everything_received();  // 999 never appears
+  expect_a_corrupt_packet_drops_its_sender(
+      "pNegative",
+      [](std::string& packet) { packet.replace(4, 4, "\xff\xff\xff\xff"); },  // count -1
+      "bad packet (negative message count -1 at byte 4)");
 }
 
 TEST(MoosdbLiteBadInput, GarbageInsteadOfAnIdentificationIsPoisoned) {
