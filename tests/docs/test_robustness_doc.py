@@ -85,6 +85,7 @@ class RobustnessDoc(unittest.TestCase):
 
     def test_bad_input_rows_name_tests_that_exist_exactly(self):
         for cells in self.rows:
+            self.assertEqual(len(cells), 3, "a row needs input, answer and test: " + cells[0])
             names, files = references(cells[-1])
             self.assertTrue(names or files, "a row without a test: " + cells[0])
             for n in names:
