@@ -37,5 +37,9 @@ inline constexpr double kMaxNodeSpeed_mps = 1000.0;
 /// A vehicle name (NODE_REPORT NAME, vname), bytes: it becomes part of variable names
 /// (UHZ_CONFIG_ACK_<V>) and of log lines, so it must also be free of control bytes.
 inline constexpr std::size_t kMaxVehicleNameBytes = 128;
+/// An object's label (hazard lines, files), bytes: it is posted in every detection, hazard and
+/// classification report about the object and in its marker, so a 1 MB label would make each of
+/// those postings a megabyte. Labels that gen_hazards and missions use are a few bytes.
+inline constexpr std::size_t kMaxLabelBytes = 256;
 
 }  // namespace hazard

@@ -62,13 +62,25 @@ inline constexpr const char* kDefaultCommunity = "#1";
 /// subscribes to what it posts always gets the echo of its largest packet (issue 12).
 inline constexpr std::size_t kDefaultMaxPendingBytes = 512u * 1024u * 1024u;
 /// Refusals logged per client before further ones are only counted (keeps a misbehaving
-/// client from flooding the log; the count is logged when it disconnects).
+/// client from flooding the log; the count is logged when it disconnects). A refusal quotes
+/// the client's text (variable names, patterns) as a base::excerpt: a name can be as long as a
+/// packet.
 inline constexpr int kLoggedRefusalsPerClient = 20;
+
+/// What the stored variables may hold in all, bytes (issue 12): each variable's name and last
+/// value with its writer and community, plus kVariableOverheadBytes for its bookkeeping. A
+/// client that posts or registers ever new names grew the store without bound (3,000 variables
+/// of 100 kB held 300 MB, outside the connections' memory budget); a 100-vehicle mission stores
+/// a few megabytes. A client's NOTIFY or REGISTER that would go beyond it is refused (logged,
+/// the client stays); the DB's own variables are always written.
+inline constexpr std::size_t kDefaultMaxStoredBytes = 1024u * 1024u * 1024u;
+inline constexpr std::size_t kVariableOverheadBytes = 256;
 
 struct DatabaseConfig {
   std::string community = kDefaultCommunity;
   std::string hostname;  ///< sent in WELCOME as `hostname=<hostname>` (spec 1.6)
   std::size_t max_pending_bytes = kDefaultMaxPendingBytes;
+  std::size_t max_stored_bytes = kDefaultMaxStoredBytes;
   bool db_variables = true;  ///< publish the DB_* variables of spec 5.7
 };
 
@@ -86,6 +98,13 @@ struct DropRequest {
 /// Reasons of the reference DB's POISON messages (spec 1.6), kept verbatim.
 std::string duplicate_name_reason(const std::string& name);
 inline constexpr const char* kNoNameReason = "Failed to read receive client's name";
+/// The longest client name accepted, bytes (issue 12). The reference DB has no bound, but a
+/// name is repeated in DB_CLIENTS, DB_EVENT and every log line about its client, so a name as
+/// long as a packet may be (hundreds of MB) would make each of those as long. libMOOS names
+/// are a few dozen bytes.
+inline constexpr std::size_t kMaxClientNameBytes = 1024;
+/// The POISON text for a name longer than kMaxClientNameBytes (ours: the reference has none).
+std::string overlong_name_reason(std::size_t name_bytes);
 
 class Database {
  public:
@@ -102,6 +121,8 @@ class Database {
   /// Queues WELCOME (returns true; the client is now connected, DB_EVENT and DB_CLIENTS are
   /// published) or POISON (returns false; the caller closes the connection after sending).
   bool connect(ClientId id, const std::vector<Message>& identification, double now_moos_s);
+  /// Why connect() would refuse `identification` now (the POISON's text), or nullopt.
+  std::optional<std::string> handshake_refusal(const std::vector<Message>& identification) const;
 
   /// Disconnect clean-up of spec 1.9: subscriptions, filters and undelivered mail go, the
   /// name is free, DB_EVENT/DB_CLIENTS are published. Unknown ids are ignored.
@@ -127,6 +148,8 @@ class Database {
   std::size_t pending_bytes(ClientId id) const;
   /// The snapshot a REGISTER of `name` would send now (spec 2.6); nullopt while unwritten.
   std::optional<Message> latest(const std::string& name) const;
+  /// What the store holds now, counted as for DatabaseConfig::max_stored_bytes.
+  std::size_t stored_bytes() const { return stored_bytes_; }
 
  private:
   using VarId = std::size_t;
@@ -191,6 +214,10 @@ class Database {
   void store(Variable& var, const Message& msg, double now);
   void fan_out(Variable& var, const Message& msg, double now);
   VarId find_or_create(const std::string& name);
+  /// Why a client's write of `msg` (or, without a value, a new name) would take the store
+  /// beyond max_stored_bytes; empty when it fits.
+  std::string store_refusal(const Message& msg, bool with_value) const;
+  static std::size_t value_bytes(const Value& value);
 
   // Subscriptions (database_register.cpp).
   void subscribe(ClientId id, VarId var, double interval_s, double now);
@@ -228,6 +255,7 @@ class Database {
   NotifyObserver notify_observer_;
 
   std::vector<Variable> vars_;
+  std::size_t stored_bytes_ = 0;  ///< see stored_bytes()
   std::unordered_map<std::string, VarId> var_index_;
   std::map<ClientId, Client> clients_;  ///< ordered by id = connection order
   std::unordered_map<std::string, ClientId> client_by_name_;

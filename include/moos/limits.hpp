@@ -36,6 +36,12 @@ inline constexpr Range kAnyNumber{-std::numeric_limits<double>::max(), std::nume
 inline constexpr Range kPositive{0.0, std::numeric_limits<double>::max(), true, false};
 inline constexpr Range kNonNegative{0.0, std::numeric_limits<double>::max()};
 
+/// A real-time wait a user asks for (moos-cli --timeout, --connect-timeout), s: (0, 1e8], about
+/// three years. A longer one overflows std::chrono's steady clock (64-bit nanoseconds, 292
+/// years) when it becomes a deadline: 1e300 once made moos-cli give up at once (issue 12).
+inline constexpr double kMaxRealWait_s = 1.0e8;
+inline constexpr Range kRealWaitRange{0.0, kMaxRealWait_s, true, false};
+
 /// The largest time warp libMOOS accepts (wire spec 0.3).
 inline constexpr double kMaxTimeWarp = 400.0;
 /// A time warp: (0, kMaxTimeWarp].

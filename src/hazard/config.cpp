@@ -271,8 +271,12 @@ Applied apply_value(EngineConfig& config, const ParameterSpec& spec, std::string
 
 std::string place(const ConfigEntry& e) { return e.file + ":" + std::to_string(e.line) + ": "; }
 
+/// Mission text in a warning: cut and escaped, since a mission line may hold any byte but a
+/// newline (issue 12: an ESC sequence in a value reached the terminal report).
+std::string shown(std::string_view text) { return base::escape_for_log(base::excerpt(text)); }
+
 std::string parameter_value(const ConfigEntry& e) {
-  return "parameter '" + e.key + "' value '" + base::excerpt(e.value) + "'";
+  return "parameter '" + shown(e.key) + "' value '" + shown(e.value) + "'";
 }
 
 // The value the block gives `geodesy` (its last valid line, D36), read before the other lines
@@ -315,12 +319,12 @@ class Loader {
   void load(const ConfigEntry& e) {
     const ParameterSpec* spec = find_parameter(e.key);
     if (!spec) {
-      warn(place(e) + "unknown parameter '" + e.key + "' (value '" + base::excerpt(e.value) +
+      warn(place(e) + "unknown parameter '" + shown(e.key) + "' (value '" + shown(e.value) +
            "') ignored");
       return;
     }
     if (base::trim(e.value).empty()) {
-      warn(place(e) + "parameter '" + e.key + "' has no value; ignored");
+      warn(place(e) + "parameter '" + shown(e.key) + "' has no value; ignored");
       return;
     }
     switch (spec->kind) {
@@ -385,11 +389,12 @@ class Loader {
     status.path = std::string(base::trim(e.value));
     const std::optional<std::string> text = read_(status.path);
     if (!text) {
-      warn(place(e) + "cannot read hazard file '" + status.path + "'");
+      warn(place(e) + "cannot read hazard file '" + shown(status.path) + "'");
     } else {
       status.read_ok = true;
-      status.counts = load_hazard_file_text(*text, status.path, setup_.field,
-                                            setup_.config_warnings, &setup_.placement);
+      status.counts = load_hazard_file_text(*text, base::escape_for_log(status.path),
+                                            setup_.field, setup_.config_warnings,
+                                            &setup_.placement);
     }
     setup_.hazard_files.push_back(std::move(status));
   }
@@ -410,7 +415,7 @@ class Loader {
     const std::string canonical = base::to_lower(spec.name == "moos_*" ? e.key : spec.name);
     const auto [it, first] = seen_.emplace(canonical, place(e));
     if (!first) {
-      warn(place(e) + "parameter '" + e.key + "' repeated (also at " +
+      warn(place(e) + "parameter '" + shown(e.key) + "' repeated (also at " +
            it->second.substr(0, it->second.size() - 2) + "); the last value is used");
       it->second = place(e);
     }

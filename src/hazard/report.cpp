@@ -21,7 +21,8 @@ std::string hazard_file_label(const std::vector<HazardFileStatus>& files) {
   std::string out;
   for (const HazardFileStatus& f : files) {
     if (!out.empty()) out += ", ";
-    out += f.read_ok ? f.path : "Error reading: " + f.path;
+    const std::string path = base::escape_for_log(f.path);  // mission text: any byte but '\n'
+    out += f.read_ok ? path : "Error reading: " + path;
   }
   return out;
 }

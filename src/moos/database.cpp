@@ -45,6 +45,20 @@ std::string duplicate_name_reason(const std::string& name) {
   return "A client of this name (\"" + name + "\") already exists";
 }
 
+std::string overlong_name_reason(std::size_t name_bytes) {
+  return "A client name of " + std::to_string(name_bytes) + " bytes is longer than the " +
+         std::to_string(kMaxClientNameBytes) + " allowed";
+}
+
+std::optional<std::string> Database::handshake_refusal(
+    const std::vector<Message>& identification) const {
+  const Message* ident = identification.empty() ? nullptr : &identification.front();
+  if (ident == nullptr || ident->sval.empty()) return std::string(kNoNameReason);
+  if (ident->sval.size() > kMaxClientNameBytes) return overlong_name_reason(ident->sval.size());
+  if (client_by_name_.count(ident->sval) != 0) return duplicate_name_reason(ident->sval);
+  return std::nullopt;
+}
+
 Database::Database(DatabaseConfig config, double start_moos_s, LogSink log,
                    NotifyObserver observer)
     : config_(std::move(config)),
@@ -61,13 +75,7 @@ Database::Database(DatabaseConfig config, double start_moos_s, LogSink log,
 bool Database::connect(ClientId id, const std::vector<Message>& identification,
                        double now_moos_s) {
   assert(clients_.count(id) == 0 && "connection ids are unique");
-  const Message* ident = identification.empty() ? nullptr : &identification.front();
-  std::optional<std::string> poison_reason;
-  if (ident == nullptr || ident->sval.empty()) {
-    poison_reason = kNoNameReason;
-  } else if (client_by_name_.count(ident->sval) != 0) {
-    poison_reason = duplicate_name_reason(ident->sval);
-  }
+  const std::optional<std::string> poison_reason = handshake_refusal(identification);
   if (poison_reason) {
     Message poison = handshake_reply(mt::kPoison, dt::kString, now_moos_s);
     poison.sval = *poison_reason;
@@ -75,6 +83,7 @@ bool Database::connect(ClientId id, const std::vector<Message>& identification,
     return false;
   }
 
+  const Message* ident = &identification.front();
   Client client;
   client.name = ident->sval;
   client.async = base::iequals(ident->key, kAsynchronousKey);
@@ -162,8 +171,8 @@ void Database::handle_message(ClientId id, Message msg, double now) {
     case mt::kTiming:   // only meaningful first in a packet
       break;
     default:
-      refuse(id, std::string("message of unknown type '") + msg.type + "' (key \"" + msg.key +
-                     "\") ignored");
+      refuse(id, std::string("message of unknown type '") + msg.type + "' (key \"" +
+                     base::excerpt(msg.key) + "\") ignored");
       break;
   }
 }

@@ -4,6 +4,7 @@
 
 #include <utility>
 
+#include "base/text.hpp"
 #include "moos/database.hpp"
 
 namespace moos {
@@ -35,14 +36,17 @@ std::string type_name(char data_type) {
 void Database::handle_notify(ClientId id, Message msg, double now) {
   if (msg.key.empty()) return refuse(id, "NOTIFY with an empty variable name refused");
   if (!is_value_type(msg.data_type))
-    return refuse(id, "NOTIFY " + msg.key + " with data type '" + msg.data_type +
+    return refuse(id, "NOTIFY " + base::excerpt(msg.key) + " with data type '" + msg.data_type +
                           "' refused (expected D, S or B)");
   Client& client = clients_.at(id);
   if (msg.source.empty()) msg.source = client.name;
+  if (msg.community.empty()) msg.community = config_.community;
+  if (const std::string why = store_refusal(msg, true); !why.empty())
+    return refuse(id, "NOTIFY " + base::excerpt(msg.key) + " refused: " + why);
   const char type = msg.data_type;
   const VarId var = publish(std::move(msg), now);
   if (vars_[var].data_type != type)
-    return refuse(id, "NOTIFY " + vars_[var].name + " as " + type_name(type) +
+    return refuse(id, "NOTIFY " + base::excerpt(vars_[var].name) + " as " + type_name(type) +
                           " refused: the variable is " + type_name(vars_[var].data_type) +
                           " (fixed by its first write)");
   client.published.insert(var);
@@ -88,6 +92,8 @@ void Database::store(Variable& var, const Message& msg, double now) {
   value.writer = msg.source;
   value.writer_aux = msg.source_aux;
   value.community = msg.community;
+  if (var.value) stored_bytes_ -= value_bytes(*var.value);
+  stored_bytes_ += value_bytes(value);
   var.value = std::move(value);
 
   WriteFrequency& f = var.frequency;
@@ -119,9 +125,30 @@ Database::VarId Database::find_or_create(const std::string& name) {
   const VarId id = vars_.size();
   Variable var;
   var.name = name;
+  stored_bytes_ += kVariableOverheadBytes + name.size();
   vars_.push_back(std::move(var));
   var_index_.emplace(name, id);
   return id;
+}
+
+std::size_t Database::value_bytes(const Value& value) {
+  return value.sval.size() + value.writer.size() + value.writer_aux.size() +
+         value.community.size();
+}
+
+std::string Database::store_refusal(const Message& msg, bool with_value) const {
+  // What the variable holds now, and would hold after the write.
+  const auto it = var_index_.find(msg.key);
+  const Variable* var = it == var_index_.end() ? nullptr : &vars_[it->second];
+  const std::size_t name_bytes = kVariableOverheadBytes + msg.key.size();
+  const std::size_t before = var ? name_bytes + (var->value ? value_bytes(*var->value) : 0) : 0;
+  std::size_t after = var ? before : name_bytes;
+  if (with_value)
+    after = name_bytes + msg.sval.size() + msg.source.size() + msg.source_aux.size() +
+            msg.community.size();
+  if (after <= before || stored_bytes_ - before + after <= config_.max_stored_bytes) return {};
+  return "the store would hold more than its " + std::to_string(config_.max_stored_bytes) +
+         " bytes (" + std::to_string(stored_bytes_) + " held)";
 }
 
 }  // namespace moos

@@ -6,6 +6,7 @@
 #include <string>
 #include <tuple>
 
+#include "base/text.hpp"
 #include "moos/database.hpp"
 
 namespace moos {
@@ -13,8 +14,10 @@ namespace moos {
 void Database::handle_register(ClientId id, const Message& msg, double now) {
   if (msg.key.empty()) return refuse(id, "REGISTER with an empty variable name refused");
   if (!std::isfinite(msg.dval) || msg.dval < 0.0)
-    return refuse(id, "REGISTER " + msg.key + " with interval " + std::to_string(msg.dval) +
-                          " refused (expected a number >= 0)");
+    return refuse(id, "REGISTER " + base::excerpt(msg.key) + " with interval " +
+                          std::to_string(msg.dval) + " refused (expected a number >= 0)");
+  if (const std::string why = store_refusal(msg, false); !why.empty())
+    return refuse(id, "REGISTER " + base::excerpt(msg.key) + " refused: " + why);
   subscribe(id, find_or_create(msg.key), msg.dval, now);
 }
 
@@ -67,7 +70,7 @@ void Database::handle_wildcard_register(ClientId id, const Message& msg, double 
   std::string problem;
   const WildcardSpec spec = parse_wildcard_spec(msg.sval, &problem);
   if (!problem.empty())
-    return refuse(id, "WILDCARD_REGISTER \"" + msg.sval + "\" refused: " + problem);
+    return refuse(id, "WILDCARD_REGISTER \"" + base::excerpt(msg.sval) + "\" refused: " + problem);
   auto& filters = clients_.at(id).filters;
   const bool known = std::any_of(filters.begin(), filters.end(),
                                  [&](const WildcardSpec& f) { return f.same_patterns(spec); });
@@ -81,7 +84,8 @@ void Database::handle_wildcard_unregister(ClientId id, const Message& msg) {
   std::string problem;
   const WildcardSpec spec = parse_wildcard_spec(msg.sval, &problem);
   if (!problem.empty())
-    return refuse(id, "WILDCARD_UNREGISTER \"" + msg.sval + "\" refused: " + problem);
+    return refuse(id, "WILDCARD_UNREGISTER \"" + base::excerpt(msg.sval) +
+                          "\" refused: " + problem);
   Client& client = clients_.at(id);
   auto& filters = client.filters;
   // Also the identical filter (documented deviation, spec 5.5 allows it).

@@ -3,6 +3,7 @@
 
 #include <utility>
 
+#include "base/text.hpp"
 #include "moos/database.hpp"
 
 namespace moos {
@@ -18,7 +19,7 @@ void Database::handle_server_request(ClientId id, const Message& msg, double now
     log_(describe(id) + ": DB_CLEAR: every variable and all undelivered mail cleared");
     clear_db();
   } else {
-    refuse(id, "unknown server request \"" + msg.key + "\" ignored");
+    refuse(id, "unknown server request \"" + base::excerpt(msg.key) + "\" ignored");
   }
 }
 
@@ -70,6 +71,7 @@ void Database::clear_db() {
     Variable cleared;
     cleared.name = std::move(var.name);
     cleared.subscribers = std::move(var.subscribers);
+    if (var.value) stored_bytes_ -= value_bytes(*var.value);
     var = std::move(cleared);
   }
   for (auto& [id, client] : clients_) {

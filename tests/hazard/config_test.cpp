@@ -193,6 +193,22 @@ TEST(Config, UnknownParameterAndEmptyValueWarn) {
   EXPECT_TRUE(contains(s.config_warnings, "test.moos:2: parameter 'show_pd' has no value"));
 }
 
+// A mission line may hold any byte but a newline: keys, values and file names reach the
+// warnings (and the terminal report) escaped, so an ESC sequence cannot repaint a terminal.
+TEST(Config, ControlBytesOfTheMissionAreEscapedInWarnings_Issue12) {
+  const std::string esc = "\x1b[2J";
+  const EngineSetup s = setup_from("swath_length = 5" + esc + "\nbo" + esc + "gus = 1\n" +
+                                   "hazard_file = gone" + esc + ".txt\n" +
+                                   "hazard_file = bad" + esc + ".txt\n",
+                                   {{"bad" + esc + ".txt", "junk\n"}});
+  ASSERT_GE(s.config_warnings.size(), 4u);
+  for (const std::string& w : s.config_warnings) EXPECT_EQ(w.find('\x1b'), std::string::npos) << w;
+  EXPECT_TRUE(contains(s.config_warnings, "parameter 'swath_length' value '5\\x1B[2J'"));
+  EXPECT_TRUE(contains(s.config_warnings, "unknown parameter 'bo\\x1B[2Jgus'"));
+  EXPECT_TRUE(contains(s.config_warnings, "cannot read hazard file 'gone\\x1B[2J.txt'"));
+  EXPECT_TRUE(contains(s.config_warnings, "bad\\x1B[2J.txt:1: unrecognised line 'junk'"));
+}
+
 TEST(Config, DeadFeaturesWarnThatTheyHaveNoEffect) {
   const EngineSetup s = setup_from("rn_algorithm = uniform,pct=0.5\nrn_uniform_pct = 0.3\n");
   EXPECT_TRUE(contains(s.config_warnings, "test.moos:1: parameter 'rn_algorithm'"));

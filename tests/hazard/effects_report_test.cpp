@@ -109,6 +109,15 @@ TEST(Report, HazardFileLabels) {
   EXPECT_NE(format_report(d).find("Effects: none"), std::string::npos);
 }
 
+// A file name from the mission may hold control bytes: escaped in the report (issue 12).
+TEST(Report, HazardFileNamesAreEscaped_Issue12) {
+  ReportData d;
+  d.hazard_files = {{"a\x1b[2J.txt", true, {}}, {"b\r.txt", false, {}}};
+  EXPECT_NE(format_report(d).find("Hazard File: (a\\x1B[2J.txt, Error reading: b\\x0D.txt) \n"),
+            std::string::npos)
+      << format_report(d);
+}
+
 TEST(Report, RatesAreNotAvailableWithoutChances) {
   ReportData d;
   d.vehicles.push_back({"v", SensorSetting{}, VehicleCounters{}});

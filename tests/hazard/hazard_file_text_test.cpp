@@ -5,12 +5,14 @@
 #include <string>
 
 #include "hazard/hazard_field.hpp"
+#include "hazard/ranges.hpp"
 #include "scenario.hpp"
 
 namespace hazard {
 namespace {
 
 using testing::contains;
+using testing::quiet_block;
 using testing::setup_from;
 
 TEST(HazardFileText, ControlBytesInALabelRejectTheLineNamingFileAndLine) {
@@ -72,6 +74,75 @@ TEST(HazardFileText, UnrecognisedLinesAreEscapedInWarnings) {
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_NE(warnings[0].find("'junk\\x0Dforged: hazard ok\\x01'"), std::string::npos)
       << warnings[0];
+}
+
+// Line ends from other systems (issue 12): CR LF loads as LF does; a file with CR alone has one
+// line, refused with its value named (never silently half-loaded).
+TEST(HazardFileText, CrLfLineEndsLoadLikeLf) {
+  HazardField field;
+  std::vector<std::string> warnings;
+  load_hazard_file_text("hazard = x=1,y=2,label=a,type=hazard\r\n"
+                        "hazard = x=3,y=4,label=b,type=benign\r\n",
+                        "f", field, warnings);
+  EXPECT_EQ(field.size(), 2u);
+  EXPECT_TRUE(field.find("a").has_value());
+  EXPECT_TRUE(field.find("b").has_value());  // no '\r' left in the last field
+  EXPECT_TRUE(warnings.empty()) << warnings.front();
+}
+
+TEST(HazardFileText, CrOnlyLineEndsAreOneLineRefusedNamingTheValue) {
+  HazardField field;
+  std::vector<std::string> warnings;
+  const HazardFileCounts counts = load_hazard_file_text(
+      "hazard = x=1,y=2,label=a,type=hazard\rhazard = x=3,y=4,label=b,type=benign\r", "f", field,
+      warnings);
+  EXPECT_EQ(field.size(), 0u);
+  EXPECT_EQ(counts.rejected_lines, 1);
+  EXPECT_TRUE(contains(warnings, "f:1: field 'type' value 'hazard\\x0Dhazard = x=3' is neither"));
+}
+
+// A label is posted in every report about its object: bounded (ranges.hpp, kMaxLabelBytes).
+TEST(HazardFileText, ALabelOverTheBoundRejectsTheLine_Issue12) {
+  HazardField field;
+  std::vector<std::string> warnings;
+  const std::string at_bound(kMaxLabelBytes, 'a');
+  const std::string megabyte(1u << 20, 'b');
+  load_hazard_file_text("hazard = x=1,y=2,label=" + at_bound + ",type=hazard\n" +
+                            "hazard = x=1,y=2,label=" + megabyte + ",type=hazard\n",
+                        "f", field, warnings);
+  EXPECT_EQ(field.size(), 1u);
+  EXPECT_TRUE(field.find(at_bound).has_value());
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_TRUE(contains(warnings, "f:2: field 'label' value 'bbbb"));
+  EXPECT_TRUE(contains(warnings, "is longer than 256 bytes (kMaxLabelBytes); line rejected"));
+  EXPECT_LT(warnings[0].size(), 400u) << "the label is cut in the warning";
+}
+
+TEST(HazardFileText, AMegabyteLineIsWarnedAsAShortExcerpt) {
+  HazardField field;
+  std::vector<std::string> warnings;
+  load_hazard_file_text(std::string(1u << 20, 'z') + "\n", "f", field, warnings);
+  EXPECT_EQ(field.size(), 0u);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_TRUE(contains(warnings, "f:1: unrecognised line 'zzz"));
+  EXPECT_TRUE(contains(warnings, "(1048576 bytes)"));
+  EXPECT_LT(warnings[0].size(), 400u);
+}
+
+TEST(HazardFileText, AnEmptyHazardFileWarnsThatNothingCanBeDetected) {
+  const EngineSetup s = setup_from(quiet_block("hazard_file = empty.txt\n"), {{"empty.txt", ""}});
+  EXPECT_EQ(s.field.size(), 0u);
+  ASSERT_EQ(s.hazard_files.size(), 1u);
+  EXPECT_TRUE(s.hazard_files[0].read_ok);
+  EXPECT_TRUE(contains(s.config_warnings, "no hazard field: no objects were loaded"));
+}
+
+TEST(HazardFileText, AMissingHazardFileIsAWarningNamingItAndThePlace) {
+  const EngineSetup s = setup_from(quiet_block("hazard_file = gone.txt\n"));
+  ASSERT_EQ(s.hazard_files.size(), 1u);
+  EXPECT_FALSE(s.hazard_files[0].read_ok);
+  EXPECT_TRUE(contains(s.config_warnings, "cannot read hazard file 'gone.txt'"));
+  EXPECT_TRUE(contains(s.config_warnings, "no hazard field"));
 }
 
 }  // namespace

@@ -302,6 +302,14 @@ TEST(DecodeErrors, RejectCountThatCannotFit) {
   EXPECT_FALSE(decode_packet(packet, &error));
 }
 
+TEST(DecodeErrors, RejectNegativeMessageCount) {
+  std::string packet = encode_packet({vector_a()});
+  packet[4] = packet[5] = packet[6] = packet[7] = '\xff';  // count -1
+  DecodeError error;
+  EXPECT_FALSE(decode_packet(packet, &error));
+  EXPECT_NE(error.reason.find("negative message count -1"), std::string::npos) << error.reason;
+}
+
 TEST(PacketReader, ReassemblesOneByteAtATime) {
   const std::string stream = encode_packet({vector_a(), vector_b()}) + encode_packet({vector_b()});
   PacketReader reader;

@@ -161,5 +161,53 @@ TEST(DatabaseLimits, PendingBytesCountTheMailASyncClientHasNotCollected) {
   EXPECT_EQ(db.pending_bytes(kC), 0u);
 }
 
+// The store is bounded (issue 12): new names and larger values that would take it beyond
+// max_stored_bytes are refused with a logged reason, the client stays, smaller writes and the
+// DB's own variables go on, and DB_CLEAR gives the room back.
+TEST(DatabaseLimits, WritesAndRegistrationsBeyondTheStoreBoundAreRefused_Issue12) {
+  DatabaseConfig config;
+  config.max_stored_bytes = 64 * 1024;
+  std::vector<std::string> logs;
+  Database db(config, kT0, [&](const std::string& l) { logs.push_back(l); });
+  ASSERT_TRUE(db.connect(kA, {identification("flooder", true)}, kT0));
+  ASSERT_TRUE(db.connect(kB, {identification("reader", true)}, kT0));
+  const std::size_t at_start = db.stored_bytes();
+  int accepted = 0;
+  for (int i = 0; i < 100; ++i) {  // 100 variables of 4 kB: 400 kB asked, 64 kB allowed
+    const std::string name = "V" + std::to_string(i);
+    db.process_packet(kA, {notify_string(name, std::string(4096, 'v'), "flooder")}, kT0 + 1);
+    if (db.latest(name)) ++accepted;
+  }
+  EXPECT_GT(accepted, 5);
+  EXPECT_LT(accepted, 20);
+  EXPECT_LE(db.stored_bytes(), config.max_stored_bytes);
+  EXPECT_GT(db.stored_bytes(), at_start + accepted * 4096u);
+  const auto refused = [&](const std::string& what) {
+    for (const auto& l : logs)
+      if (l.find(what) != std::string::npos &&
+          l.find("the store would hold more than its 65536 bytes") != std::string::npos)
+        return true;
+    return false;
+  };
+  EXPECT_TRUE(refused("NOTIFY V" + std::to_string(accepted) + " refused"));
+  // (the flooder's later refusals are only counted: another client registers)
+  db.process_packet(kB, {registration("NEVER_WRITTEN_" + std::string(64 * 1024, 'n'), 0, "reader")},
+                    kT0 + 1);
+  EXPECT_TRUE(refused("REGISTER NEVER_WRITTEN_nnn"));
+  for (const auto& l : logs) EXPECT_LT(l.size(), 400u) << "a refusal quotes an excerpt only";
+  // A smaller value for a stored variable still fits; the client is still served.
+  db.process_packet(kA, {notify_string("V0", "small", "flooder")}, kT0 + 2);
+  EXPECT_EQ(db.latest("V0")->sval, "small");
+  db.process_packet(kB, {registration("V1", 0, "reader")}, kT0 + 2);
+  EXPECT_TRUE(db.is_connected(kA));
+  db.refresh_db_variables(kT0 + 3);  // the DB's own variables are always written
+  EXPECT_DOUBLE_EQ(db.latest("DB_TIME")->dval, kT0 + 3);
+  // DB_CLEAR frees the values: the next write fits again.
+  db.process_packet(kA, {server_request("DB_CLEAR", "flooder")}, kT0 + 4);
+  EXPECT_LT(db.stored_bytes(), 64 * 1024u / 2);
+  db.process_packet(kA, {notify_string("V99", std::string(4096, 'v'), "flooder")}, kT0 + 5);
+  EXPECT_TRUE(db.latest("V99").has_value());
+}
+
 }  // namespace
 }  // namespace moos::test

@@ -61,6 +61,22 @@ TEST_F(DatabaseTest, IdentificationWithoutMessageGetsFailedToReadPoison_1_5) {
   EXPECT_EQ(packets[0][0].sval, "Failed to read receive client's name");
 }
 
+// A name is repeated in DB_CLIENTS, DB_EVENT and the log: bounded (issue 12).
+TEST_F(DatabaseTest, ANameOverTheBoundGetsPoisonAndTheBoundItselfConnects_Issue12) {
+  const std::string at_bound(kMaxClientNameBytes, 'n');
+  const std::string over(10 * 1024, 'o');
+  EXPECT_EQ(db_.handshake_refusal({identification(over, true)}),
+            std::optional<std::string>(overlong_name_reason(over.size())));
+  EXPECT_FALSE(db_.connect(kA, {identification(over, true)}, kT0));
+  const auto packets = to(db_.take_output(), kA);
+  ASSERT_EQ(packets.size(), 1u);
+  EXPECT_EQ(packets[0][0].type, mt::kPoison);
+  EXPECT_EQ(packets[0][0].sval, "A client name of 10240 bytes is longer than the 1024 allowed");
+  EXPECT_FALSE(db_.is_connected(kA));
+  EXPECT_EQ(db_.handshake_refusal({identification(at_bound, true)}), std::nullopt);
+  EXPECT_TRUE(db_.connect(kB, {identification(at_bound, true)}, kT0));
+}
+
 TEST_F(DatabaseTest, NameIsFreeAgainAfterDisconnect_1_9) {
   connect(kA, "pA", true);
   db_.disconnect(kA, kT0 + 1);

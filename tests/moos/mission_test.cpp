@@ -1,5 +1,6 @@
 // Mission reader: wire spec section 6.1-6.3 plus the nsplug habits of include/moos/mission.hpp.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -260,6 +261,32 @@ TEST(MissionDefines, UnknownBraceNameBecomesTheBareNameWithAnError_6_1) {
   EXPECT_TRUE(has_error(errors, "test.moos", 2, "${NOPE}")) << dump(errors);
 }
 
+// Defines that name themselves or each other (issue 12): one pass, so no loop and no growth; the
+// inner name stays as written.
+TEST(MissionDefines, SelfAndMutualReferencesAreNotExpandedAgain_Issue12) {
+  std::vector<MissionError> errors;
+  MissionOptions options;
+  options.use_environment = false;
+  std::string chain = "define: D0 = xx\n";
+  for (int i = 1; i <= 40; ++i)  // each doubles the one before: 2^41 bytes if expanded again
+    chain += "define: D" + std::to_string(i) + " = ${D" + std::to_string(i - 1) + "}${D" +
+             std::to_string(i - 1) + "}\n";
+  const auto m = parse("define: A = ${A}\ndefine: B = ${C}\ndefine: C = ${B}\n" + chain +
+                           "Community = ${A}\nServerHost = ${B}\nServerPort = ${D40}\n",
+                       &errors, options);
+  EXPECT_TRUE(errors.empty()) << dump(errors);
+  EXPECT_EQ(m.global("Community"), "${A}");
+  EXPECT_EQ(m.global("ServerHost"), "${C}");
+  EXPECT_EQ(m.global("ServerPort"), "${D39}${D39}");
+}
+
+TEST(MissionDefines, AnUnterminatedBraceIsReportedAndKeptAsWritten) {
+  std::vector<MissionError> errors;
+  const auto m = parse("define: A = 1\nCommunity = x${A\n", &errors);
+  EXPECT_EQ(m.global("Community"), "x${A");
+  EXPECT_TRUE(has_error(errors, "test.moos", 2, "unterminated ${")) << dump(errors);
+}
+
 TEST(MissionDefines, BraceNameFallsBackToTheEnvironment_6_1) {
   ::setenv("MOOS_MISSION_TEST_ENV", "fromenv", 1);
   std::vector<MissionError> errors;
@@ -399,6 +426,25 @@ TEST(MissionInclude, MissingIncludedFileIsAnErrorAtTheIncludeLine) {
   const auto m = MissionFile::load(top, {}, &errors);
   ASSERT_TRUE(m.has_value());
   EXPECT_TRUE(has_error(errors, top, 2, "cannot read included file")) << dump(errors);
+  EXPECT_EQ(m->global("X"), "1");
+}
+
+// A device, a directory or a FIFO as an included file: refused at once naming the kind, never
+// read (a FIFO without a writer would block, /dev/zero would never end).
+TEST(MissionInclude, ASpecialFileIsRefusedAtTheIncludeLine_Issue12) {
+  const test_support::ScratchDir dir;
+  const std::string fifo = (dir / "pipe").string();
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const std::string top = write_in(dir, "m.moos",
+                                   "#include /dev/zero\n#include " + dir.path().string() +
+                                       "\n#include " + fifo + "\nX = 1\n");
+  std::vector<MissionError> errors;
+  const auto m = MissionFile::load(top, {}, &errors);
+  ASSERT_TRUE(m.has_value());
+  EXPECT_TRUE(has_error(errors, top, 1, "/dev/zero: is a device, not a regular file"))
+      << dump(errors);
+  EXPECT_TRUE(has_error(errors, top, 2, "is a directory")) << dump(errors);
+  EXPECT_TRUE(has_error(errors, top, 3, "is a FIFO, not a regular file")) << dump(errors);
   EXPECT_EQ(m->global("X"), "1");
 }
 

@@ -1,12 +1,14 @@
 #include "options.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <limits>
 #include <string_view>
 #include <variant>
 
 #include "base/text.hpp"
+#include "hazard/ranges.hpp"
 #include "moos/command_line.hpp"
 
 namespace gen_hazards {
@@ -64,8 +66,19 @@ void apply_polygon(const ArgContext& c) {
     c.fail("not a valid convex polygon: " + without_polygon_prefix(error->message, c.value));
     return;
   }
-  c.cli.config.regions.push_back(
-      Region{std::get<mission::ConvexPolygon>(std::move(parsed)), std::string(c.arg)});
+  auto& polygon = std::get<mission::ConvexPolygon>(parsed);
+  // Every object must load in the sensor, which refuses positions beyond the bound; a polygon
+  // beyond it (1e300 once gave "covers only -nan of its bounding box") is refused here.
+  const mission::Bounds box = polygon.bounds();
+  const double reach_m = std::max({std::abs(box.min_m.x), std::abs(box.min_m.y),
+                                   std::abs(box.max_m.x), std::abs(box.max_m.y)});
+  if (!(reach_m <= hazard::kMaxObjectCoordinate_m)) {
+    c.fail("the polygon reaches " + base::format_g(reach_m) + " m from the origin, beyond the " +
+           base::format_g(hazard::kMaxObjectCoordinate_m) +
+           " m that the sensor accepts for an object (kMaxObjectCoordinate_m)");
+    return;
+  }
+  c.cli.config.regions.push_back(Region{std::move(polygon), std::string(c.arg)});
 }
 
 void apply_objects(const ArgContext& c) {

@@ -66,7 +66,8 @@ const moos::SwitchTable& switch_table(Command command) {
     t.rules = {switch_rule("--host", SwitchKind::kText, "host"),
                switch_rule("--port", SwitchKind::kInteger, "port", moos::kConnectPortRange),
                switch_rule("--name", SwitchKind::kText, "name"),
-               switch_rule("--connect-timeout", SwitchKind::kNumber, "timeout", moos::kPositive),
+               switch_rule("--connect-timeout", SwitchKind::kNumber, "timeout",
+                           moos::kRealWaitRange),
                switch_rule("--moos_time_warp", SwitchKind::kNumber, "time warp",
                            moos::kTimeWarpRange),
                moos::help_switch_rule()};
@@ -74,7 +75,8 @@ const moos::SwitchTable& switch_table(Command command) {
       t.rules.push_back(switch_rule("--string", SwitchKind::kFlag, ""));
     } else {
       t.rules.push_back(switch_rule("--count", SwitchKind::kInteger, "count", kCountRange));
-      t.rules.push_back(switch_rule("--timeout", SwitchKind::kNumber, "timeout", moos::kPositive));
+      t.rules.push_back(
+          switch_rule("--timeout", SwitchKind::kNumber, "timeout", moos::kRealWaitRange));
     }
     // "--host= needs a host" for an empty text, "bad port: --port=0" for a refused number.
     t.bad_value = [](const std::string& arg, const moos::SwitchRule& r) {

@@ -118,15 +118,15 @@ void Hub::process_packets(ConnectionId id, double now) {
 
 void Hub::handle_identification(ConnectionId id, const std::vector<moos::Message>& packet,
                                 double now) {
+  const std::optional<std::string> refusal = db_.handshake_refusal(packet);
   const bool accepted = db_.connect(id, packet, moos_time(now));
   if (!accepted) {
-    // The POISON is already queued; tell why in the log with the name that was asked for.
-    const std::string name = packet.empty() ? std::string() : packet.front().sval;
+    // The POISON is already queued; tell why in the log, as the POISON does.
+    const bool no_name = packet.empty() || packet.front().sval.empty();
     collect_database_output(now);
     close(id,
-          name.empty() ? std::string("handshake refused: no client name")
-                       : "handshake refused: " +
-                             base::escape_for_log(moos::duplicate_name_reason(name)),
+          no_name ? std::string("handshake refused: no client name")
+                  : "handshake refused: " + base::escape_for_log(refusal.value_or("")),
           now, Action::Kind::kCloseAfterSend);
     return;
   }

@@ -43,6 +43,7 @@ using ConnectionId = moos::ClientId;
 // The database defaults the command line shows (options.cpp).
 using moos::kDefaultCommunity;
 using moos::kDefaultMaxPendingBytes;
+using moos::kDefaultMaxStoredBytes;
 
 /// Largest packet a client may send, in bytes. Sized from libMOOS: an asynchronous client
 /// sends its whole backlog as one packet, and its outbox holds up to 2,048 messages

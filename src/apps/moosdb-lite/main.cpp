@@ -124,6 +124,7 @@ int main(int argc, char** argv) {
   config.database.community = options.community;
   config.database.hostname = host_name();
   config.database.max_pending_bytes = options.max_output_bytes;
+  config.database.max_stored_bytes = options.max_stored_bytes;
   config.time_warp = options.time_warp;
   config.banner_timeout_s = options.banner_timeout_s;
   config.handshake_timeout_s = options.handshake_timeout_s;

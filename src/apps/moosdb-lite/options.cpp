@@ -103,6 +103,9 @@ const std::vector<OptionDoc>& option_docs() {
       {"--memory-budget-bytes=N", "bytes all clients together may hold in the server (unsent "
                                   "output, partial packets) before the largest holder is dropped "
                                   "(default " + std::to_string(kDefaultMemoryBudgetBytes) + ")"},
+      {"--max-stored-bytes=N", "bytes the stored variables (names, last values) may hold; a "
+                               "write or registration beyond is refused (default " +
+                                   std::to_string(kDefaultMaxStoredBytes) + ")"},
       {"--banner-timeout=S", "seconds a new connection has to send the protocol banner (default " +
                                  base::format_g(kDefaultBannerTimeout_s) + ")"},
       {"--handshake-timeout=S", "seconds to send the identification after the banner (default " +
@@ -152,6 +155,7 @@ const moos::SwitchTable& switch_table() {
         switch_rule("--max-packet-bytes", SwitchKind::kUnsigned, bytes, byte_range),
         switch_rule("--max-output-bytes", SwitchKind::kUnsigned, bytes, byte_range),
         switch_rule("--memory-budget-bytes", SwitchKind::kUnsigned, bytes, byte_range),
+        switch_rule("--max-stored-bytes", SwitchKind::kUnsigned, bytes, byte_range),
         switch_rule("--banner-timeout", SwitchKind::kNumber, "expected seconds > 0",
                     moos::kPositive),
         switch_rule("--handshake-timeout", SwitchKind::kNumber, "expected seconds > 0",
@@ -209,6 +213,7 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
   cli.max_packet_bytes = v.whole("--max-packet-bytes");
   cli.max_output_bytes = v.whole("--max-output-bytes");
   cli.memory_budget_bytes = v.whole("--memory-budget-bytes");
+  cli.max_stored_bytes = v.whole("--max-stored-bytes");
   cli.banner_timeout_s = v.number("--banner-timeout");
   cli.handshake_timeout_s = v.number("--handshake-timeout");
   cli.notes = v.notes;
@@ -232,6 +237,7 @@ ServerOptions resolve_options(const CommandLine& cli, const std::string& mission
   options.max_packet_bytes = kDefaultServerMaxPacketBytes;
   options.max_output_bytes = kDefaultMaxPendingBytes;
   options.memory_budget_bytes = kDefaultMemoryBudgetBytes;
+  options.max_stored_bytes = kDefaultMaxStoredBytes;
   options.banner_timeout_s = kDefaultBannerTimeout_s;
   options.handshake_timeout_s = kDefaultHandshakeTimeout_s;
 
@@ -276,6 +282,7 @@ ServerOptions resolve_options(const CommandLine& cli, const std::string& mission
   if (cli.max_packet_bytes) options.max_packet_bytes = *cli.max_packet_bytes;
   if (cli.max_output_bytes) options.max_output_bytes = *cli.max_output_bytes;
   if (cli.memory_budget_bytes) options.memory_budget_bytes = *cli.memory_budget_bytes;
+  if (cli.max_stored_bytes) options.max_stored_bytes = *cli.max_stored_bytes;
   if (cli.banner_timeout_s) options.banner_timeout_s = *cli.banner_timeout_s;
   if (cli.handshake_timeout_s) options.handshake_timeout_s = *cli.handshake_timeout_s;
   // ClientTimeout 0 means "never" (spec 1.9 has no such value; we say it explicitly).

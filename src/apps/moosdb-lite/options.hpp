@@ -58,6 +58,7 @@ struct CommandLine {
   std::optional<std::size_t> max_packet_bytes;
   std::optional<std::size_t> max_output_bytes;
   std::optional<std::size_t> memory_budget_bytes;
+  std::optional<std::size_t> max_stored_bytes;
   std::optional<double> banner_timeout_s;
   std::optional<double> handshake_timeout_s;
   bool help = false;
@@ -81,6 +82,7 @@ struct ServerOptions {
   std::size_t max_packet_bytes = 0;
   std::size_t max_output_bytes = 0;
   std::size_t memory_budget_bytes = 0;  ///< over every client's unsent output and partial packets
+  std::size_t max_stored_bytes = 0;     ///< the variables' names and last values
   double banner_timeout_s = 0.0;
   double handshake_timeout_s = 0.0;
 };

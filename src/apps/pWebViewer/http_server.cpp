@@ -67,6 +67,7 @@ bool HttpServer::start(const HttpOptions& options, std::string* error) {
   const std::size_t threads = options.max_clients + kSpareThreads;
   server_->new_task_queue = [threads] { return new httplib::ThreadPool(threads); };
   server_->set_write_timeout(kWriteTimeout_s, 0);
+  server_->set_payload_max_length(kMaxRequestBodyBytes);  // 413; a longer body is not kept
   // An idle keep-alive connection holds a pool thread: let it go soon, so that a page's parallel
   // file requests never keep another page waiting for long.
   server_->set_keep_alive_timeout(kKeepAliveIdle_s);

@@ -41,6 +41,9 @@ class HttpServer {
   static constexpr int kStartWaitSteps = 5000;
   static constexpr double kKeepAlive_s = 1.0;
   static constexpr int kWriteTimeout_s = 5;
+  /// The largest request body accepted, bytes (issue 12). Only a button press has a body, and
+  /// it needs none; without a bound httplib keeps whatever body a client sends in memory.
+  static constexpr std::size_t kMaxRequestBodyBytes = 4096;
 
   /// `press(n)` is called on a server thread; true when button n exists.
   HttpServer(EventHub& hub, std::function<bool(int)> press);

@@ -65,6 +65,10 @@ struct LineReader {
       if (detail::has_control_byte(value)) {
         reject(field_value(key, value) + " contains a control byte");
       }
+      if (value.size() > kMaxLabelBytes) {
+        reject(field_value(key, value) + " is longer than " + std::to_string(kMaxLabelBytes) +
+               " bytes (kMaxLabelBytes)");
+      }
       label = std::string(value);
     } else if (key == "type") {
       if (base::iequals(value, "hazard")) {

@@ -41,6 +41,18 @@ TEST(GenHazardsOptions, BadPolygonsAreErrorsNamingTheArgument_Spec12_4) {
                              "--polygon=0,0:10,10");
 }
 
+// Objects beyond the sensor's coordinate bound would be refused by every reader (issue 12).
+TEST(GenHazardsOptions, APolygonBeyondTheObjectBoundIsAnErrorNamingIt_Issue12) {
+  expect_single_error_naming({"--polygon=0,0:1e300,0:1e300,1e300"},
+                             "--polygon=0,0:1e300,0:1e300,1e300");
+  const CommandLine far = parse({"--polygon=0,0:2e8,0:2e8,2e8"});
+  ASSERT_EQ(far.errors.size(), 1u);
+  EXPECT_NE(far.errors[0].find("reaches 2e+08 m from the origin, beyond the 1e+08 m"),
+            std::string::npos)
+      << far.errors[0];
+  EXPECT_TRUE(parse({"--polygon=-1e8,-1e8:1e8,-1e8:1e8,1e8"}).errors.empty());
+}
+
 TEST(GenHazardsOptions, ObjectsTakeAWholeCountAndHazardOrBenignInAnyCase) {
   const CommandLine cli =
       parse({kBox, "--objects=5,hazard", "--objects= 10 , Benign", "--objects=0,HAZARD"});

@@ -119,6 +119,28 @@ TEST(CliWithoutServer, NoServerMeansExitThree) {
   EXPECT_NE(poke.err.find("no connection"), std::string::npos);
 }
 
+TEST(CliWithoutServer, AHostThatDoesNotResolveMeansExitThreeNamingIt) {
+  const RunResult poke = run_cli(
+      {"poke", "--host=no-such-host.invalid", "--connect-timeout=0.5", "X=1"});
+  EXPECT_EQ(poke.exit_code, 3);
+  EXPECT_NE(poke.err.find("no connection to no-such-host.invalid:9000"), std::string::npos)
+      << poke.err;
+  EXPECT_NE(poke.err.find("cannot resolve host no-such-host.invalid"), std::string::npos)
+      << poke.err;
+}
+
+// The longest wait allowed still waits: its deadline does not overflow.
+TEST_F(CliWithServer, TheLongestTimeoutsStillWaitForTheMessage_Issue12) {
+  auto watch = Child::spawn(MOOS_CLI_PATH, {"watch", port_arg, "--name=patient", "--count=1",
+                                            "--timeout=1e8", "--connect-timeout=1e8", "LATE"});
+  ASSERT_TRUE(watch.has_value());
+  ASSERT_TRUE(wait_for_client(server->port(), "patient"));
+  const RunResult poke = run_cli({"poke", port_arg, "--connect-timeout=1e8", "LATE=1"});
+  EXPECT_EQ(poke.exit_code, 0) << poke.err;
+  EXPECT_EQ(watch->wait(kRun_s), 0) << watch->stderr_text();
+  EXPECT_EQ(alog_entries(watch->stdout_text()).size(), 1u);
+}
+
 TEST(CliUsage, BadUsageExitsOneAndHelpExitsZero) {
   const RunResult bad = run_cli({"poke"});
   EXPECT_EQ(bad.exit_code, 1);

@@ -5,6 +5,7 @@
 
 #include "MoosCli_Info.hpp"
 #include "moos/alog.hpp"
+#include "moos/limits.hpp"
 #include "doc_tables.hpp"
 #include "moos_cli.hpp"
 
@@ -66,6 +67,21 @@ TEST(MoosCliOptions, EachSwitchProblemNamesSwitchAndValue) {
   EXPECT_EQ(error, "unknown option for watch: --timeout");
   EXPECT_FALSE(parse_options({"poke", "--moos_time_warp=401", "A=1"}, &error));
   EXPECT_EQ(error, "bad time warp: --moos_time_warp=401");
+}
+
+// A wait beyond kMaxRealWait_s overflowed the steady clock's deadline: moos-cli gave up at
+// once (issue 12). The bound itself is accepted.
+TEST(MoosCliOptions, WaitsBeyondTheLargestAreRefused_Issue12) {
+  std::string error;
+  EXPECT_FALSE(parse_options({"watch", "A", "--timeout=1e300"}, &error));
+  EXPECT_EQ(error, "bad timeout: --timeout=1e300");
+  EXPECT_FALSE(parse_options({"watch", "A", "--connect-timeout=1e18"}, &error));
+  EXPECT_EQ(error, "bad timeout: --connect-timeout=1e18");
+  EXPECT_FALSE(parse_options({"poke", "--connect-timeout=1e300", "A=1"}, &error));
+  const auto longest =
+      parse_options({"watch", "A", "--timeout=1e8", "--connect-timeout=1e8"}, &error);
+  ASSERT_TRUE(longest.has_value()) << error;
+  EXPECT_EQ(longest->timeout_s, std::optional<double>(moos::kMaxRealWait_s));
 }
 
 TEST(MoosCliOptions, HelpWinsOverAProblemBesideIt) {

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <functional>
 #include <iostream>
 #include <string>
 #include <thread>
@@ -141,23 +142,34 @@ TEST(MoosdbLiteBadInput, TruncatedPacketThenDisconnectIsDiscardedWithReason) {
   others.expect_everything_received();  // 999 never appears
 }
 
-TEST(MoosdbLiteBadInput, StructurallyMalformedMessageDropsTheSender_2_7) {
+/// `name` joins and sends a NOTIFY of 999 to BYSTANDER made malformed by `corrupt`: it must be
+/// dropped with `reason` in the log, and the bystanders must get everything else.
+void expect_a_corrupt_packet_drops_its_sender(const std::string& name,
+                                              const std::function<void(std::string&)>& corrupt,
+                                              const std::string& reason) {
   MoosdbServer server(MOOSDB_LITE_PATH, {kPatientClients});
   ASSERT_TRUE(server.ok());
   Bystanders others;
   others.join(server.port());
   others.post();
   RawClient bad;
-  ASSERT_TRUE(bad.join(server.port(), "pMalformed", true));
-  std::string packet = moos::encode_packet({notify_double("BYSTANDER", 999, "pMalformed")});
-  packet[9 + 10] = '\x40';  // source length now runs past the end of the message
+  ASSERT_TRUE(bad.join(server.port(), name, true));
+  std::string packet = moos::encode_packet({notify_double("BYSTANDER", 999, name)});
+  corrupt(packet);
   ASSERT_TRUE(bad.send_bytes(packet));
   EXPECT_TRUE(bad.wait_closed(kArrivalTimeout_s));
-  EXPECT_TRUE(server.wait_for_log("client \"pMalformed\"", kArrivalTimeout_s));
-  EXPECT_TRUE(server.wait_for_log("bad packet (message 0: string source runs past the end of the message",
-                                  kArrivalTimeout_s));
+  EXPECT_TRUE(server.wait_for_log("client \"" + name + "\"", kArrivalTimeout_s));
+  EXPECT_TRUE(server.wait_for_log(reason, kArrivalTimeout_s));
   others.post();
-  others.expect_everything_received();
+  others.expect_everything_received();  // 999 never appears
+}
+
+TEST(MoosdbLiteBadInput, StructurallyMalformedMessageDropsTheSender_2_7) {
+  expect_a_corrupt_packet_drops_its_sender(
+      "pMalformed",
+      // the source's length now runs past the end of the message
+      [](std::string& packet) { packet[9 + 10] = '\x40'; },
+      "bad packet (message 0: string source runs past the end of the message");
 }
 
 TEST(MoosdbLiteBadInput, SemanticallyMalformedMessageIsRefusedAndTheClientStays) {
@@ -331,6 +343,102 @@ TEST(MoosdbLiteBadInput, FloodOfOneHundredThousandMessagesLosesNothing) {
     }
   }
   EXPECT_EQ(sync_next, kFlood);
+  others.post();
+  others.expect_everything_received();
+}
+
+// A name is repeated in DB_CLIENTS, DB_EVENT and every log line about its client (issue 12).
+TEST(MoosdbLiteBadInput, ATenKilobyteClientNameIsPoisonedNamingTheBound_Issue12) {
+  MoosdbServer server(MOOSDB_LITE_PATH, {kPatientClients});
+  ASSERT_TRUE(server.ok());
+  Bystanders others;
+  others.join(server.port());
+  RawClient verbose;
+  ASSERT_TRUE(verbose.connect(server.port()));
+  const auto reply = verbose.handshake(std::string(10 * 1024, 'n'), true, moos_now());
+  ASSERT_TRUE(reply);
+  ASSERT_FALSE(reply->empty());
+  EXPECT_EQ(reply->front().type, mt::kPoison);
+  EXPECT_EQ(reply->front().sval, "A client name of 10240 bytes is longer than the 1024 allowed");
+  EXPECT_TRUE(verbose.wait_closed(kArrivalTimeout_s));
+  EXPECT_TRUE(server.wait_for_log(
+      "handshake refused: A client name of 10240 bytes is longer than the 1024 allowed",
+      kArrivalTimeout_s));
+  others.post();
+  others.expect_everything_received();
+  const std::string log = server.stderr_text();
+  EXPECT_EQ(log.find(std::string(2000, 'n')), std::string::npos) << "the name reached the log";
+}
+
+TEST(MoosdbLiteBadInput, ANegativeMessageCountDropsTheSender) {
+  expect_a_corrupt_packet_drops_its_sender(
+      "pNegative",
+      [](std::string& packet) { packet.replace(4, 4, "\xff\xff\xff\xff"); },  // count -1
+      "bad packet (negative message count -1 at byte 4)");
+}
+
+TEST(MoosdbLiteBadInput, GarbageInsteadOfAnIdentificationIsPoisoned) {
+  MoosdbServer server(MOOSDB_LITE_PATH, {kPatientClients});
+  ASSERT_TRUE(server.ok());
+  Bystanders others;
+  others.join(server.port());
+  RawClient garbled;
+  ASSERT_TRUE(garbled.connect(server.port()));
+  std::string ident = moos::encode_packet({identification("pGarbled", true, moos_now())});
+  ident[9 + 10] = '\x40';  // the first string's length runs past the message
+  ASSERT_TRUE(garbled.send_bytes(moos::protocol_banner() + ident));
+  const auto reply = garbled.read_packet();
+  ASSERT_TRUE(reply);
+  ASSERT_FALSE(reply->empty());
+  EXPECT_EQ(reply->front().type, mt::kPoison);
+  EXPECT_TRUE(garbled.wait_closed(kArrivalTimeout_s));
+  EXPECT_TRUE(server.wait_for_log("in the handshake", kArrivalTimeout_s));
+  others.post();
+  others.expect_everything_received();
+}
+
+// A few bytes of a header, then nothing: the partial header is no sign of life for ever.
+TEST(MoosdbLiteBadInput, PartOfAHeaderThenSilenceIsDroppedAtTheClientTimeout) {
+  MoosdbServer server(MOOSDB_LITE_PATH, {"--moos_timeout=1"});
+  ASSERT_TRUE(server.ok());
+  RawClient stall;
+  ASSERT_TRUE(stall.join(server.port(), "pStall", true));
+  ASSERT_TRUE(stall.send_bytes(std::string("\x40\x00\x00\x00", 4)));
+  const double start = steady_now_s();
+  EXPECT_TRUE(stall.wait_closed(kArrivalTimeout_s));
+  EXPECT_GE(steady_now_s() - start, 0.9);
+  EXPECT_TRUE(server.wait_for_log("client \"pStall\"", kArrivalTimeout_s));
+  EXPECT_TRUE(server.wait_for_log("nothing received for more than 1 s", kArrivalTimeout_s));
+  RawClient later;  // the server still serves
+  ASSERT_TRUE(later.join(server.port(), "pLater", false));
+  EXPECT_TRUE(later.exchange({null_message("pLater")}));
+}
+
+// Ever new variable names: the store is bounded (--max-stored-bytes); beyond it a write is
+// refused with a logged reason, the writer stays, and the others are served (issue 12).
+TEST(MoosdbLiteBadInput, NewVariablesBeyondTheStoreBoundAreRefusedAndTheWriterStays_Issue12) {
+  MoosdbServer server(MOOSDB_LITE_PATH, {"--max-stored-bytes=200000", kPatientClients});
+  ASSERT_TRUE(server.ok());
+  Bystanders others;
+  others.join(server.port());
+  others.post();
+  RawClient hoarder;
+  ASSERT_TRUE(hoarder.join(server.port(), "pHoardVars", false));
+  for (int i = 0; i < 100; ++i)  // 100 variables of 10 kB: 1 MB asked, 200 kB allowed
+    ASSERT_TRUE(hoarder.exchange(
+        {notify_string("HOARD_" + std::to_string(i), std::string(10000, 'h'), "pHoardVars")}));
+  EXPECT_TRUE(server.wait_for_log("client \"pHoardVars\"", kArrivalTimeout_s));
+  EXPECT_TRUE(server.wait_for_log("refused: the store would hold more than its 200000 bytes",
+                                  kArrivalTimeout_s));
+  RawClient reader;
+  ASSERT_TRUE(reader.join(server.port(), "pReadVars", false));
+  const auto first = reader.exchange({registration("HOARD_0", 0, "pReadVars")});
+  ASSERT_TRUE(first);
+  EXPECT_EQ(first->size(), 2u) << "the NULL and HOARD_0's snapshot: it was stored";
+  const auto last = reader.exchange({registration("HOARD_99", 0, "pReadVars")});
+  ASSERT_TRUE(last);
+  EXPECT_EQ(last->size(), 1u) << "the NULL only: HOARD_99 was refused";
+  ASSERT_TRUE(hoarder.exchange({null_message("pHoardVars")})) << "the writer stays";
   others.post();
   others.expect_everything_received();
 }
