@@ -29,8 +29,11 @@ constexpr std::string_view kFrameworkKeys[] = {
     "SORTMAILBYTIME", "CATCHCOMMANDMESSAGES", "TERM_REPORT_INTERVAL", "MAX_APPCAST_EVENTS",
     "MAX_APPCAST_RUN_WARNINGS", "MOOS_TIME_WARP"};
 
+/// Mission text as it may appear in a warning: cut and escaped (issue 12, log injection).
+std::string shown(std::string_view text) { return base::escape_for_log(base::excerpt(text)); }
+
 std::string place(const ConfigLine& line) {
-  return " (" + line.file + ":" + std::to_string(line.line) + ")";
+  return " (" + shown(line.file) + ":" + std::to_string(line.line) + ")";
 }
 
 /// libMOOS booleans: TRUE in any case, or a number > 0 (spec 6.2).
@@ -47,12 +50,13 @@ std::optional<std::size_t> clipped_count(const ConfigLine& line, long long lo, l
   const auto n = base::parse_integer(line.value, std::numeric_limits<long long>::min(),
                                      std::numeric_limits<long long>::max());
   if (!n) {
-    s.config_warnings.push_back("Invalid " + base::to_upper(line.key) + ": " + line.value + place(line));
+    s.config_warnings.push_back("Invalid " + base::to_upper(line.key) + ": " + shown(line.value) +
+                                place(line));
     return std::nullopt;
   }
   const long long clipped = std::clamp(*n, lo, hi);
   if (clipped != *n)
-    s.config_warnings.push_back(base::to_upper(line.key) + " " + line.value + " clipped to " +
+    s.config_warnings.push_back(base::to_upper(line.key) + " " + shown(line.value) + " clipped to " +
                                 std::to_string(clipped) + place(line));
   return static_cast<std::size_t>(clipped);
 }
@@ -60,6 +64,7 @@ std::optional<std::size_t> clipped_count(const ConfigLine& line, long long lo, l
 void apply_framework_line(const ConfigLine& line, AppSettings& s, bool& block_app_tick) {
   const std::string key = base::to_upper(line.key);
   const std::string& v = line.value;
+  const std::string shown_value = shown(v);  // v as the warnings quote it
   auto warn = [&](const std::string& what) { s.config_warnings.push_back(what + place(line)); };
   if (key == "APPTICK") {
     const auto f = base::parse_number(v);
@@ -67,7 +72,7 @@ void apply_framework_line(const ConfigLine& line, AppSettings& s, bool& block_ap
       s.app_tick_hz = *f;
       block_app_tick = true;
     } else {
-      warn("Invalid AppTick: " + v + " (must be a number in [" + base::format_g(kMinAppTickHz) +
+      warn("Invalid AppTick: " + shown_value + " (must be a number in [" + base::format_g(kMinAppTickHz) +
            ", " + base::format_g(kMaxAppTickHz) + "] Hz)");
     }
   } else if (key == "IDLEAPPTICK") {
@@ -75,34 +80,34 @@ void apply_framework_line(const ConfigLine& line, AppSettings& s, bool& block_ap
     if (f && is_valid_app_tick(*f)) {
       s.idle_app_tick_hz = *f;
     } else {
-      warn("Invalid IdleAppTick: " + v + " (must be a number in [" +
+      warn("Invalid IdleAppTick: " + shown_value + " (must be a number in [" +
            base::format_g(kMinAppTickHz) + ", " + base::format_g(kMaxAppTickHz) + "] Hz)");
     }
   } else if (key == "COMMSTICK") {
     if (auto t = base::parse_integer(v, 1, kMaxCommsTickHz)) s.comms_tick_hz = static_cast<int>(*t);
-    else warn("Invalid CommsTick: " + v + " (must be a whole number in 1..200)");
+    else warn("Invalid CommsTick: " + shown_value + " (must be a whole number in 1..200)");
   } else if (key == "MAXAPPTICK") {
     const auto f = base::parse_number(v);
-    if (!f || *f < 0) warn("Invalid MaxAppTick: " + v + " (must be a number >= 0)");
+    if (!f || *f < 0) warn("Invalid MaxAppTick: " + shown_value + " (must be a number >= 0)");
   } else if (key == "ITERATEMODE") {
     const auto mode = base::parse_integer(v, 0, 2);
-    if (!mode) warn("Invalid IterateMode: " + v + " (must be 0, 1 or 2)");
-    else if (*mode != 0) warn("IterateMode " + v + " is not supported; mode 0 (AppTick) is used");
+    if (!mode) warn("Invalid IterateMode: " + shown_value + " (must be 0, 1 or 2)");
+    else if (*mode != 0) warn("IterateMode " + shown_value + " is not supported; mode 0 (AppTick) is used");
   } else if (key == "SORTMAILBYTIME") {
     if (auto b = moos_bool(v)) s.sort_mail_by_time = *b;
-    else warn("Invalid SortMailByTime: " + v + " (must be true or false)");
+    else warn("Invalid SortMailByTime: " + shown_value + " (must be true or false)");
   } else if (key == "CATCHCOMMANDMESSAGES") {
     const auto b = moos_bool(v);
-    if (!b) warn("Invalid CatchCommandMessages: " + v + " (must be true or false)");
+    if (!b) warn("Invalid CatchCommandMessages: " + shown_value + " (must be true or false)");
     else if (*b) warn("CatchCommandMessages is not supported; command messages are ordinary mail");
   } else if (key == "TERM_REPORT_INTERVAL") {
     const auto f = base::parse_number(v);
     if (!f) {
-      warn("Invalid TERM_REPORT_INTERVAL: " + v);
+      warn("Invalid TERM_REPORT_INTERVAL: " + shown_value);
     } else {
       s.term_report_interval_s = std::clamp(*f, 0.0, kMaxTermReportInterval_s);
       if (s.term_report_interval_s != *f)
-        warn("TERM_REPORT_INTERVAL " + v + " clipped to " + base::format_g(s.term_report_interval_s));
+        warn("TERM_REPORT_INTERVAL " + shown_value + " clipped to " + base::format_g(s.term_report_interval_s));
     }
   } else if (key == "MAX_APPCAST_EVENTS") {
     if (auto n = clipped_count(line, 0, static_cast<long long>(AppCast::kMaxEventsLimit), s))
@@ -111,7 +116,7 @@ void apply_framework_line(const ConfigLine& line, AppSettings& s, bool& block_ap
     if (auto n = clipped_count(line, 0, kMaxAppCastRunWarnings, s)) s.max_appcast_run_warnings = *n;
   } else if (key == "MOOS_TIME_WARP") {
     if (const auto w = parse_time_warp(v)) s.time_warp = *w;
-    else warn("Invalid moos_time_warp: " + v + " (must be a number in (0, 400])");
+    else warn("Invalid moos_time_warp: " + shown_value + " (must be a number in (0, 400])");
   }
 }
 
@@ -129,8 +134,8 @@ void apply_block(const ProcessBlock& block, const AppTraits& traits, AppSettings
     if (same == chosen.end()) {
       chosen.push_back(&line);
     } else if (traits.repeated_parameters == RepeatedParameter::kLastWinsWithWarning) {
-      s.config_warnings.push_back(line.key + " repeated" + place(line) + ": the last value, " +
-                                  line.value + ", is used");
+      s.config_warnings.push_back(shown(line.key) + " repeated" + place(line) +
+                                  ": the last value, " + shown(line.value) + ", is used");
       *same = &line;
     }
   }
@@ -147,19 +152,20 @@ void apply_globals(const MissionFile& mission, AppSettings& s) {
     if (auto p = base::parse_integer(base::remove_blanks(port->value), 1, kMaxPort))
       s.server_port = static_cast<int>(*p);
     else
-      s.config_warnings.push_back("Invalid ServerPort: " + port->value + place(*port));
+      s.config_warnings.push_back("Invalid ServerPort: " + shown(port->value) + place(*port));
   }
   if (const ConfigLine* warp = mission.global_line("MOOSTimeWarp")) {
     if (const auto w = parse_time_warp(base::remove_blanks(warp->value)))
       s.time_warp = *w;
     else
-      s.config_warnings.push_back("Invalid MOOSTimeWarp: " + warp->value + place(*warp));
+      s.config_warnings.push_back("Invalid MOOSTimeWarp: " + shown(warp->value) + place(*warp));
   }
   if (const ConfigLine* term = mission.global_line("TERM_REPORTING")) {
     if (auto b = base::parse_bool(term->value))
       s.term_reporting = *b;
     else
-      s.config_warnings.push_back("Invalid value for TERM_REPORTING: " + term->value + place(*term));
+      s.config_warnings.push_back("Invalid value for TERM_REPORTING: " + shown(term->value) +
+                                  place(*term));
   }
 }
 
@@ -468,7 +474,7 @@ void MoosApp::report_config_warning(const std::string& text) {
 }
 
 void MoosApp::report_unhandled_config_line(const ConfigLine& line) {
-  report_config_warning("Unhandled config line: " + line.key + "=" + line.value);
+  report_config_warning("Unhandled config line: " + shown(line.key) + "=" + shown(line.value));
 }
 
 void MoosApp::report_run_warning(const std::string& text) {

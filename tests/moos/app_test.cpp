@@ -179,6 +179,18 @@ TEST(AppSettingsResolve, AppTicksThatStallOrBusyLoopAreRefused_Issue12) {
                 .app_tick_hz, 1000.0);
 }
 
+TEST(AppSettingsResolve, MissionTextInWarningsIsEscaped_Issue12) {
+  std::vector<MissionError> errors;
+  const auto m = mission("ProcessConfig = pEcho\n{\n AppTick = 4\x1b[2J\n IterateMode = 1\x7f\n}\n", &errors);
+  const auto s = resolve_app_settings(AppTraits{"pEcho", 4.0}, parse_command_line({"pEcho", "m.moos"}), &m);
+  const std::vector<std::string> expected = {
+      "Invalid AppTick: 4\\x1B[2J (must be a number in [0.001, 1000] Hz) (m.moos:3)",
+      "Invalid IterateMode: 1\\x7F (must be 0, 1 or 2) (m.moos:4)"};
+  for (const auto& w : expected)
+    EXPECT_EQ(std::count(s.config_warnings.begin(), s.config_warnings.end(), w), 1) << w;
+  for (const auto& w : s.config_warnings) EXPECT_EQ(w.find('\x1b'), std::string::npos) << w;
+}
+
 TEST(AppSettingsResolve, RepeatedFrameworkParameterFirstWinsOrLastWithWarning_D36) {
   std::vector<MissionError> errors;
   const auto m = mission("Community = a\nProcessConfig = pEcho\n{\n AppTick = 2\n apptick = 8\n}\n", &errors);
