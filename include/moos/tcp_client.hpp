@@ -166,8 +166,7 @@ class TcpClient final : public Comms {
   mutable std::condition_variable changed_;
   ConnectionState state_ = ConnectionState::kNotStarted;
   std::vector<Message> outbox_;
-  bool holding_sends_ = false;  ///< hold_sends(): the outbox's first message does not wake
-  bool wake_deferred_ = false;  ///< ... and release_sends() must
+  bool holding_sends_ = false;  ///< hold_sends(): the outbox waits for release_sends()
   std::vector<Message> inbox_;
   std::size_t inbox_bytes_ = 0;  ///< approximate, see inbox_cost()
   std::int32_t next_id_ = 0;

@@ -233,15 +233,12 @@ bool TcpClient::transmit(Message msg) {
     std::lock_guard<std::mutex> lock(mutex_);
     if (state_ != ConnectionState::kConnected) return false;
     msg.id = next_id_++;  // every posted message consumes an id (spec 2.5)
-    was_empty = outbox_.empty();
+    was_empty = outbox_.empty() && !holding_sends_;
     outbox_.push_back(std::move(msg));
-    if (was_empty && holding_sends_) {
-      wake_deferred_ = true;
-      was_empty = false;
-    }
   }
   // Only the first message of a batch wakes the comms thread: it takes the whole outbox, and it
-  // never sleeps past its next send slot while the outbox holds anything (serve()).
+  // never sleeps past its next send slot while the outbox holds anything (serve()). While sends
+  // are held, release_sends() wakes it.
   if (was_empty) wake();
   return true;
 }
@@ -256,7 +253,7 @@ void TcpClient::release_sends() {
   {
     std::lock_guard<std::mutex> lock(mutex_);
     holding_sends_ = false;
-    wake_now = std::exchange(wake_deferred_, false);
+    wake_now = !outbox_.empty();
   }
   if (wake_now) wake();
 }
@@ -480,7 +477,8 @@ void TcpClient::serve() {
       std::vector<Message> batch;
       {
         std::lock_guard<std::mutex> lock(mutex_);
-        if (timing_due || !outbox_.empty()) {
+        // Held messages wait for the release, unless a TIMING goes out anyway.
+        if (timing_due || (!outbox_.empty() && !holding_sends_)) {
           if (timing_due) batch.push_back(timing_message());  // TIMING first (spec 4.3 step 2)
           for (auto& m : outbox_) batch.push_back(std::move(m));
           outbox_.clear();
@@ -500,7 +498,8 @@ void TcpClient::serve() {
     double wait = last_timing_sent_ ? *last_timing_sent_ + kTimingInterval_real_s - now : 0.0;
     {
       std::lock_guard<std::mutex> lock(mutex_);
-      if (!outbox_.empty() && write_buffer_.empty()) wait = std::min(wait, next_send_allowed_ - now);
+      if (!outbox_.empty() && !holding_sends_ && write_buffer_.empty())
+        wait = std::min(wait, next_send_allowed_ - now);
     }
     pollfd p[2] = {{socket_, static_cast<short>(POLLIN | (write_buffer_.empty() ? 0 : POLLOUT)), 0},
                    {wake_read_, POLLIN, 0}};

@@ -1,189 +1,10 @@
 // TcpClient against a scripted fake server on 127.0.0.1 (wire spec 1.4-1.9, 4.3, 4.4, 4.6 and the
 // vectors E, F, I, N of section 8). Every wait is bounded; the server socket is closed by RAII.
-#include <gtest/gtest.h>
-
-#include <arpa/inet.h>
-#include <netinet/in.h>
-#include <poll.h>
-#include <sys/socket.h>
-#include <unistd.h>
-
-#include <chrono>
-#include <optional>
-#include <thread>
-
-#include "moos/app.hpp"
-#include "moos/codec.hpp"
-#include "moos/tcp_client.hpp"
-#include "child_process.hpp"
+#include "tcp_client_fixture.hpp"
 
 namespace moos {
 namespace test {
-std::string hex_bytes(const std::string& spaced_hex);  // comms_test.cpp
-}  // namespace test
-
 namespace {
-
-using test::hex_bytes;
-
-constexpr double kT0 = 1700000000.0;
-constexpr double kWait_s = 5.0;  // upper bound for anything that should happen quickly
-
-using test_support::steady_now_s;
-
-/// A one-connection-at-a-time TCP server driven by the test.
-class FakeServer {
- public:
-  FakeServer() {
-    listen_ = ::socket(AF_INET, SOCK_STREAM, 0);
-    const int one = 1;
-    setsockopt(listen_, SOL_SOCKET, SO_REUSEADDR, &one, sizeof one);
-    sockaddr_in sa{};
-    sa.sin_family = AF_INET;
-    sa.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    sa.sin_port = 0;
-    ::bind(listen_, reinterpret_cast<sockaddr*>(&sa), sizeof sa);
-    ::listen(listen_, 8);
-    socklen_t len = sizeof sa;
-    getsockname(listen_, reinterpret_cast<sockaddr*>(&sa), &len);
-    port_ = ntohs(sa.sin_port);
-  }
-  ~FakeServer() {
-    drop();
-    ::close(listen_);
-  }
-  int port() const { return port_; }
-
-  bool accept(double timeout_s = kWait_s) {
-    drop();
-    pollfd p{listen_, POLLIN, 0};
-    if (::poll(&p, 1, static_cast<int>(timeout_s * 1000)) <= 0) return false;
-    conn_ = ::accept(listen_, nullptr, nullptr);
-    buffer_.clear();
-    return conn_ >= 0;
-  }
-  void drop() {
-    if (conn_ >= 0) ::close(conn_);
-    conn_ = -1;
-  }
-
-  std::optional<std::string> read_exact(std::size_t n, double timeout_s = kWait_s) {
-    const double deadline = steady_now_s() + timeout_s;
-    while (buffer_.size() < n) {
-      if (!fill(deadline)) return std::nullopt;
-    }
-    std::string out = buffer_.substr(0, n);
-    buffer_.erase(0, n);
-    return out;
-  }
-  std::optional<std::string> read_packet_bytes(double timeout_s = kWait_s) {
-    auto header = read_exact(4, timeout_s);
-    if (!header) return std::nullopt;
-    std::uint32_t total = 0;
-    for (int i = 3; i >= 0; --i) total = (total << 8) | static_cast<unsigned char>((*header)[static_cast<std::size_t>(i)]);
-    auto rest = read_exact(total - 4, timeout_s);
-    if (!rest) return std::nullopt;
-    return *header + *rest;
-  }
-  std::optional<std::vector<Message>> read_packet(double timeout_s = kWait_s) {
-    auto bytes = read_packet_bytes(timeout_s);
-    if (!bytes) return std::nullopt;
-    return decode_packet(*bytes);
-  }
-  /// Reads packets until one holds a message that is not TIMING; returns all its messages.
-  std::optional<std::vector<Message>> read_non_timing(double timeout_s = kWait_s) {
-    const double deadline = steady_now_s() + timeout_s;
-    while (steady_now_s() < deadline) {
-      auto pkt = read_packet(deadline - steady_now_s());
-      if (!pkt) return std::nullopt;
-      for (const auto& m : *pkt)
-        if (m.type != msg_type::kTiming) return pkt;
-    }
-    return std::nullopt;
-  }
-  void send(const std::vector<Message>& messages) { send_bytes(encode_packet(messages)); }
-  void send_bytes(const std::string& bytes) {
-    ::send(conn_, bytes.data(), bytes.size(), MSG_NOSIGNAL);
-  }
-  /// True once the peer has closed (EOF) within the timeout.
-  bool peer_closed(double timeout_s = kWait_s) {
-    const double deadline = steady_now_s() + timeout_s;
-    while (steady_now_s() < deadline) {
-      pollfd p{conn_, POLLIN, 0};
-      if (::poll(&p, 1, 50) > 0) {
-        char buf[4096];
-        const ssize_t n = ::recv(conn_, buf, sizeof buf, 0);
-        if (n <= 0) return true;
-      }
-    }
-    return false;
-  }
-
- private:
-  bool fill(double deadline) {
-    const double left = deadline - steady_now_s();
-    if (left <= 0 || conn_ < 0) return false;
-    pollfd p{conn_, POLLIN, 0};
-    if (::poll(&p, 1, static_cast<int>(left * 1000) + 1) <= 0) return false;
-    char buf[65536];
-    const ssize_t n = ::recv(conn_, buf, sizeof buf, 0);
-    if (n <= 0) return false;
-    buffer_.append(buf, static_cast<std::size_t>(n));
-    return true;
-  }
-
-  int listen_ = -1;
-  int conn_ = -1;
-  int port_ = 0;
-  std::string buffer_;
-};
-
-Message welcome(double skew, const std::string& community = "alpha",
-                const std::string& host = "dbhost") {
-  Message w;
-  w.type = msg_type::kWelcome;
-  w.data_type = data_type::kDouble;
-  w.source_aux = "hostname=" + host;
-  w.community = community;
-  w.time = kT0;
-  w.dval = skew;
-  w.sval = "asynchronous";
-  return w;
-}
-
-Message timing_echo(double client_time, double server_time, double delay_s = 0.0) {
-  Message t;
-  t.type = msg_type::kTiming;
-  t.data_type = data_type::kDouble;
-  t.key = "_async_timing";
-  t.time = client_time;
-  t.dval = server_time;
-  t.dval2 = delay_s;
-  return t;
-}
-
-class TcpClientTest : public ::testing::Test {
- protected:
-  TcpClientOptions options(const std::string& name = "pTest") {
-    TcpClientOptions o;
-    o.host = "127.0.0.1";
-    o.port = server.port();
-    o.name = name;
-    o.clock = &clock;
-    o.own_hostname = "clienthost";
-    return o;
-  }
-  /// Accepts, checks the banner and identification, answers WELCOME.
-  void handshake(double skew = 0.001) {
-    ASSERT_TRUE(server.accept());
-    ASSERT_TRUE(server.read_exact(32).has_value());
-    ASSERT_TRUE(server.read_packet().has_value());
-    server.send({welcome(skew)});
-  }
-
-  ManualClock clock{kT0};
-  FakeServer server;
-};
 
 TEST_F(TcpClientTest, BannerAndIdentificationMatchVectorE_1_4_1_5) {
   TcpClient client(options());
@@ -294,34 +115,6 @@ TEST_F(TcpClientTest, RegistrationsAndNotificationsGoOutWithIncreasingIds_2_5) {
   EXPECT_EQ(got[3].data_type, data_type::kBinary);
   EXPECT_EQ(got[3].sval, std::string("\x00\xff\x10\x7f", 4));
   EXPECT_EQ(got[3].id, 3);
-}
-
-// An app cycle's postings leave in one packet (Comms::hold_sends), however long the cycle.
-TEST_F(TcpClientTest, HeldSendsLeaveTogetherInOnePacket) {
-  TcpClient client(options());
-  ASSERT_TRUE(client.start());
-  handshake();
-  ASSERT_TRUE(client.wait_until_connected(kWait_s));
-  client.hold_sends();
-  for (const char* var : {"A", "B", "C"}) {
-    ASSERT_TRUE(client.notify(var, 1.0));
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));  // unheld, A would leave alone
-  }
-  client.release_sends();
-  const double deadline = steady_now_s() + kWait_s;
-  std::vector<std::vector<std::string>> packets;  // the notifications of each packet
-  std::size_t seen = 0;
-  while (seen < 3 && steady_now_s() < deadline) {
-    auto pkt = server.read_packet(deadline - steady_now_s());
-    ASSERT_TRUE(pkt.has_value());
-    std::vector<std::string> keys;
-    for (auto& m : *pkt)
-      if (m.type == msg_type::kNotify) keys.push_back(m.key);
-    seen += keys.size();
-    if (!keys.empty()) packets.push_back(keys);
-  }
-  ASSERT_EQ(packets.size(), 1u);
-  EXPECT_EQ(packets[0], (std::vector<std::string>{"A", "B", "C"}));
 }
 
 TEST_F(TcpClientTest, FirstPacketLeadsWithTimingMatchingVectorI_4_3) {
@@ -525,76 +318,6 @@ TEST_F(TcpClientTest, RefusedConnectionIsRetriedOncePerMoosSecond_1_9) {
   EXPECT_FALSE(client.last_error().empty());
 }
 
-TEST_F(TcpClientTest, AFullInboxDropsTheOldestMailAndCountsIt_Issue12) {
-  TcpClientOptions o = options();
-  o.max_inbox_messages = 8;
-  TcpClient client(o);
-  ASSERT_TRUE(client.start());
-  handshake();
-  ASSERT_TRUE(client.wait_until_connected(kWait_s));
-  std::vector<Message> flood;
-  for (int i = 0; i < 20; ++i) flood.push_back(make_double_notify("N", i, "s", kT0));
-  server.send(flood);
-  const double deadline = steady_now_s() + kWait_s;
-  while (client.mail_dropped() + 0u < 12u && steady_now_s() < deadline)
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  const std::vector<Message> kept = client.fetch();
-  // 20 arrived, the bound is 8: the oldest were dropped down to 3/4 of the bound, the newest kept.
-  ASSERT_FALSE(kept.empty());
-  EXPECT_LE(kept.size(), 8u);
-  EXPECT_EQ(kept.size() + client.mail_dropped(), 20u);
-  EXPECT_EQ(kept.back().dval, 19.0);
-  EXPECT_EQ(kept.front().dval, 20.0 - static_cast<double>(kept.size()));
-}
-
-TEST_F(TcpClientTest, TheInboxByteBoundHoldsForLargeMessages_Issue12) {
-  TcpClientOptions o = options();
-  o.max_inbox_bytes = 64 * 1024;
-  TcpClient client(o);
-  ASSERT_TRUE(client.start());
-  handshake();
-  ASSERT_TRUE(client.wait_until_connected(kWait_s));
-  for (int i = 0; i < 10; ++i)
-    server.send({make_string_notify("BIG", std::string(20000, static_cast<char>('a' + i)), "s", kT0)});
-  const double deadline = steady_now_s() + kWait_s;
-  while (client.mail_dropped() < 7u && steady_now_s() < deadline)
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  const std::vector<Message> kept = client.fetch();
-  std::size_t bytes = 0;
-  for (const Message& m : kept) bytes += m.sval.size();
-  EXPECT_LE(bytes, o.max_inbox_bytes);
-  EXPECT_EQ(kept.size() + client.mail_dropped(), 10u);
-  ASSERT_FALSE(kept.empty());
-  EXPECT_EQ(kept.back().sval[0], 'j');  // the newest survives
-}
-
-TEST_F(TcpClientTest, AnAppShowsTheDroppedMailAsOneStandingRunWarning_Issue12) {
-  TcpClientOptions o = options();
-  o.max_inbox_messages = 8;
-  TcpClient client(o);
-  ASSERT_TRUE(client.start());
-  handshake();
-  ASSERT_TRUE(client.wait_until_connected(kWait_s));
-  MoosApp app(AppTraits{"pQuiet", 4.0});
-  AppSettings settings;
-  settings.app_name = settings.moos_name = "pQuiet";
-  ASSERT_TRUE(app.start(client, settings));
-  for (int flood = 1; flood <= 2; ++flood) {
-    std::vector<Message> burst;
-    for (int i = 0; i < 20; ++i) burst.push_back(make_double_notify("N", i, "s", kT0));
-    server.send(burst);
-    const double deadline = steady_now_s() + kWait_s;
-    while (client.mail_dropped() < 14u * static_cast<unsigned>(flood) && steady_now_s() < deadline)
-      std::this_thread::sleep_for(std::chrono::milliseconds(5));
-    app.cycle();
-  }
-  EXPECT_EQ(client.mail_dropped(), 28u);
-  ASSERT_EQ(app.appcast().run_warning_count(), 1u);  // the count grows in one warning
-  EXPECT_EQ(app.appcast().run_warnings().begin()->first,
-            "Mail arrived faster than the app read it: 28 oldest unread messages dropped in all "
-            "(inbox bounds)");
-}
-
 TEST(TcpClientOptionsCheck, InvalidOptionsAreRefusedAtStart) {
   TcpClientOptions o;
   o.name = "";
@@ -613,4 +336,5 @@ TEST(TcpClientOptionsCheck, InvalidOptionsAreRefusedAtStart) {
 }
 
 }  // namespace
+}  // namespace test
 }  // namespace moos

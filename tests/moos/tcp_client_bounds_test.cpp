@@ -1,0 +1,116 @@
+// TcpClient's bounds and batching against the fake server: the inbox bounds (issue 12) and one
+// packet per app cycle (Comms::hold_sends, issue 14).
+#include "tcp_client_fixture.hpp"
+
+namespace moos {
+namespace test {
+namespace {
+
+// An app cycle's postings leave in one packet (Comms::hold_sends), however long the cycle.
+TEST_F(TcpClientTest, HeldSendsLeaveTogetherInOnePacket) {
+  TcpClient client(options());
+  ASSERT_TRUE(client.start());
+  handshake();
+  ASSERT_TRUE(client.wait_until_connected(kWait_s));
+  ASSERT_TRUE(server.read_packet(kWait_s).has_value());  // the first TIMING; the next in 0.75 s
+  client.hold_sends();
+  for (const char* var : {"A", "B", "C"}) {
+    ASSERT_TRUE(client.notify(var, 1.0));
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));  // unheld, A would leave alone
+  }
+  client.release_sends();
+  const double deadline = steady_now_s() + kWait_s;
+  std::vector<std::vector<std::string>> packets;  // the notifications of each packet
+  std::size_t seen = 0;
+  while (seen < 3 && steady_now_s() < deadline) {
+    auto pkt = server.read_packet(deadline - steady_now_s());
+    ASSERT_TRUE(pkt.has_value());
+    std::vector<std::string> keys;
+    for (auto& m : *pkt)
+      if (m.type == msg_type::kNotify) keys.push_back(m.key);
+    seen += keys.size();
+    if (!keys.empty()) packets.push_back(keys);
+  }
+  std::string listed;
+  for (const auto& keys : packets) {
+    listed += "[";
+    for (const auto& k : keys) listed += k + " ";
+    listed += "]";
+  }
+  ASSERT_EQ(packets.size(), 1u) << listed;
+  EXPECT_EQ(packets[0], (std::vector<std::string>{"A", "B", "C"}));
+}
+
+TEST_F(TcpClientTest, AFullInboxDropsTheOldestMailAndCountsIt_Issue12) {
+  TcpClientOptions o = options();
+  o.max_inbox_messages = 8;
+  TcpClient client(o);
+  ASSERT_TRUE(client.start());
+  handshake();
+  ASSERT_TRUE(client.wait_until_connected(kWait_s));
+  std::vector<Message> flood;
+  for (int i = 0; i < 20; ++i) flood.push_back(make_double_notify("N", i, "s", kT0));
+  server.send(flood);
+  const double deadline = steady_now_s() + kWait_s;
+  while (client.mail_dropped() + 0u < 12u && steady_now_s() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  const std::vector<Message> kept = client.fetch();
+  // 20 arrived, the bound is 8: the oldest were dropped down to 3/4 of the bound, the newest kept.
+  ASSERT_FALSE(kept.empty());
+  EXPECT_LE(kept.size(), 8u);
+  EXPECT_EQ(kept.size() + client.mail_dropped(), 20u);
+  EXPECT_EQ(kept.back().dval, 19.0);
+  EXPECT_EQ(kept.front().dval, 20.0 - static_cast<double>(kept.size()));
+}
+
+TEST_F(TcpClientTest, TheInboxByteBoundHoldsForLargeMessages_Issue12) {
+  TcpClientOptions o = options();
+  o.max_inbox_bytes = 64 * 1024;
+  TcpClient client(o);
+  ASSERT_TRUE(client.start());
+  handshake();
+  ASSERT_TRUE(client.wait_until_connected(kWait_s));
+  for (int i = 0; i < 10; ++i)
+    server.send({make_string_notify("BIG", std::string(20000, static_cast<char>('a' + i)), "s", kT0)});
+  const double deadline = steady_now_s() + kWait_s;
+  while (client.mail_dropped() < 7u && steady_now_s() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  const std::vector<Message> kept = client.fetch();
+  std::size_t bytes = 0;
+  for (const Message& m : kept) bytes += m.sval.size();
+  EXPECT_LE(bytes, o.max_inbox_bytes);
+  EXPECT_EQ(kept.size() + client.mail_dropped(), 10u);
+  ASSERT_FALSE(kept.empty());
+  EXPECT_EQ(kept.back().sval[0], 'j');  // the newest survives
+}
+
+TEST_F(TcpClientTest, AnAppShowsTheDroppedMailAsOneStandingRunWarning_Issue12) {
+  TcpClientOptions o = options();
+  o.max_inbox_messages = 8;
+  TcpClient client(o);
+  ASSERT_TRUE(client.start());
+  handshake();
+  ASSERT_TRUE(client.wait_until_connected(kWait_s));
+  MoosApp app(AppTraits{"pQuiet", 4.0});
+  AppSettings settings;
+  settings.app_name = settings.moos_name = "pQuiet";
+  ASSERT_TRUE(app.start(client, settings));
+  for (int flood = 1; flood <= 2; ++flood) {
+    std::vector<Message> burst;
+    for (int i = 0; i < 20; ++i) burst.push_back(make_double_notify("N", i, "s", kT0));
+    server.send(burst);
+    const double deadline = steady_now_s() + kWait_s;
+    while (client.mail_dropped() < 14u * static_cast<unsigned>(flood) && steady_now_s() < deadline)
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    app.cycle();
+  }
+  EXPECT_EQ(client.mail_dropped(), 28u);
+  ASSERT_EQ(app.appcast().run_warning_count(), 1u);  // the count grows in one warning
+  EXPECT_EQ(app.appcast().run_warnings().begin()->first,
+            "Mail arrived faster than the app read it: 28 oldest unread messages dropped in all "
+            "(inbox bounds)");
+}
+
+}  // namespace
+}  // namespace test
+}  // namespace moos
