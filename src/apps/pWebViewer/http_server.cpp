@@ -1,5 +1,7 @@
 #include "http_server.hpp"
 
+#include <httplib.h>
+
 #include <chrono>
 
 #include "base/text.hpp"
@@ -9,7 +11,9 @@
 namespace web_viewer {
 
 HttpServer::HttpServer(EventHub& hub, std::function<bool(int)> press)
-    : hub_(hub), press_(std::move(press)), server_(std::make_unique<BoundedHttpServer>(kMaxRequestBodyBytes)) {}
+    : hub_(hub),
+      press_(std::move(press)),
+      server_(std::make_unique<BoundedHttpServer>(kMaxRequestBodyBytes)) {}
 
 HttpServer::~HttpServer() { stop(); }
 
