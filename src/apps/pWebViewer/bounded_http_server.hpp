@@ -19,7 +19,8 @@
 // - Reads wait at most the server's read timeout, writes its write timeout (httplib's
 //   defaults, or set_read_timeout / set_write_timeout); an idle keep-alive connection is closed
 //   after its keep-alive timeout, or at once when the server stops; at most
-//   keep_alive_max_count requests per connection, as httplib does.
+//   keep_alive_max_count requests per connection, as httplib does. Responses, the event
+//   stream's chunks among them, are written through the same stream.
 // - Connections: set_pool_threads(n) serves at most n at once; at most kMaxWaitingConnections
 //   more wait for a thread; beyond that a new connection gets 503 and is closed at once, so
 //   queued connections cannot grow without bound either.
