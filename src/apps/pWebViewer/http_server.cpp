@@ -5,12 +5,15 @@
 #include <chrono>
 
 #include "base/text.hpp"
+#include "bounded_http_server.hpp"
 #include "web_files.hpp"
 
 namespace web_viewer {
 
 HttpServer::HttpServer(EventHub& hub, std::function<bool(int)> press)
-    : hub_(hub), press_(std::move(press)), server_(std::make_unique<httplib::Server>()) {}
+    : hub_(hub),
+      press_(std::move(press)),
+      server_(std::make_unique<BoundedHttpServer>(kMaxRequestBodyBytes)) {}
 
 HttpServer::~HttpServer() { stop(); }
 
@@ -65,9 +68,8 @@ void HttpServer::add_routes() {
 
 bool HttpServer::start(const HttpOptions& options, std::string* error) {
   const std::size_t threads = options.max_clients + kSpareThreads;
-  server_->new_task_queue = [threads] { return new httplib::ThreadPool(threads); };
+  server_->set_pool_threads(threads);
   server_->set_write_timeout(kWriteTimeout_s, 0);
-  server_->set_payload_max_length(kMaxRequestBodyBytes);  // 413; a longer body is not kept
   // An idle keep-alive connection holds a pool thread: let it go soon, so that a page's parallel
   // file requests never keep another page waiting for long.
   server_->set_keep_alive_timeout(kKeepAliveIdle_s);

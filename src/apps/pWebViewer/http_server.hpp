@@ -7,6 +7,10 @@
 //   max_clients + kSpareThreads threads, so that max_clients event streams never starve requests
 //   for files (a browser fetches up to 6 at once); idle keep-alive connections close after
 //   kKeepAliveIdle_s. It returns false (with `error`) when the address cannot be bound.
+// - Memory stays bounded whatever a client sends (issue 12): a request head of at most
+//   BoundedHttpServer::kMaxRequestHeadBytes (400 beyond it), a body of at most
+//   kMaxRequestBodyBytes (413), at most kMaxWaitingConnections connections waiting for a thread
+//   (503 beyond them); bounded_http_server.hpp.
 // - GET / and GET /<file>: the embedded files (web_files.hpp), 404 for anything else.
 // - GET /events: text/event-stream; the hub's events, one `data:` line each; a comment line
 //   every kKeepAlive_s when there is nothing to send. 503 when max_clients streams are open.
@@ -21,11 +25,9 @@
 
 #include "event_hub.hpp"
 
-namespace httplib {
-class Server;
-}
-
 namespace web_viewer {
+
+class BoundedHttpServer;
 
 struct HttpOptions {
   std::string bind_address = "127.0.0.1";
@@ -64,7 +66,7 @@ class HttpServer {
   EventHub& hub_;
   std::function<bool(int)> press_;
   std::string replay_json_;
-  std::unique_ptr<httplib::Server> server_;
+  std::unique_ptr<BoundedHttpServer> server_;
   std::thread thread_;
   int port_ = 0;
 };

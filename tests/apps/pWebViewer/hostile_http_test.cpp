@@ -7,9 +7,17 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <atomic>
+#include <cerrno>
 #include <cstdint>
+#include <fstream>
+#include <sstream>
 #include <string>
+#include <thread>
+#include <vector>
 
+#include "base/text.hpp"
+#include "bounded_http_server.hpp"
 #include "child_process.hpp"
 #include "event_hub.hpp"
 #include "http_server.hpp"
@@ -18,29 +26,59 @@
 namespace web_viewer {
 namespace {
 
-/// Sends `request` on a fresh connection and returns what the server answers until it closes
-/// the connection or `timeout_s` passes.
-std::string raw_exchange(int port, const std::string& request, double timeout_s = 5.0) {
+/// A socket connected to the server on loopback, or -1.
+int connect_to(int port) {
   const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
   sockaddr_in address{};
   address.sin_family = AF_INET;
   address.sin_port = htons(static_cast<std::uint16_t>(port));
   address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  if (::connect(fd, reinterpret_cast<sockaddr*>(&address), sizeof address) == 0) return fd;
+  ::close(fd);
+  return -1;
+}
+
+/// What the server sends on `fd` until it closes the connection or `timeout_s` passes (a reset
+/// ends it too).
+std::string read_reply(int fd, double timeout_s) {
+  timeval tick{0, 100000};
+  ::setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &tick, sizeof tick);
+  const double end = test_support::steady_now_s() + timeout_s;
   std::string reply;
-  if (::connect(fd, reinterpret_cast<sockaddr*>(&address), sizeof address) == 0 &&
-      ::send(fd, request.data(), request.size(), MSG_NOSIGNAL) >= 0) {
-    timeval tick{0, 100000};
-    ::setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &tick, sizeof tick);
-    const double end = test_support::steady_now_s() + timeout_s;
-    char buffer[4096];
-    while (test_support::steady_now_s() < end) {
-      const ssize_t n = ::recv(fd, buffer, sizeof buffer, 0);
-      if (n == 0) break;
-      if (n > 0) reply.append(buffer, static_cast<std::size_t>(n));
-    }
+  char buffer[4096];
+  while (test_support::steady_now_s() < end) {
+    const ssize_t n = ::recv(fd, buffer, sizeof buffer, 0);
+    if (n == 0 || (n < 0 && errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR)) break;
+    if (n > 0) reply.append(buffer, static_cast<std::size_t>(n));
   }
+  return reply;
+}
+
+/// Sends `request` on a fresh connection and returns what the server answers until it closes
+/// the connection or `timeout_s` passes.
+std::string raw_exchange(int port, const std::string& request, double timeout_s = 5.0) {
+  const int fd = connect_to(port);
+  if (fd < 0) return "";
+  std::string reply;
+  if (::send(fd, request.data(), request.size(), MSG_NOSIGNAL) >= 0)
+    reply = read_reply(fd, timeout_s);
   ::close(fd);
   return reply;
+}
+
+/// A field of /proc/self/status in kB ("VmRSS", "VmHWM"), or -1.
+long long own_status_kb(const std::string& field) {
+  std::ifstream in("/proc/self/status");
+  std::stringstream text;
+  text << in.rdbuf();
+  for (const auto line : base::split(text.str(), '\n')) {
+    if (!base::starts_with(line, field + ":")) continue;
+    std::string_view value = base::trim(line.substr(field.size() + 1));
+    if (!base::ends_with(value, "kB")) return -1;
+    value.remove_suffix(2);
+    return base::parse_integer(base::trim(value), 0, 1LL << 40).value_or(-1);
+  }
+  return -1;
 }
 
 /// The status line's code ("HTTP/1.1 404 Not Found" gives 404), or 0.
@@ -129,6 +167,150 @@ TEST_F(HostileHttp, ARequestBodyOverTheBoundIsRefused_Issue12) {
             "close\r\n\r\nok");
   EXPECT_EQ(status_of(small), 204);
   EXPECT_EQ(presses, 1);
+}
+
+/// Whether a send's result leaves the connection open: it sent, or its wait ran out (a server
+/// that reads slowly is still reading).
+bool sent_or_waited(ssize_t result) {
+  return result >= 0 || errno == EAGAIN || errno == EWOULDBLOCK || errno == EINTR;
+}
+
+/// A request head of `lines` header lines of `line_bytes` bytes each (name and CRLF included),
+/// then the blank line.
+std::string head_with_lines(std::size_t lines, std::size_t line_bytes) {
+  std::string head = "GET /index.html HTTP/1.1\r\nHost: 127.0.0.1\r\nConnection: close\r\n";
+  for (std::size_t i = 0; i < lines; ++i) {
+    const std::string name = "X-Line-" + std::to_string(i) + ": ";
+    head += name + std::string(line_bytes - name.size() - 2, 'h') + "\r\n";
+  }
+  return head + "\r\n";
+}
+
+// httplib 0.11 kept every header line, with no count limit; the head is now cut at
+// kMaxRequestHeadBytes. A head just under it is served.
+TEST_F(HostileHttp, AHeadWithinTheBoundIsServedAndOneBeyondItIsRefused_Issue12) {
+  constexpr std::size_t kLine = 8000;  // under httplib's 8 KiB per line
+  const std::size_t within = BoundedHttpServer::kMaxRequestHeadBytes / kLine - 1;
+  EXPECT_EQ(status_of(raw_exchange(port, head_with_lines(within, kLine))), 200);
+  const int beyond = status_of(raw_exchange(port, head_with_lines(within + 2, kLine)));
+  EXPECT_TRUE(beyond == 400 || beyond == 0) << beyond;  // 0: closed without an answer
+  expect_still_serving();
+}
+
+// The flood of issue 12: clients that send 8 kB header lines without end took the viewer from
+// 9 MB to 775 MB resident. Each flooding connection is now answered 400 (or closed) once its
+// head passes the bound; the process stays within kFloodMemory_kB of where it started and
+// serves the page during and after the flood.
+TEST_F(HostileHttp, AHeaderFloodKeepsMemoryBoundedAndThePageServed_Issue12) {
+  constexpr int kFlooders = 4;
+  constexpr double kFlood_s = 4.0;
+  constexpr long long kFloodMemory_kB = 50 * 1024;
+  const long long before_kB = own_status_kb("VmRSS");
+  ASSERT_GT(before_kB, 0);
+  const std::string line = "X-Flood: " + std::string(8000, 'f') + "\r\n";
+  const double end = test_support::steady_now_s() + kFlood_s;
+  std::atomic<int> connections{0}, refused{0}, wrong_answers{0};
+  std::vector<std::thread> flooders;
+  for (int i = 0; i < kFlooders; ++i) {
+    flooders.emplace_back([&] {
+      while (test_support::steady_now_s() < end) {
+        const int fd = connect_to(port);
+        if (fd < 0) continue;
+        ++connections;
+        timeval send_wait{1, 0};
+        ::setsockopt(fd, SOL_SOCKET, SO_SNDTIMEO, &send_wait, sizeof send_wait);
+        const std::string start = "GET /index.html HTTP/1.1\r\nHost: 127.0.0.1\r\n";
+        bool open = sent_or_waited(::send(fd, start.data(), start.size(), MSG_NOSIGNAL));
+        while (open && test_support::steady_now_s() < end)
+          open = sent_or_waited(::send(fd, line.data(), line.size(), MSG_NOSIGNAL));
+        const int status = status_of(read_reply(fd, 1.0));
+        if (!open) ++refused;  // the server stopped reading and closed the connection
+        if (status != 0 && status != 400) ++wrong_answers;
+        ::close(fd);
+      }
+    });
+  }
+  int pages = 0, pages_served = 0;
+  while (test_support::steady_now_s() < end) {
+    ++pages;
+    if (status_of(raw_exchange(port, get("/index.html"))) == 200) ++pages_served;
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  for (std::thread& flooder : flooders) flooder.join();
+  const long long peak_kB = own_status_kb("VmHWM");
+  EXPECT_LT(peak_kB - before_kB, kFloodMemory_kB) << "from " << before_kB << " kB";
+  EXPECT_GT(refused.load(), kFlooders) << connections.load() << " connections";
+  EXPECT_EQ(wrong_answers.load(), 0);
+  EXPECT_EQ(pages_served, pages);
+  expect_still_serving();
+}
+
+// A chunked body is not bounded by httplib 0.11's payload limit: the stream cuts it.
+TEST_F(HostileHttp, AChunkedBodyOverTheBoundIsRefused_Issue12) {
+  std::string request =
+      "POST /button/1 HTTP/1.1\r\nHost: 127.0.0.1\r\nTransfer-Encoding: chunked\r\n"
+      "Connection: close\r\n\r\n";
+  const std::string chunk(1000, 'c');
+  for (int i = 0; i < 1000; ++i) request += "3e8\r\n" + chunk + "\r\n";
+  request += "0\r\n\r\n";
+  const int status = status_of(raw_exchange(port, request));
+  EXPECT_TRUE(status == 400 || status == 413 || status == 0) << status;
+  EXPECT_EQ(presses, 0);
+  expect_still_serving();
+}
+
+// Connections beyond the pool's threads wait, up to kMaxWaitingConnections; beyond those a new
+// connection is answered 503 at once instead of being queued without bound. Whatever the
+// threads' timing, no more than threads + kMaxWaitingConnections connections are kept.
+TEST_F(HostileHttp, ConnectionsBeyondThePoolAndItsWaitingRoomGet503_Issue12) {
+  const std::size_t threads = HttpOptions{}.max_clients + HttpServer::kSpareThreads;
+  const std::size_t kept_at_most = threads + BoundedHttpServer::kMaxWaitingConnections;
+  constexpr std::size_t kSurplus = 16;
+  std::vector<int> sockets;
+  // Each connection starts a request and stops: a thread serving one waits the read timeout
+  // (5 s), longer than this test connects. The pace keeps httplib's short listen backlog from
+  // overflowing (the kernel would then delay connections by its SYN retries).
+  for (std::size_t i = 0; i < kept_at_most + kSurplus; ++i) {
+    const int fd = connect_to(port);
+    ASSERT_GE(fd, 0);
+    ::send(fd, "GET / HTTP/1.1\r\n", 16, MSG_NOSIGNAL);
+    sockets.push_back(fd);
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  // A refused connection's 503 stays readable: count them until the surplus is seen.
+  std::vector<bool> refused(sockets.size(), false);
+  std::size_t busy = 0;
+  const double end = test_support::steady_now_s() + 4.0;
+  while (busy < kSurplus && test_support::steady_now_s() < end) {
+    for (std::size_t i = 0; i < sockets.size(); ++i) {
+      char reply[64] = {};
+      const ssize_t n = refused[i] ? 0 : ::recv(sockets[i], reply, sizeof reply - 1, MSG_DONTWAIT);
+      if (n > 0 && status_of(std::string(reply, static_cast<std::size_t>(n))) == 503) {
+        refused[i] = true;
+        ++busy;
+      }
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  for (const int fd : sockets) ::close(fd);
+  EXPECT_GE(busy, kSurplus);
+  expect_still_serving();
+}
+
+// A client that starts a request and goes silent holds a thread only for httplib's read
+// timeout (5 s), then gets 400 and is closed.
+TEST_F(HostileHttp, AStalledRequestIsClosedAfterTheReadTimeout_Issue12) {
+  constexpr double kReadTimeout_s = 5.0;  // CPPHTTPLIB_READ_TIMEOUT_SECOND
+  const int fd = connect_to(port);
+  ASSERT_GE(fd, 0);
+  const double start = test_support::steady_now_s();
+  ::send(fd, "GET / HTTP/1.1\r\nHost: 127.0.0.1\r\n", 33, MSG_NOSIGNAL);
+  const std::string reply = read_reply(fd, 3 * kReadTimeout_s);
+  const double waited_s = test_support::steady_now_s() - start;
+  ::close(fd);
+  EXPECT_EQ(status_of(reply), 400) << reply.substr(0, 80);
+  EXPECT_GT(waited_s, kReadTimeout_s - 0.5);
+  EXPECT_LT(waited_s, 2 * kReadTimeout_s);
 }
 
 }  // namespace
