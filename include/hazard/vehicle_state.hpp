@@ -7,10 +7,19 @@
 // id), never a joined string (N14); it exists only for objects this vehicle has had in its swath.
 // Timers are std::optional: nullopt means "never happened" (N11).
 // Hot part (read every sensing iteration): pose, setting, sensor-request time, the sorted list of
-// objects currently inside the swath. Cold part: pass counts, credits, queue, counters.
+// objects currently inside the swath. Cold part: the per-object records (pass count and
+// credits), queue, counters.
+// Memory (issue 12): a pair costs one hash node and bucket (about 75 bytes with glibc) plus 16
+// bytes per unused credit (bench/engine/pair_state_bench, docs/robustness.md "Soak"). Pairs and
+// credits must be kept for the whole run (rulings "Credits (D7)", "Passes, dice and
+// reproducibility"), so this is what a long mission grows by per object met and per detection
+// never classified.
+// Rejected alternatives: one map for pass counts and another to a std::deque of credits (the
+// first layout: a deque allocates a 512-byte block and its map for a single credit, about 770
+// bytes per detected pair); an open-addressing table (it would save about a quarter of the
+// per-pair bytes, not worth a hand-made hash table while the credits are kept anyway).
 
 #include <cstdint>
-#include <deque>
 #include <optional>
 #include <string>
 #include <unordered_map>
@@ -62,6 +71,17 @@ struct VehicleCounters {
   int answers = 0;            ///< released
 };
 
+/// What the engine keeps per (vehicle, object) pair once the object was in the swath.
+struct ObjectRecord {
+  /// Sensor events so far (the pass number of the latest event); >= 1.
+  std::uint32_t passes = 0;
+  /// Unused classification credits, oldest first (in pass order, D7): at most
+  /// kMaxCreditsPerObject from detections, plus those a clear returns. Empty holds no memory
+  /// (its buffer is released when the last credit is taken), so an object never detected, or
+  /// whose detections were all classified, costs only its node.
+  std::vector<Credit> credits;
+};
+
 struct VehicleState {
   std::string name;
   std::string variable_suffix;  ///< "_" + upper-cased name
@@ -91,10 +111,9 @@ struct VehicleState {
   /// More than kMaxTrackPoses reports arrived since the last evaluation (warned once).
   bool track_overflowed = false;
 
-  /// Sensor events so far per object (the pass number of the latest event).
-  std::unordered_map<ObjectId, std::uint32_t> passes;
-  /// Unused classification credits per object, oldest first (D7).
-  std::unordered_map<ObjectId, std::deque<Credit>> credits;
+  /// One record per object this vehicle has had in its swath (never removed: the pass count
+  /// keys the dice).
+  std::unordered_map<ObjectId, ObjectRecord> objects;
   ClassifyQueue queue;
   std::optional<double> last_release_s;
   std::optional<double> last_top_s;

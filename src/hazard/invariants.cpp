@@ -21,14 +21,15 @@ std::vector<std::string> Engine::invariant_violations() const {
     for (std::size_t i = 0; i < v.inside.size(); ++i) {
       check(v.inside[i] < field_.size(), who + "inside id out of range");
       check(i == 0 || v.inside[i - 1] < v.inside[i], who + "inside list not sorted");
-      const auto pass = v.passes.find(v.inside[i]);
-      check(pass != v.passes.end() && pass->second >= 1, who + "inside object without a pass");
+      check(v.objects.count(v.inside[i]) == 1, who + "inside object without a pass");
     }
-    for (const auto& [id, list] : v.credits) {
-      const auto pass = v.passes.find(id);
-      check(!list.empty(), who + "empty credit list");
+    for (const auto& [id, record] : v.objects) {
+      const std::vector<Credit>& list = record.credits;
+      check(id < field_.size(), who + "record of an object out of range");
+      check(record.passes >= 1, who + "object record without a pass");
+      check(!list.empty() || list.capacity() == 0, who + "empty credit list holding memory");
       for (std::size_t i = 0; i < list.size(); ++i) {
-        check(pass != v.passes.end() && list[i].pass <= pass->second, who + "credit beyond passes");
+        check(list[i].pass <= record.passes, who + "credit beyond passes");
         check(i == 0 || list[i - 1].pass < list[i].pass, who + "credits not in pass order");
       }
     }
