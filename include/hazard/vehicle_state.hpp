@@ -9,15 +9,17 @@
 // Hot part (read every sensing iteration): pose, setting, sensor-request time, the sorted list of
 // objects currently inside the swath. Cold part: the per-object records (pass count and
 // credits), queue, counters.
-// Memory (issue 12): a pair costs one hash node and bucket (about 75 bytes with glibc) plus 16
-// bytes per unused credit (bench/engine/pair_state_bench, docs/robustness.md "Soak"). Pairs and
-// credits must be kept for the whole run (rulings "Credits (D7)", "Passes, dice and
-// reproducibility"), so this is what a long mission grows by per object met and per detection
-// never classified.
+// Memory (issue 12): a pair costs its hash node and bucket (about 40 bytes with glibc), each
+// unused credit 16 bytes in the vehicle's credit pool (credit_lists.hpp; bench/engine/
+// pair_state_bench, docs/robustness.md "Soak"). Pairs and credits are kept for the whole run
+// (rulings "Credits (D7)", "Passes, dice and reproducibility"): a long mission grows by one
+// record per object met and 16 bytes per detection never classified.
 // Rejected alternatives: one map for pass counts and another to a std::deque of credits (the
 // first layout: a deque allocates a 512-byte block and its map for a single credit, about 770
-// bytes per detected pair); an open-addressing table (it would save about a quarter of the
-// per-pair bytes, not worth a hand-made hash table while the credits are kept anyway).
+// bytes per detected pair); a std::vector of credits per object (about 110 bytes per pair with
+// one credit, but its spare capacity and the smaller buffers it leaves behind as it grows cost
+// 20-40 bytes per credit over the soak, which then failed); an open-addressing table for the
+// records (the records stop growing once a vehicle has met its objects; the credits do not).
 
 #include <cstdint>
 #include <optional>
@@ -28,6 +30,7 @@
 #include <glm/vec2.hpp>
 
 #include "hazard/classify_queue.hpp"
+#include "hazard/credit_lists.hpp"
 #include "hazard/hazard_field.hpp"
 #include "hazard/heading_history.hpp"
 #include "hazard/sensing_track.hpp"
@@ -75,11 +78,9 @@ struct VehicleCounters {
 struct ObjectRecord {
   /// Sensor events so far (the pass number of the latest event); >= 1.
   std::uint32_t passes = 0;
-  /// Unused classification credits, oldest first (in pass order, D7): at most
-  /// kMaxCreditsPerObject from detections, plus those a clear returns. Empty holds no memory
-  /// (its buffer is released when the last credit is taken), so an object never detected, or
-  /// whose detections were all classified, costs only its node.
-  std::vector<Credit> credits;
+  /// Unused classification credits, oldest first (in pass order, D7), in the vehicle's pool:
+  /// at most kMaxCreditsPerObject from detections, plus those a clear returns.
+  CreditList credits;
 };
 
 struct VehicleState {
@@ -114,6 +115,8 @@ struct VehicleState {
   /// One record per object this vehicle has had in its swath (never removed: the pass count
   /// keys the dice).
   std::unordered_map<ObjectId, ObjectRecord> objects;
+  /// The pool holding every record's credits.
+  CreditLists credits;
   ClassifyQueue queue;
   std::optional<double> last_release_s;
   std::optional<double> last_top_s;

@@ -1,6 +1,5 @@
 // Classification (D7, D8, D10, D37): requests against detection credits, the queue, and the
 // rate-limited release of answers.
-#include <algorithm>
 #include <optional>
 #include <string>
 #include <vector>
@@ -29,16 +28,11 @@ std::optional<double> latest(std::optional<double> a, std::optional<double> b) {
 // A label from a request, for a warning: cut and escaped (it is outside text).
 std::string quoted(std::string_view label) { return base::escape_for_log(base::excerpt(label)); }
 
-// The oldest unused credit of the pair (D7), removed; nullopt when it holds none. The last one
-// taken releases the list's buffer (a pair's record stays for its pass count).
+// The oldest unused credit of the pair (D7), removed; nullopt when it holds none.
 std::optional<Credit> take_oldest_credit(VehicleState& v, ObjectId object) {
   const auto record = v.objects.find(object);
   if (record == v.objects.end() || record->second.credits.empty()) return std::nullopt;
-  std::vector<Credit>& list = record->second.credits;
-  const Credit oldest = list.front();
-  list.erase(list.begin());  // at most kMaxCreditsPerObject (+ returned ones) to move
-  if (list.empty()) std::vector<Credit>().swap(list);
-  return oldest;
+  return v.credits.pop_front(record->second.credits);
 }
 
 }  // namespace
@@ -126,10 +120,7 @@ void Engine::clear_queue(std::string_view vname, double now_s, Outputs& out) {
   const std::vector<PendingAnswer> cleared = v.queue.clear();
   for (const PendingAnswer& a : cleared) {
     // The credit goes back in pass order, so the same die is rolled again (rulings "Clear").
-    std::vector<Credit>& list = v.objects[a.object].credits;
-    const auto pos = std::lower_bound(list.begin(), list.end(), a.credit.pass,
-                                      [](const Credit& c, std::uint32_t p) { return c.pass < p; });
-    list.insert(pos, a.credit);
+    v.credits.insert_in_pass_order(v.objects[a.object].credits, a.credit);
   }
   out.events.push_back("Classify queue cleared for " + v.name + " (" +
                        std::to_string(cleared.size()) + " entries)");

@@ -60,8 +60,9 @@ void Engine::roll_detection(VehicleState& v, ObjectId id, double heading_deg, do
 // without a request is reported again but grants no further credit.
 void Engine::grant_credit(VehicleState& v, ObjectId id, ObjectRecord& record,
                           const Credit& credit, Outputs& out) {
-  std::vector<Credit>& list = record.credits;
-  if (list.size() < kMaxCreditsPerObject) return list.push_back(credit);
+  if (record.credits.size < kMaxCreditsPerObject) {
+    return v.credits.push_back(record.credits, credit);
+  }
   ++drops_.credits;
   if (!v.warned_credits_full) {
     out.run_warnings.push_back(v.name + " holds " + std::to_string(kMaxCreditsPerObject) +

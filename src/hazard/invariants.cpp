@@ -23,16 +23,20 @@ std::vector<std::string> Engine::invariant_violations() const {
       check(i == 0 || v.inside[i - 1] < v.inside[i], who + "inside list not sorted");
       check(v.objects.count(v.inside[i]) == 1, who + "inside object without a pass");
     }
+    std::size_t credits_held = 0;
     for (const auto& [id, record] : v.objects) {
-      const std::vector<Credit>& list = record.credits;
+      const std::vector<Credit> list = v.credits.to_vector(record.credits);
+      credits_held += list.size();
       check(id < field_.size(), who + "record of an object out of range");
       check(record.passes >= 1, who + "object record without a pass");
-      check(!list.empty() || list.capacity() == 0, who + "empty credit list holding memory");
+      check(list.size() == record.credits.size, who + "credit list length");
       for (std::size_t i = 0; i < list.size(); ++i) {
         check(list[i].pass <= record.passes, who + "credit beyond passes");
         check(i == 0 || list[i - 1].pass < list[i].pass, who + "credits not in pass order");
       }
     }
+    // Every slot of the pool holds a credit of some list or is free: none is lost.
+    check(credits_held + v.credits.free_slots() == v.credits.slots(), who + "credit pool slots");
     if (v.setting) {
       const SensorSetting& s = *v.setting;
       // Every setting comes from a configuration or sensor request, which starts the hold.

@@ -181,10 +181,10 @@ inline std::string decision_tuple(const Decision& d) {
 
 /// Binomial 5-sigma check helper: |k/n - p| <= 5 sqrt(p(1-p)/n).
 /// The unused credits `v` holds for object `id`, oldest first (empty when it holds none).
-inline const std::vector<Credit>& credits_of(const VehicleState& v, ObjectId id) {
-  static const std::vector<Credit> none;
+inline std::vector<Credit> credits_of(const VehicleState& v, ObjectId id) {
   const auto record = v.objects.find(id);
-  return record == v.objects.end() ? none : record->second.credits;
+  if (record == v.objects.end()) return {};
+  return v.credits.to_vector(record->second.credits);
 }
 
 /// How many objects `v` holds at least one unused credit for.
