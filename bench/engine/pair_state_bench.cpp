@@ -130,7 +130,8 @@ void row(const std::string& text, int passes, double pd) {
 int main() {
   const std::string text = strips_field_text();
   std::printf("%d vehicles, %d objects each in their strip\n\n", kVehicles, kStripObjects);
-  std::printf("| passes | pd | pairs | credits per pair | bytes per pair |\n|---|---|---|---|---|\n");
+  std::printf("| passes | pd | pairs | credits per pair | bytes per pair |\n");
+  std::printf("|---|---|---|---|---|\n");
   row(text, 1, 0.0);
   for (int passes : {1, 2, 4, 16}) row(text, passes, 1.0);
   return 0;

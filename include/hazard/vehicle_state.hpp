@@ -9,7 +9,7 @@
 // Hot part (read every sensing iteration): pose, setting, sensor-request time, the sorted list of
 // objects currently inside the swath. Cold part: the per-object records (pass count and
 // credits), queue, counters.
-// Memory (issue 12): a pair costs its hash node and bucket (about 40 bytes with glibc), each
+// Memory (issue 12): a pair costs its hash node and bucket (about 57 bytes with glibc), each
 // unused credit 16 bytes in the vehicle's credit pool (credit_lists.hpp; bench/engine/
 // pair_state_bench, docs/robustness.md "Soak"). Pairs and credits are kept for the whole run
 // (rulings "Credits (D7)", "Passes, dice and reproducibility"): a long mission grows by one
@@ -17,9 +17,10 @@
 // Rejected alternatives: one map for pass counts and another to a std::deque of credits (the
 // first layout: a deque allocates a 512-byte block and its map for a single credit, about 770
 // bytes per detected pair); a std::vector of credits per object (about 110 bytes per pair with
-// one credit, but its spare capacity and the smaller buffers it leaves behind as it grows cost
-// 20-40 bytes per credit over the soak, which then failed); an open-addressing table for the
-// records (the records stop growing once a vehicle has met its objects; the credits do not).
+// one credit, but with its spare capacity and the smaller buffers it leaves behind as it
+// grows, the soak's heap held 35 bytes more per credit added, and the soak failed); an
+// open-addressing table for the records (it would save part of the 57 bytes, but the records
+// stop growing once a vehicle has met its objects; the credits do not).
 
 #include <cstdint>
 #include <optional>
