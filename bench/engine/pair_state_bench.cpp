@@ -18,10 +18,12 @@
 #include <cstdio>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "hazard/driver.hpp"
 #include "hazard/messages/node_report.hpp"
+#include "scenario/config_text.hpp"
 
 namespace {
 
@@ -56,17 +58,20 @@ std::string strips_field_text() {
   return text;
 }
 
-std::unique_ptr<hazard::Driver> make_driver(const std::string& text) {
-  const std::vector<hazard::ConfigEntry> config = {
-      {"sensor_config", "width=25, exp=4, pclass=0.85", "bench", 1},
-      {"random_seed", "1", "bench", 2},
-      {"show_hazards", "false", "bench", 3},
-      {"show_detections", "false", "bench", 4},
-      {"hazard_file", "field.txt", "bench", 5},
-  };
-  return std::make_unique<hazard::Driver>(
-      hazard::load_configuration(config, [&](const std::string&) { return text; }),
-      hazard::SeedChoice{1, hazard::SeedSource::kCommandLine});
+// The vehicles' pd (0 or 1) comes with their configuration requests (row()).
+constexpr const char* kSensorBlock =
+    "sensor_config = width=25, exp=4, pclass=0.85\n"
+    "random_seed = 1\n"
+    "show_hazards = false\n"
+    "show_detections = 0\n"
+    "hazard_file = strips.txt\n";
+
+std::unique_ptr<hazard::Driver> make_driver(const std::string& field_text) {
+  hazard::EngineSetup setup = hazard::load_configuration(
+      hazard::config_entries(kSensorBlock, "pair_state_bench"),
+      [&field_text](const std::string&) { return field_text; });
+  const hazard::SeedChoice seed{1, hazard::SeedSource::kCommandLine};
+  return std::make_unique<hazard::Driver>(std::move(setup), seed);
 }
 
 void report_all(hazard::Driver& d, double x_m, double now) {
