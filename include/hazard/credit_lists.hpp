@@ -14,6 +14,10 @@
 // heap held 35 bytes more per credit added: its spare capacity and the smaller buffers freed).
 // Costs: push_back, pop_front O(1); insert_in_pass_order and the walks O(list length), which
 // kMaxCreditsPerObject bounds (plus the credits a clear returns).
+// Slot ids are 32-bit: a vehicle holds at most kMaxCreditsPerObject (100) credits per object
+// plus kMaxClassifyQueue returned ones, and a hazard file within kMaxInputFileBytes (512 MiB)
+// holds fewer than 34 million objects (a line takes at least 16 bytes), so fewer than 2^32 - 1
+// slots (kNone is the last id), long after memory has run out (16 bytes each).
 
 #include <cstdint>
 #include <deque>
