@@ -342,10 +342,10 @@ TEST(SensingTrackEngine, TheCreditCarriesThePiecesHeading_D7) {
   d.pose("t", 200, 20, 30);
   d.tick_at(2);
   const ObjectId a = *d.engine.field().find("a"), b = *d.engine.field().find("b");
-  const std::vector<Credit>& s_credits = credits_of(d.vehicle("s"), a);
+  const std::vector<Credit> s_credits = credits_of(d.vehicle("s"), a);
   ASSERT_EQ(s_credits.size(), 1u);
   EXPECT_EQ(s_credits.front().heading_deg, 10.0);
-  const std::vector<Credit>& t_credits = credits_of(d.vehicle("t"), b);
+  const std::vector<Credit> t_credits = credits_of(d.vehicle("t"), b);
   ASSERT_EQ(t_credits.size(), 1u);
   EXPECT_GT(t_credits.front().heading_deg, 0.0);
   EXPECT_LT(t_credits.front().heading_deg, 30.0);
