@@ -15,6 +15,8 @@
 # warm-up; 8 h: hours 8 against hour 2) and every request in the .alog must be answered.
 # Exit 0: passed; 1: failed (the work folder is kept either way). Runs shorter than half an hour
 # leave the windows (an eighth each) without a sample: they fail with "no samples in a window".
+# What the sensor's memory holds over the run: build/release/bench/soak/soak_heap WORK_DIR
+# replays the run's .alog through the engine (soak_heap.cpp).
 set -euo pipefail
 HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 ROOT="$(cd "$HERE/../.." && pwd)"

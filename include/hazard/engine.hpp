@@ -185,7 +185,8 @@ class Engine {
   void clear_queue(std::string_view vname, double now_s, Outputs& out);
   void refuse_queue_full(VehicleState& v, std::string_view label, Outputs& out);
   /// One credit for a detection, unless the pair holds kMaxCreditsPerObject (counted drop).
-  void grant_credit(VehicleState& v, ObjectId id, const Credit& credit, Outputs& out);
+  void grant_credit(VehicleState& v, ObjectId id, ObjectRecord& record, const Credit& credit,
+                    Outputs& out);
   /// The next batch of at most kFieldVisualsPerIteration objects' visuals from visuals_cursor_.
   void post_field_visuals_batch(Outputs& out);
   void post_object_visuals(ObjectId id, Outputs& out) const;

@@ -7,10 +7,22 @@
 // id), never a joined string (N14); it exists only for objects this vehicle has had in its swath.
 // Timers are std::optional: nullopt means "never happened" (N11).
 // Hot part (read every sensing iteration): pose, setting, sensor-request time, the sorted list of
-// objects currently inside the swath. Cold part: pass counts, credits, queue, counters.
+// objects currently inside the swath. Cold part: the per-object records (pass count and
+// credits), queue, counters.
+// Memory (issue 12): a pair costs its hash node and bucket (about 57 bytes with glibc), each
+// unused credit 16 bytes in the vehicle's credit pool (credit_lists.hpp; bench/engine/
+// pair_state_bench, docs/robustness.md "Soak"). Pairs and credits are kept for the whole run
+// (rulings "Credits (D7)", "Passes, dice and reproducibility"): a long mission grows by one
+// record per object met and 16 bytes per detection never classified.
+// Rejected alternatives: one map for pass counts and another to a std::deque of credits (the
+// first layout: a deque allocates a 512-byte block and its map for a single credit, about 770
+// bytes per detected pair); a std::vector of credits per object (about 110 bytes per pair with
+// one credit, but with its spare capacity and the smaller buffers it leaves behind as it
+// grows, the soak's heap held 35 bytes more per credit added, and the soak failed); an
+// open-addressing table for the records (it would save part of the 57 bytes, but the records
+// stop growing once a vehicle has met its objects; the credits do not).
 
 #include <cstdint>
-#include <deque>
 #include <optional>
 #include <string>
 #include <unordered_map>
@@ -19,6 +31,7 @@
 #include <glm/vec2.hpp>
 
 #include "hazard/classify_queue.hpp"
+#include "hazard/credit_lists.hpp"
 #include "hazard/hazard_field.hpp"
 #include "hazard/heading_history.hpp"
 #include "hazard/sensing_track.hpp"
@@ -62,6 +75,15 @@ struct VehicleCounters {
   int answers = 0;            ///< released
 };
 
+/// What the engine keeps per (vehicle, object) pair once the object was in the swath.
+struct ObjectRecord {
+  /// Sensor events so far (the pass number of the latest event); >= 1.
+  std::uint32_t passes = 0;
+  /// Unused classification credits, oldest first (in pass order, D7), in the vehicle's pool:
+  /// at most kMaxCreditsPerObject from detections, plus those a clear returns.
+  CreditList credits;
+};
+
 struct VehicleState {
   std::string name;
   std::string variable_suffix;  ///< "_" + upper-cased name
@@ -91,10 +113,11 @@ struct VehicleState {
   /// More than kMaxTrackPoses reports arrived since the last evaluation (warned once).
   bool track_overflowed = false;
 
-  /// Sensor events so far per object (the pass number of the latest event).
-  std::unordered_map<ObjectId, std::uint32_t> passes;
-  /// Unused classification credits per object, oldest first (D7).
-  std::unordered_map<ObjectId, std::deque<Credit>> credits;
+  /// One record per object this vehicle has had in its swath (never removed: the pass count
+  /// keys the dice).
+  std::unordered_map<ObjectId, ObjectRecord> objects;
+  /// The pool holding every record's credits.
+  CreditLists credits;
   ClassifyQueue queue;
   std::optional<double> last_release_s;
   std::optional<double> last_top_s;

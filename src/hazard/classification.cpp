@@ -1,7 +1,8 @@
 // Classification (D7, D8, D10, D37): requests against detection credits, the queue, and the
 // rate-limited release of answers.
-#include <algorithm>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "hazard/engine.hpp"
 #include "hazard/messages/hazard_report.hpp"
@@ -27,6 +28,13 @@ std::optional<double> latest(std::optional<double> a, std::optional<double> b) {
 // A label from a request, for a warning: cut and escaped (it is outside text).
 std::string quoted(std::string_view label) { return base::escape_for_log(base::excerpt(label)); }
 
+// The oldest unused credit of the pair (D7), removed; nullopt when it holds none.
+std::optional<Credit> take_oldest_credit(VehicleState& v, ObjectId object) {
+  const auto record = v.objects.find(object);
+  if (record == v.objects.end() || record->second.credits.empty()) return std::nullopt;
+  return v.credits.pop_front(record->second.credits);
+}
+
 }  // namespace
 
 void Engine::handle_classify_request(const ClassifyRequest& r, double now_s, Outputs& out) {
@@ -51,16 +59,14 @@ void Engine::handle_classify_request(const ClassifyRequest& r, double now_s, Out
                                "; classify request for " + quoted(r.label) + " refused");
     return;
   }
-  const auto credits = v.credits.find(*object);
-  if (credits == v.credits.end() || credits->second.empty()) {
+  const std::optional<Credit> taken = take_oldest_credit(v, *object);
+  if (!taken) {
     out.run_warnings.push_back("No detection credit for " + v.name + " and label " +
                                quoted(r.label) +
                                " (one classification per detection); refused");
     return;
   }
-  const Credit credit = credits->second.front();
-  credits->second.pop_front();
-  if (credits->second.empty()) v.credits.erase(credits);
+  const Credit credit = *taken;
 
   // Decided now, with the settings in force now (rulings "Credits").
   const HazardObject& o = field_.object(*object);
@@ -114,10 +120,7 @@ void Engine::clear_queue(std::string_view vname, double now_s, Outputs& out) {
   const std::vector<PendingAnswer> cleared = v.queue.clear();
   for (const PendingAnswer& a : cleared) {
     // The credit goes back in pass order, so the same die is rolled again (rulings "Clear").
-    std::deque<Credit>& list = v.credits[a.object];
-    const auto pos = std::lower_bound(list.begin(), list.end(), a.credit.pass,
-                                      [](const Credit& c, std::uint32_t p) { return c.pass < p; });
-    list.insert(pos, a.credit);
+    v.credits.insert_in_pass_order(v.objects[a.object].credits, a.credit);
   }
   out.events.push_back("Classify queue cleared for " + v.name + " (" +
                        std::to_string(cleared.size()) + " entries)");

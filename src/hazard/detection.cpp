@@ -18,7 +18,8 @@ void Engine::roll_detection(VehicleState& v, ObjectId id, double heading_deg, do
                             Outputs& out) {
   const HazardObject& o = field_.object(id);
   const SensorSetting& s = *v.setting;
-  const std::uint32_t pass = ++v.passes[id];
+  ObjectRecord& record = v.objects[id];
+  const std::uint32_t pass = ++record.passes;
   ++(o.is_hazard() ? v.counters.hazard_chances : v.counters.benign_chances);
 
   // Thresholds (manual 3.1, 6.1, 7.1; D5): hazards detect with pd; benign objects with pfa,
@@ -42,7 +43,7 @@ void Engine::roll_detection(VehicleState& v, ObjectId id, double heading_deg, do
 
   ++v.counters.detections;
   ++(o.is_hazard() ? v.counters.hazard_reports : v.counters.benign_reports);
-  grant_credit(v, id, Credit{pass, heading_deg}, out);
+  grant_credit(v, id, record, Credit{pass, heading_deg}, out);
   DetectionReport report{v.name, o.x_m, o.y_m, o.label,
                          o.aspect_deg, o.aspect_min_deg, o.aspect_max_deg};
   out.post("UHZ_DETECTION_REPORT", format_detection_report(report));
@@ -57,9 +58,11 @@ void Engine::roll_detection(VehicleState& v, ObjectId id, double heading_deg, do
 
 // Credits are bounded per (vehicle, object) (kMaxCreditsPerObject): an object passed that often
 // without a request is reported again but grants no further credit.
-void Engine::grant_credit(VehicleState& v, ObjectId id, const Credit& credit, Outputs& out) {
-  std::deque<Credit>& list = v.credits[id];
-  if (list.size() < kMaxCreditsPerObject) return list.push_back(credit);
+void Engine::grant_credit(VehicleState& v, ObjectId id, ObjectRecord& record,
+                          const Credit& credit, Outputs& out) {
+  if (record.credits.size < kMaxCreditsPerObject) {
+    return v.credits.push_back(record.credits, credit);
+  }
   ++drops_.credits;
   if (!v.warned_credits_full) {
     out.run_warnings.push_back(v.name + " holds " + std::to_string(kMaxCreditsPerObject) +

@@ -21,17 +21,22 @@ std::vector<std::string> Engine::invariant_violations() const {
     for (std::size_t i = 0; i < v.inside.size(); ++i) {
       check(v.inside[i] < field_.size(), who + "inside id out of range");
       check(i == 0 || v.inside[i - 1] < v.inside[i], who + "inside list not sorted");
-      const auto pass = v.passes.find(v.inside[i]);
-      check(pass != v.passes.end() && pass->second >= 1, who + "inside object without a pass");
+      check(v.objects.count(v.inside[i]) == 1, who + "inside object without a pass");
     }
-    for (const auto& [id, list] : v.credits) {
-      const auto pass = v.passes.find(id);
-      check(!list.empty(), who + "empty credit list");
+    std::size_t credits_held = 0;
+    for (const auto& [id, record] : v.objects) {
+      const std::vector<Credit> list = v.credits.to_vector(record.credits);
+      credits_held += list.size();
+      check(id < field_.size(), who + "record of an object out of range");
+      check(record.passes >= 1, who + "object record without a pass");
+      check(list.size() == record.credits.size, who + "credit list length");
       for (std::size_t i = 0; i < list.size(); ++i) {
-        check(pass != v.passes.end() && list[i].pass <= pass->second, who + "credit beyond passes");
+        check(list[i].pass <= record.passes, who + "credit beyond passes");
         check(i == 0 || list[i - 1].pass < list[i].pass, who + "credits not in pass order");
       }
     }
+    // Every slot of the pool holds a credit of some list or is free: none is lost.
+    check(credits_held + v.credits.free_slots() == v.credits.slots(), who + "credit pool slots");
     if (v.setting) {
       const SensorSetting& s = *v.setting;
       // Every setting comes from a configuration or sensor request, which starts the hold.

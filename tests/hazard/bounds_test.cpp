@@ -12,6 +12,7 @@ namespace hazard {
 namespace {
 
 using testing::contains;
+using testing::credits_of;
 using testing::Driver;
 using testing::quiet_block;
 
@@ -87,7 +88,7 @@ TEST(EngineBounds, FullClassifyQueueRefusesTheRequestAndKeepsItsCredit) {
   EXPECT_EQ(d.engine.drops().classify_requests, 2u);
   EXPECT_EQ(d.vehicle("v").queue.size(), kMaxClassifyQueue);
   const ObjectId id = *d.engine.field().find(last);
-  EXPECT_EQ(d.vehicle("v").credits.at(id).size(), 1u);  // the refused request kept its credit
+  EXPECT_EQ(credits_of(d.vehicle("v"), id).size(), 1u);  // the refused request kept its credit
   d.tick_at(1);  // one answer released: room for one
   EXPECT_TRUE(d.mail("UHZ_CLASSIFY_REQUEST", "vname=v,label=" + last).run_warnings.empty());
   EXPECT_EQ(d.vehicle("v").queue.size(), kMaxClassifyQueue);
@@ -106,10 +107,10 @@ TEST(EngineBounds, CreditsPerObjectStopAtTheBound) {
   }
   const ObjectId id = *d.engine.field().find("A");
   EXPECT_EQ(d.vehicle("v").counters.detections, static_cast<int>(kMaxCreditsPerObject + 2));
-  EXPECT_EQ(d.vehicle("v").credits.at(id).size(), kMaxCreditsPerObject);
+  EXPECT_EQ(credits_of(d.vehicle("v"), id).size(), kMaxCreditsPerObject);
   EXPECT_EQ(d.engine.drops().credits, 2u);
   EXPECT_TRUE(contains(warnings.run_warnings, "kMaxCreditsPerObject"));
-  EXPECT_EQ(d.vehicle("v").credits.at(id).front().pass, 1u);  // the oldest are kept
+  EXPECT_EQ(credits_of(d.vehicle("v"), id).front().pass, 1u);  // the oldest are kept
 }
 
 }  // namespace

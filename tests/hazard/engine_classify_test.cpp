@@ -10,6 +10,7 @@ namespace hazard {
 namespace {
 
 using testing::contains;
+using testing::credits_of;
 using testing::Driver;
 using testing::first_label;
 using testing::label_of;
@@ -113,12 +114,12 @@ TEST(EngineClassify, CreditsArePerVehicleAndObject_D7) {
   d.mail("UHZ_CONFIG_REQUEST", "vname=w,width=25,pd=1");
   d.pose("w", 300, 0, 90);
   d.tick();
-  ASSERT_TRUE(d.vehicle("w").credits.count(4));
+  ASSERT_FALSE(credits_of(d.vehicle("w"), 4).empty());
   EXPECT_TRUE(contains(d.mail("UHZ_CLASSIFY_REQUEST", "vname=v,label=far").run_warnings,
                        "No detection credit for v and label far"));
   EXPECT_TRUE(d.mail("UHZ_CLASSIFY_REQUEST", "vname=w,label=far").run_warnings.empty());
   EXPECT_EQ(d.vehicle("v").counters.classify_requests, 4);
-  EXPECT_TRUE(d.vehicle("v").credits.count(2));  // C unused
+  EXPECT_FALSE(credits_of(d.vehicle("v"), 2).empty());  // C unused
 }
 
 TEST(EngineClassify, CreditsSurviveInactivityAndWidthChanges_Rulings) {
@@ -237,7 +238,7 @@ TEST(EngineClassify, ClearEmptiesQueueReturnsCreditsKeepsClock_D10) {
                                 : d.mail(how, "vname=v,action=clear");
     EXPECT_TRUE(contains(cleared.events, "Classify queue cleared for v (1 entries)"));
     EXPECT_TRUE(d.vehicle("v").queue.empty());
-    EXPECT_TRUE(d.vehicle("v").credits.count(1));  // B's credit is back
+    EXPECT_FALSE(credits_of(d.vehicle("v"), 1).empty());  // B's credit is back
     d.now = 3;
     EXPECT_TRUE(d.mail("UHZ_CLASSIFY_REQUEST", "vname=v,label=B").run_warnings.empty());
     ASSERT_EQ(decided.size(), 3u);

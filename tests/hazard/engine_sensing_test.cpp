@@ -11,6 +11,8 @@ namespace hazard {
 namespace {
 
 using testing::contains;
+using testing::credits_of;
+using testing::objects_with_credits;
 using testing::Driver;
 using testing::first_label;
 using testing::quiet_block;
@@ -269,7 +271,7 @@ TEST(EngineSensing, PinkCircleWhenOnlyTheDegradedRocDetects_D5_Manual7_3) {
   EXPECT_NE(circles[0].find("edge_color=pink,fill_color=pink"), std::string::npos);
   EXPECT_EQ(circles[0].find("duration"), std::string::npos);
   EXPECT_NE(circles[1].find("edge_color=white,fill_color=white"), std::string::npos);
-  EXPECT_EQ(d.vehicle("v").credits.size(), 2u);  // both granted a credit
+  EXPECT_EQ(objects_with_credits(d.vehicle("v")), 2u);  // both granted a credit
 }
 
 TEST(EngineSensing, HazardsDetectWithPdWhateverTheAspect_D5) {
@@ -283,7 +285,7 @@ TEST(EngineSensing, HazardsDetectWithPdWhateverTheAspect_D5) {
   d.pose("v", 0, 0, 90);
   const Outputs out = d.tick();
   ASSERT_EQ(values_of(out, "UHZ_DETECTION_REPORT").size(), 1u);
-  EXPECT_TRUE(d.vehicle("v").credits.count(0));
+  EXPECT_EQ(credits_of(d.vehicle("v"), 0).size(), 1u);
 }
 
 TEST(EngineSensing, NoCirclesWhenShowDetectionsIsZero_D38) {

@@ -180,6 +180,20 @@ inline std::string decision_tuple(const Decision& d) {
 }
 
 /// Binomial 5-sigma check helper: |k/n - p| <= 5 sqrt(p(1-p)/n).
+/// The unused credits `v` holds for object `id`, oldest first (empty when it holds none).
+inline std::vector<Credit> credits_of(const VehicleState& v, ObjectId id) {
+  const auto record = v.objects.find(id);
+  if (record == v.objects.end()) return {};
+  return v.credits.to_vector(record->second.credits);
+}
+
+/// How many objects `v` holds at least one unused credit for.
+inline std::size_t objects_with_credits(const VehicleState& v) {
+  std::size_t n = 0;
+  for (const auto& entry : v.objects) n += entry.second.credits.empty() ? 0 : 1;
+  return n;
+}
+
 inline double five_sigma(double p, double n) { return 5.0 * std::sqrt(p * (1.0 - p) / n); }
 
 }  // namespace hazard::testing

@@ -16,6 +16,7 @@ namespace hazard {
 namespace {
 
 using testing::contains;
+using testing::credits_of;
 using testing::Driver;
 using testing::quiet_block;
 
@@ -341,14 +342,14 @@ TEST(SensingTrackEngine, TheCreditCarriesThePiecesHeading_D7) {
   d.pose("t", 200, 20, 30);
   d.tick_at(2);
   const ObjectId a = *d.engine.field().find("a"), b = *d.engine.field().find("b");
-  const auto& s_credits = d.vehicle("s").credits;
-  ASSERT_EQ(s_credits.at(a).size(), 1u);
-  EXPECT_EQ(s_credits.at(a).front().heading_deg, 10.0);
-  const auto& t_credits = d.vehicle("t").credits;
-  ASSERT_EQ(t_credits.at(b).size(), 1u);
-  EXPECT_GT(t_credits.at(b).front().heading_deg, 0.0);
-  EXPECT_LT(t_credits.at(b).front().heading_deg, 30.0);
-  EXPECT_EQ(d.vehicle("s").credits.count(b) + d.vehicle("t").credits.count(a), 0u);
+  const std::vector<Credit> s_credits = credits_of(d.vehicle("s"), a);
+  ASSERT_EQ(s_credits.size(), 1u);
+  EXPECT_EQ(s_credits.front().heading_deg, 10.0);
+  const std::vector<Credit> t_credits = credits_of(d.vehicle("t"), b);
+  ASSERT_EQ(t_credits.size(), 1u);
+  EXPECT_GT(t_credits.front().heading_deg, 0.0);
+  EXPECT_LT(t_credits.front().heading_deg, 30.0);
+  EXPECT_EQ(credits_of(d.vehicle("s"), b).size() + credits_of(d.vehicle("t"), a).size(), 0u);
 }
 
 TEST(SensingTrackEngine, ATrackIsBoundedAndSaysSoOnce) {
