@@ -55,6 +55,22 @@ struct KeyValue {
 std::vector<KeyValue> split_key_values(std::string_view text, char separator = ',',
                                        bool respect_braces = false);
 
+/// The pieces split_key_values returns, one at a time and without a vector (hot parsers:
+/// NODE_REPORT). `text` must outlive the reader and the views it hands out.
+class KeyValueReader {
+ public:
+  explicit KeyValueReader(std::string_view text, char separator = ',',
+                          bool respect_braces = false);
+  /// The next piece into `kv`; false when none is left.
+  bool next(KeyValue& kv);
+
+ private:
+  std::string_view text_;
+  char separator_;
+  bool respect_braces_;
+  std::size_t start_ = 0;
+};
+
 // ---- numbers and booleans ---------------------------------------------------------------------
 
 /// A finite decimal number (grammar above) that uses all of `text` after trimming.
@@ -70,6 +86,10 @@ std::optional<bool> parse_bool(std::string_view text);
 
 /// FIX(v, d): C printf("%.*f", d, v). `decimals` is clamped to [0, 30].
 std::string fix(double value, int decimals);
+/// FIX(v, d) appended to `out` (no temporary string: the swath polygon and the log writer).
+void append_fix(std::string& out, double value, int decimals);
+/// FMT(v, d) appended to `out`.
+void append_fmt(std::string& out, double value, int decimals = 5);
 /// FMT(v, d): FIX(v, d), then (only if the text has a '.') trailing '0's and then a trailing '.'
 /// removed, and finally "-0" mapped to "0" (spec section 0). FMT(0.6561, 3) == "0.656".
 std::string fmt(double value, int decimals = 5);

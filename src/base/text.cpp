@@ -16,8 +16,10 @@ constexpr int kMaxDecimals = 30;
 
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
 
-char lower_ascii(char c) { return static_cast<char>(std::tolower(static_cast<unsigned char>(c))); }
-char upper_ascii(char c) { return static_cast<char>(std::toupper(static_cast<unsigned char>(c))); }
+// ASCII case folding, as std::tolower/toupper do in the "C" locale our programs never change,
+// without a library call per byte (iequals runs on every key of every message).
+char lower_ascii(char c) { return c >= 'A' && c <= 'Z' ? static_cast<char>(c + ('a' - 'A')) : c; }
+char upper_ascii(char c) { return c >= 'a' && c <= 'z' ? static_cast<char>(c - ('a' - 'A')) : c; }
 
 // Accepts exactly the grammar of parse_number's contract.
 bool is_decimal_number(std::string_view s) {
@@ -42,26 +44,42 @@ bool is_decimal_number(std::string_view s) {
 
 }  // namespace
 
-std::string fix(double value, int decimals) {
+void append_fix(std::string& out, double value, int decimals) {
   decimals = std::clamp(decimals, 0, kMaxDecimals);
   // std::to_chars with a precision is specified "as if by printf" in the C locale, and is much
   // faster than glibc's printf; the large buffer only matters for values near 1e308.
   char small[64];
   auto r = std::to_chars(small, small + sizeof small, value, std::chars_format::fixed, decimals);
-  if (r.ec == std::errc()) return std::string(small, r.ptr);
-  std::string big(400, '\0');
-  r = std::to_chars(big.data(), big.data() + big.size(), value, std::chars_format::fixed, decimals);
-  big.resize(static_cast<std::size_t>(r.ptr - big.data()));
-  return big;
+  if (r.ec == std::errc()) {
+    out.append(small, r.ptr);
+    return;
+  }
+  const std::size_t at = out.size();
+  out.resize(at + 400);
+  r = std::to_chars(out.data() + at, out.data() + out.size(), value, std::chars_format::fixed,
+                    decimals);
+  out.resize(static_cast<std::size_t>(r.ptr - out.data()));
+}
+
+void append_fmt(std::string& out, double value, int decimals) {
+  const std::size_t at = out.size();
+  append_fix(out, value, decimals);
+  if (out.find('.', at) != std::string::npos) {
+    while (out.size() > at && out.back() == '0') out.pop_back();
+    if (out.size() > at && out.back() == '.') out.pop_back();
+  }
+  if (out.size() == at + 2 && out.compare(at, 2, "-0") == 0) out.erase(at, 1);
+}
+
+std::string fix(double value, int decimals) {
+  std::string s;
+  append_fix(s, value, decimals);
+  return s;
 }
 
 std::string fmt(double value, int decimals) {
-  std::string s = fix(value, decimals);
-  if (s.find('.') != std::string::npos) {
-    while (!s.empty() && s.back() == '0') s.pop_back();
-    if (!s.empty() && s.back() == '.') s.pop_back();
-  }
-  if (s == "-0") s = "0";
+  std::string s;
+  append_fmt(s, value, decimals);
   return s;
 }
 
@@ -79,10 +97,11 @@ std::string format_shortest(double value) {
 }
 
 std::string_view trim(std::string_view text) {
-  const auto first = text.find_first_not_of(kTrimmed);
-  if (first == std::string_view::npos) return {};
-  const auto last = text.find_last_not_of(kTrimmed);
-  return text.substr(first, last - first + 1);
+  // A loop over the (usually zero) blanks at each end, not a search through kTrimmed per byte.
+  const auto trimmed = [](char c) { return kTrimmed.find(c) != std::string_view::npos; };
+  while (!text.empty() && trimmed(text.front())) text.remove_prefix(1);
+  while (!text.empty() && trimmed(text.back())) text.remove_suffix(1);
+  return text;
 }
 
 bool iequals(std::string_view a, std::string_view b) {
@@ -136,16 +155,35 @@ std::vector<std::string_view> split(std::string_view text, char separator) {
   }
 }
 
-std::optional<double> parse_number(std::string_view text) {
-  text = trim(text);
-  if (!is_decimal_number(text)) return std::nullopt;
-  // strtod needs a terminated string; the grammar check above makes it locale-safe in the
-  // "C" locale that our programs never change. Underflow (1e-400) yields a finite 0 and is kept.
+namespace {
+
+// The reference conversion of a text that passed is_decimal_number. strtod needs a terminated
+// string; the grammar check makes it locale-safe in the "C" locale that our programs never
+// change. Underflow (1e-400) yields a finite 0 and is kept.
+std::optional<double> convert_with_strtod(std::string_view text) {
   const std::string copy(text);
   char* end = nullptr;
   const double v = std::strtod(copy.c_str(), &end);
   if (end != copy.c_str() + copy.size() || !std::isfinite(v)) return std::nullopt;
   return v;
+}
+
+}  // namespace
+
+// std::from_chars is correctly rounded, as glibc's strtod is, so both give the same double for
+// every text of the grammar; it needs no copy. It takes no '+' and reports overflow and
+// underflow as errors: those texts (and anything else it does not take whole) go to strtod,
+// which decides them as it always did (tests/base/number_differential_test.cpp).
+std::optional<double> parse_number(std::string_view text) {
+  text = trim(text);
+  if (!is_decimal_number(text)) return std::nullopt;
+  const std::string_view unsigned_or_minus =
+      text.front() == '+' ? text.substr(1) : text;
+  const char* const end = unsigned_or_minus.data() + unsigned_or_minus.size();
+  double v = 0.0;
+  const auto [ptr, ec] = std::from_chars(unsigned_or_minus.data(), end, v);
+  if (ec == std::errc() && ptr == end && std::isfinite(v)) return v;
+  return convert_with_strtod(text);
 }
 
 std::optional<std::uint64_t> parse_unsigned(std::string_view text) {
@@ -175,28 +213,38 @@ std::optional<bool> parse_bool(std::string_view text) {
   return std::nullopt;
 }
 
-std::vector<KeyValue> split_key_values(std::string_view text, char separator, bool respect_braces) {
-  std::vector<KeyValue> out;
-  std::size_t start = 0;
-  int depth = 0;
-  for (std::size_t i = 0; i <= text.size(); ++i) {
-    const bool at_end = i == text.size();
-    if (!at_end) {
-      const char c = text[i];
-      if (respect_braces && c == '{') ++depth;
-      if (respect_braces && c == '}' && depth > 0) --depth;
-      if (c != separator || depth > 0) continue;
+KeyValueReader::KeyValueReader(std::string_view text, char separator, bool respect_braces)
+    : text_(text), separator_(separator), respect_braces_(respect_braces) {}
+
+bool KeyValueReader::next(KeyValue& kv) {
+  while (start_ <= text_.size()) {
+    // The piece ends at the next separator outside {...} (braces count only when asked).
+    std::size_t i = start_;
+    int depth = 0;
+    for (; i < text_.size(); ++i) {
+      const char c = text_[i];
+      if (respect_braces_ && c == '{') ++depth;
+      if (respect_braces_ && c == '}' && depth > 0) --depth;
+      if (c == separator_ && depth == 0) break;
     }
-    const std::string_view piece = trim(text.substr(start, i - start));
-    start = i + 1;
+    const std::string_view piece = trim(text_.substr(start_, i - start_));
+    start_ = i + 1;
     if (piece.empty()) continue;
     const auto eq = piece.find('=');
     if (eq == std::string_view::npos) {
-      out.push_back(KeyValue{piece, {}, false});
+      kv = KeyValue{piece, {}, false};
     } else {
-      out.push_back(KeyValue{trim(piece.substr(0, eq)), trim(piece.substr(eq + 1)), true});
+      kv = KeyValue{trim(piece.substr(0, eq)), trim(piece.substr(eq + 1)), true};
     }
+    return true;
   }
+  return false;
+}
+
+std::vector<KeyValue> split_key_values(std::string_view text, char separator, bool respect_braces) {
+  std::vector<KeyValue> out;
+  KeyValueReader reader(text, separator, respect_braces);
+  for (KeyValue kv; reader.next(kv);) out.push_back(kv);
   return out;
 }
 

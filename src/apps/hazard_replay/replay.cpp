@@ -21,28 +21,48 @@ namespace fs = std::filesystem;
 using base::fix;
 
 struct Input {
-  std::vector<moos::AlogEntry> entries;  // time order
+  std::vector<char> text;            // the whole file (a vector: moving it keeps the views valid)
+  std::vector<hazard::Mail> entries;  // views into `text`, in time order
   double logstart_s = 0.0;
 };
 
-std::optional<Input> read_input(const std::string& path, std::ostream& err) {
+// Reads in large blocks: the whole log is held, as its entries always were, but as one buffer.
+constexpr std::size_t kReadBlockBytes = std::size_t{1} << 20;
+
+bool read_whole_file(const std::string& path, std::vector<char>& text) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
+  if (!in) return false;
+  while (in) {
+    const std::size_t at = text.size();
+    text.resize(at + kReadBlockBytes);
+    in.read(text.data() + at, static_cast<std::streamsize>(kReadBlockBytes));
+    text.resize(at + static_cast<std::size_t>(in.gcount()));
+  }
+  return !in.bad();
+}
+
+std::optional<Input> read_input(const std::string& path, std::ostream& err) {
   Input input;
-  std::string line;
+  if (!read_whole_file(path, input.text)) return std::nullopt;
+  const std::string_view all(input.text.data(), input.text.size());
   int number = 0;
-  while (std::getline(in, line)) {
+  // Lines as std::getline gives them: split at '\n', a last line without one still counts.
+  for (std::size_t start = 0; start < all.size();) {
+    const std::size_t newline = all.find('\n', start);
+    const std::size_t end = newline == std::string_view::npos ? all.size() : newline;
+    const std::string_view line = all.substr(start, end - start);
+    start = end + 1;
     ++number;
-    const moos::AlogParse p = moos::parse_alog_line(line);
+    const moos::AlogViewParse p = moos::parse_alog_view(line);
     if (p.kind == moos::AlogLineKind::kEntry) {
-      input.entries.push_back(p.entry);
+      input.entries.push_back(hazard::Mail{p.entry.variable, p.entry.value, p.entry.time_s});
     } else if (p.kind == moos::AlogLineKind::kHeader) {
-      if (const auto start = moos::alog_logstart(line)) input.logstart_s = *start;
+      if (const auto logstart = moos::alog_logstart(line)) input.logstart_s = *logstart;
     } else if (p.kind == moos::AlogLineKind::kMalformed) {
       err << path << ":" << number << ": warning: " << p.error << "; line skipped\n";
     }
   }
-  const auto earlier = [](const moos::AlogEntry& a, const moos::AlogEntry& b) {
+  const auto earlier = [](const hazard::Mail& a, const hazard::Mail& b) {
     return a.time_s < b.time_s;
   };
   // A logger writes in time order: sorting (moving every entry) only when it did not.
@@ -52,17 +72,28 @@ std::optional<Input> read_input(const std::string& path, std::ostream& err) {
   return input;
 }
 
-// Writes one engine call's outputs: postings to the log, the rest to the error stream.
+// Writes one engine call's outputs: postings to the log (through a large buffer, not one
+// stream call per line), the rest to the error stream.
 class Writer {
  public:
   Writer(std::ostream& out, std::ostream& err, std::string source)
-      : out_(out), err_(err), source_(std::move(source)) {}
+      : out_(out), err_(err), source_(std::move(source)) {
+    buffer_.reserve(kFlushBytes + kFlushBytes / 4);
+  }
+  Writer(const Writer&) = delete;
+  Writer& operator=(const Writer&) = delete;
+  ~Writer() { flush(); }
 
   void write(const hazard::TimedOutputs& timed) {
     const hazard::Outputs& o = timed.outputs;
     const double time_s = timed.time_s;
     for (const hazard::Posting& p : o.postings) {
-      out_ << moos::format_alog_line({time_s, p.variable, source_, p.value});
+      moos::append_alog_line(buffer_, {time_s, p.variable, source_, p.value});
+    }
+    if (buffer_.size() >= kFlushBytes) flush();
+    if (o.config_warnings.empty() && o.run_warnings.empty() &&
+        o.retracted_run_warnings.empty() && o.events.empty()) {
+      return;
     }
     const std::string when = "[" + fix(time_s, 3) + "] ";
     for (const auto& w : o.config_warnings) err_ << when << "config warning: " << w << "\n";
@@ -71,12 +102,18 @@ class Writer {
     for (const auto& e : o.events) err_ << when << "event: " << e << "\n";
   }
 
+  void flush() {
+    out_.write(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
+    buffer_.clear();
+  }
+
  private:
+  static constexpr std::size_t kFlushBytes = std::size_t{1} << 20;
   std::ostream& out_;
   std::ostream& err_;
   std::string source_;
+  std::string buffer_;
 };
-
 
 // A guard against a mistyped --until (1e12 s at 4 Hz would never finish).
 constexpr double kMaxIterations = 1e8;
@@ -144,20 +181,20 @@ int run(const Options& options, std::ostream& out, std::ostream& err) {
   }
   Writer writer(out, err, options.app_name);
   replay(driver, timeline, [&](const hazard::TimedOutputs& t) { writer.write(t); });
+  writer.flush();
   out.flush();
   return 0;
 }
 
 void replay(hazard::Driver& driver, const Timeline& timeline,
             const std::function<void(const hazard::TimedOutputs&)>& sink) {
-  const std::vector<moos::AlogEntry>& mail = *timeline.mail;
+  const std::vector<hazard::Mail>& mail = *timeline.mail;
   if (mail.empty()) return;
   sink(driver.start(timeline.start_s));
   std::size_t next = 0;
   auto deliver_until = [&](double t) {
     for (; next < mail.size() && mail[next].time_s <= t; ++next) {
-      const moos::AlogEntry& m = mail[next];
-      sink(driver.deliver(hazard::Mail{m.variable, m.value, m.time_s}));
+      sink(driver.deliver(mail[next]));
     }
   };
   for (long k = 0;; ++k) {

@@ -53,7 +53,7 @@ struct Options {
 
 /// The input mail in time order and the iteration times: t0 + k / tick_hz up to end_s.
 struct Timeline {
-  const std::vector<moos::AlogEntry>* mail = nullptr;
+  const std::vector<hazard::Mail>* mail = nullptr;  ///< views into the input's text
   double start_s = 0.0;
   double end_s = 0.0;
   double tick_hz = 4.0;

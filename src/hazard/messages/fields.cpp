@@ -14,7 +14,11 @@ std::optional<std::string_view> Fields::get(std::string_view key) const {
 }
 
 std::optional<double> Fields::number(std::string_view key, std::string& error) const {
-  const auto text = get(key);
+  return number_field(key, get(key), error);
+}
+
+std::optional<double> number_field(std::string_view key, std::optional<std::string_view> text,
+                                   std::string& error) {
   if (!text) return std::nullopt;
   const auto v = base::parse_number(*text);
   if (!v && error.empty()) error = field_value(key, *text) + " is not a finite number";
@@ -46,7 +50,12 @@ std::string field_value(std::string_view key, std::string_view value) {
 
 std::optional<std::string> vehicle_name(const Fields& f, std::string_view key,
                                         std::string& error) {
-  const auto name = f.get(key);
+  return vehicle_name_field(key, f.get(key), error);
+}
+
+std::optional<std::string> vehicle_name_field(std::string_view key,
+                                              std::optional<std::string_view> name,
+                                              std::string& error) {
   if (!name || name->empty()) {
     error = missing_field(key);
     return std::nullopt;

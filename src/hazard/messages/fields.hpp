@@ -30,6 +30,10 @@ class Fields {
   std::vector<base::KeyValue> pieces_;
 };
 
+/// Fields::number's rule for a value found some other way (a one-pass parser: node_report.cpp).
+std::optional<double> number_field(std::string_view key, std::optional<std::string_view> text,
+                                   std::string& error);
+
 /// Whether `text` holds a control byte (below 0x20, or 0x7F): names and labels must not, since
 /// they reach variable names, postings and log lines.
 bool has_control_byte(std::string_view text);
@@ -38,6 +42,10 @@ std::string field_value(std::string_view key, std::string_view value);
 /// The vehicle name in field `key`: present, non-empty, at most kMaxVehicleNameBytes and free
 /// of control bytes (ranges.hpp); nullopt with `error` set otherwise.
 std::optional<std::string> vehicle_name(const Fields& f, std::string_view key, std::string& error);
+/// vehicle_name's rule for a value found some other way (node_report.cpp).
+std::optional<std::string> vehicle_name_field(std::string_view key,
+                                              std::optional<std::string_view> name,
+                                              std::string& error);
 /// "missing field 'vname'".
 std::string missing_field(std::string_view key);
 
