@@ -56,7 +56,8 @@ std::vector<KeyValue> split_key_values(std::string_view text, char separator = '
                                        bool respect_braces = false);
 
 /// The pieces split_key_values returns, one at a time and without a vector (hot parsers:
-/// NODE_REPORT). `text` must outlive the reader and the views it hands out.
+/// NODE_REPORT). `text` must outlive the reader and the views it hands out; `separator` is
+/// none of `{`, `}` and `=`.
 class KeyValueReader {
  public:
   explicit KeyValueReader(std::string_view text, char separator = ',',
@@ -65,6 +66,8 @@ class KeyValueReader {
   bool next(KeyValue& kv);
 
  private:
+  std::size_t piece_end(std::size_t start, std::size_t& equals) const;
+
   std::string_view text_;
   char separator_;
   bool respect_braces_;

@@ -11,7 +11,6 @@ namespace base {
 
 namespace {
 
-constexpr std::string_view kTrimmed = " \t\r\n";
 constexpr int kMaxDecimals = 30;
 
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
@@ -42,10 +41,46 @@ bool is_decimal_number(std::string_view s) {
   return i == s.size();
 }
 
+// FIX for the common case, with integer arithmetic: |value| * 10^decimals below 2^53 and at
+// most kMaxFastDecimals decimals. The product is off by at most half an ulp, which changes the
+// result only when it lies that close to a rounding tie (x.5): then, and for every other case,
+// false (the caller uses std::to_chars). Ties go to to_chars, which rounds the exact binary
+// value as printf does. Same text as printf (tests/base/number_differential_test.cpp).
+constexpr int kMaxFastDecimals = 9;
+bool append_fix_fast(std::string& out, double value, int decimals) {
+  static constexpr double kPow10[kMaxFastDecimals + 1] = {1e0, 1e1, 1e2, 1e3, 1e4,
+                                                         1e5, 1e6, 1e7, 1e8, 1e9};
+  static constexpr std::uint64_t kPow10Int[kMaxFastDecimals + 1] = {
+      1, 10, 100, 1000, 10000, 100000, 1000000, 10000000, 100000000, 1000000000};
+  if (decimals > kMaxFastDecimals) return false;
+  const double scaled = std::fabs(value) * kPow10[decimals];
+  if (!(scaled < 0x1p53)) return false;  // also NaN and infinities
+  const double whole = std::floor(scaled);
+  const double fraction = scaled - whole;  // exact below 2^53
+  if (std::fabs(fraction - 0.5) <= scaled * 0x1p-50) return false;
+  const std::uint64_t units = static_cast<std::uint64_t>(whole) + (fraction > 0.5 ? 1 : 0);
+  const std::uint64_t integer_part = units / kPow10Int[decimals];
+  const std::uint64_t fraction_part = units % kPow10Int[decimals];
+  char text[48];
+  char* p = text;
+  if (std::signbit(value)) *p++ = '-';
+  p = std::to_chars(p, text + sizeof text, integer_part).ptr;
+  if (decimals > 0) {
+    *p++ = '.';
+    char digits[24];
+    char* const end = std::to_chars(digits, digits + sizeof digits, fraction_part).ptr;
+    for (auto length = end - digits; length < decimals; ++length) *p++ = '0';  // leading zeros
+    p = std::copy(digits, end, p);
+  }
+  out.append(text, p);
+  return true;
+}
+
 }  // namespace
 
 void append_fix(std::string& out, double value, int decimals) {
   decimals = std::clamp(decimals, 0, kMaxDecimals);
+  if (append_fix_fast(out, value, decimals)) return;
   // std::to_chars with a precision is specified "as if by printf" in the C locale, and is much
   // faster than glibc's printf; the large buffer only matters for values near 1e308.
   char small[64];
@@ -97,8 +132,8 @@ std::string format_shortest(double value) {
 }
 
 std::string_view trim(std::string_view text) {
-  // A loop over the (usually zero) blanks at each end, not a search through kTrimmed per byte.
-  const auto trimmed = [](char c) { return kTrimmed.find(c) != std::string_view::npos; };
+  // A loop over the (usually zero) blanks at each end, not a search through a set per byte.
+  const auto trimmed = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; };
   while (!text.empty() && trimmed(text.front())) text.remove_prefix(1);
   while (!text.empty() && trimmed(text.back())) text.remove_suffix(1);
   return text;
@@ -216,25 +251,43 @@ std::optional<bool> parse_bool(std::string_view text) {
 KeyValueReader::KeyValueReader(std::string_view text, char separator, bool respect_braces)
     : text_(text), separator_(separator), respect_braces_(respect_braces) {}
 
+// The end of the piece that starts at `start`: the next separator outside {...} (braces count
+// only when asked; an unmatched '}' is an ordinary byte, an unclosed '{' runs to the end).
+// Also the first '=' of the piece, wherever it is (npos if none), found in the same pass.
+std::size_t KeyValueReader::piece_end(std::size_t start, std::size_t& equals) const {
+  const std::size_t n = text_.size();
+  std::size_t i = start;
+  equals = std::string_view::npos;
+  for (; i < n; ++i) {
+    const char c = text_[i];
+    if (c == separator_) break;
+    if (c == '=' && equals == std::string_view::npos) equals = i;
+    if (c == '{' && respect_braces_) {
+      int depth = 1;
+      for (++i; i < n && depth > 0; ++i) {
+        if (text_[i] == '=' && equals == std::string_view::npos) equals = i;
+        depth += text_[i] == '{' ? 1 : text_[i] == '}' ? -1 : 0;
+      }
+      if (i == n) break;
+      --i;  // the outer loop looks at the byte after the closing brace
+    }
+  }
+  return i;
+}
+
 bool KeyValueReader::next(KeyValue& kv) {
   while (start_ <= text_.size()) {
-    // The piece ends at the next separator outside {...} (braces count only when asked).
-    std::size_t i = start_;
-    int depth = 0;
-    for (; i < text_.size(); ++i) {
-      const char c = text_[i];
-      if (respect_braces_ && c == '{') ++depth;
-      if (respect_braces_ && c == '}' && depth > 0) --depth;
-      if (c == separator_ && depth == 0) break;
-    }
-    const std::string_view piece = trim(text_.substr(start_, i - start_));
-    start_ = i + 1;
-    if (piece.empty()) continue;
-    const auto eq = piece.find('=');
-    if (eq == std::string_view::npos) {
+    std::size_t equals = 0;
+    const std::size_t end = piece_end(start_, equals);
+    const std::size_t start = start_;
+    start_ = end + 1;
+    if (equals == std::string_view::npos) {
+      const std::string_view piece = trim(text_.substr(start, end - start));
+      if (piece.empty()) continue;
       kv = KeyValue{piece, {}, false};
     } else {
-      kv = KeyValue{trim(piece.substr(0, eq)), trim(piece.substr(eq + 1)), true};
+      kv = KeyValue{trim(text_.substr(start, equals - start)),
+                    trim(text_.substr(equals + 1, end - equals - 1)), true};
     }
     return true;
   }

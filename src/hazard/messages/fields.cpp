@@ -83,13 +83,20 @@ void append_field(std::string& out, std::string_view key, std::string_view value
   out.append(value);
 }
 
-std::string format_points(const std::vector<glm::dvec2>& points, int decimals) {
-  std::string out = "{";
+void append_points(std::string& out, const std::vector<glm::dvec2>& points, int decimals) {
+  out.push_back('{');
   for (std::size_t i = 0; i < points.size(); ++i) {
     if (i > 0) out.push_back(':');
-    out += base::fmt(points[i].x, decimals) + "," + base::fmt(points[i].y, decimals);
+    base::append_fmt(out, points[i].x, decimals);
+    out.push_back(',');
+    base::append_fmt(out, points[i].y, decimals);
   }
   out.push_back('}');
+}
+
+std::string format_points(const std::vector<glm::dvec2>& points, int decimals) {
+  std::string out;
+  append_points(out, points, decimals);
   return out;
 }
 

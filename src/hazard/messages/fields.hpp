@@ -54,6 +54,8 @@ void append_field(std::string& out, std::string_view key, std::string_view value
 
 /// "{x1,y1:x2,y2}" with FMT(., decimals) coordinates.
 std::string format_points(const std::vector<glm::dvec2>& points, int decimals);
+/// The same appended to `out`.
+void append_points(std::string& out, const std::vector<glm::dvec2>& points, int decimals);
 /// Parses "{x1,y1:x2,y2:...}" (braces optional); nullopt if any coordinate is bad.
 std::optional<std::vector<glm::dvec2>> parse_points(std::string_view text);
 
