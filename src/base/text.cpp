@@ -99,7 +99,9 @@ void append_fix(std::string& out, double value, int decimals) {
 void append_fmt(std::string& out, double value, int decimals) {
   const std::size_t at = out.size();
   append_fix(out, value, decimals);
-  if (out.find('.', at) != std::string::npos) {
+  // FIX writes a '.' exactly when it has decimals (and the value is finite: "inf" and "nan"
+  // end in neither '0' nor '.', so the trimming below leaves them alone).
+  if (decimals > 0) {
     while (out.size() > at && out.back() == '0') out.pop_back();
     if (out.size() > at && out.back() == '.') out.pop_back();
   }

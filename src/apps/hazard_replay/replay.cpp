@@ -28,10 +28,15 @@ struct Input {
 
 // Reads in large blocks: the whole log is held, as its entries always were, but as one buffer.
 constexpr std::size_t kReadBlockBytes = std::size_t{1} << 20;
+// Bytes of an input line, about (a NODE_REPORT line is about 110): a first guess of the entries.
+constexpr std::size_t kTypicalLineBytes = 96;
 
 bool read_whole_file(const std::string& path, std::vector<char>& text) {
   std::ifstream in(path, std::ios::binary);
   if (!in) return false;
+  std::error_code size_unknown;  // a pipe, say: the blocks below still read it
+  const auto size = fs::file_size(path, size_unknown);
+  if (!size_unknown) text.reserve(static_cast<std::size_t>(size) + kReadBlockBytes);
   while (in) {
     const std::size_t at = text.size();
     text.resize(at + kReadBlockBytes);
@@ -45,6 +50,7 @@ std::optional<Input> read_input(const std::string& path, std::ostream& err) {
   Input input;
   if (!read_whole_file(path, input.text)) return std::nullopt;
   const std::string_view all(input.text.data(), input.text.size());
+  input.entries.reserve(all.size() / kTypicalLineBytes);
   int number = 0;
   // Lines as std::getline gives them: split at '\n', a last line without one still counts.
   for (std::size_t start = 0; start < all.size();) {

@@ -38,7 +38,7 @@ struct NodeFields {
         {"SPEED", &speed}, {"HDG", &hdg},   {"HEADING", &heading}, {"LAT", &lat},
         {"LON", &lon},   {"TIME", &time},   {"TYPE", &type}};
     for (const auto& [k, slot] : slots) {
-      if (base::iequals(k, key)) return slot;
+      if (k.size() == key.size() && base::iequals(k, key)) return slot;  // sizes first: cheap
     }
     return nullptr;
   }
