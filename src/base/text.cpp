@@ -42,10 +42,10 @@ bool is_decimal_number(std::string_view s) {
 }
 
 // FIX for the common case, with integer arithmetic: |value| * 10^decimals below 2^53 and at
-// most kMaxFastDecimals decimals. The product is off by at most half an ulp, which changes the
-// result only when it lies that close to a rounding tie (x.5): then, and for every other case,
-// false (the caller uses std::to_chars). Ties go to to_chars, which rounds the exact binary
-// value as printf does. Same text as printf (tests/base/number_differential_test.cpp).
+// most kMaxFastDecimals decimals. The product is off by at most half an ulp, which matters only
+// when it lies that close to a rounding tie (x.5); the exact error settles those. An exact tie,
+// and every other case, returns false: the caller uses std::to_chars, which rounds the exact
+// binary value as printf does. Same text as printf (tests/base/number_differential_test.cpp).
 constexpr int kMaxFastDecimals = 9;
 bool append_fix_fast(std::string& out, double value, int decimals) {
   static constexpr double kPow10[kMaxFastDecimals + 1] = {1e0, 1e1, 1e2, 1e3, 1e4,
@@ -53,12 +53,20 @@ bool append_fix_fast(std::string& out, double value, int decimals) {
   static constexpr std::uint64_t kPow10Int[kMaxFastDecimals + 1] = {
       1, 10, 100, 1000, 10000, 100000, 1000000, 10000000, 100000000, 1000000000};
   if (decimals > kMaxFastDecimals) return false;
-  const double scaled = std::fabs(value) * kPow10[decimals];
+  const double magnitude = std::fabs(value);
+  const double scaled = magnitude * kPow10[decimals];
   if (!(scaled < 0x1p53)) return false;  // also NaN and infinities
   const double whole = std::floor(scaled);
   const double fraction = scaled - whole;  // exact below 2^53
-  if (std::fabs(fraction - 0.5) <= scaled * 0x1p-50) return false;
-  const std::uint64_t units = static_cast<std::uint64_t>(whole) + (fraction > 0.5 ? 1 : 0);
+  bool round_up = fraction > 0.5;
+  if (std::fabs(fraction - 0.5) <= scaled * 0x1p-50) {
+    // Near a tie the product's rounding matters. fma gives its error exactly, and the sign of
+    // (fraction - 0.5) + error, both exact doubles, is the side of the tie the value is on.
+    const double above_tie = (fraction - 0.5) + std::fma(magnitude, kPow10[decimals], -scaled);
+    if (above_tie == 0.0) return false;  // an exact tie (2.5 to 0 decimals): to_chars decides
+    round_up = above_tie > 0.0;
+  }
+  const std::uint64_t units = static_cast<std::uint64_t>(whole) + (round_up ? 1 : 0);
   const std::uint64_t integer_part = units / kPow10Int[decimals];
   const std::uint64_t fraction_part = units % kPow10Int[decimals];
   char text[48];
@@ -337,7 +345,8 @@ std::string escape_for_log(std::string_view text) {
 // fmod is exact (the remainder of two doubles is representable), so any finite heading, however
 // large (1e15, 1e300), normalises in one step without a loop (N3).
 double norm360(double angle_deg) {
-  double r = std::fmod(angle_deg, 360.0);
+  // fmod(a, 360) is a itself when |a| < 360: the common case skips the library call.
+  double r = std::fabs(angle_deg) < 360.0 ? angle_deg : std::fmod(angle_deg, 360.0);
   if (r < 0) r += 360.0;
   if (r >= 360.0) r = 0.0;  // -1e-17 + 360 rounds to 360
   return r + 0.0;           // -720 gives fmod = -0.0; adding +0.0 makes it +0.0

@@ -1,6 +1,8 @@
 #include "replay.hpp"
 
 #include <algorithm>
+#include <cstring>
+#include <memory>
 #include <filesystem>
 #include <fstream>
 #include <ostream>
@@ -20,8 +22,33 @@ namespace {
 namespace fs = std::filesystem;
 using base::fix;
 
+// A growable byte buffer that, unlike std::vector<char>, does not zero what read() will fill.
+class TextBuffer {
+ public:
+  char* data() { return data_.get(); }
+  const char* data() const { return data_.get(); }
+  std::size_t size() const { return size_; }
+  /// Room for `more` bytes after size(); returns where they go (commit them with grow()).
+  char* reserve_more(std::size_t more) {
+    if (capacity_ - size_ < more) {
+      const std::size_t capacity = std::max(size_ + more, capacity_ * 2);
+      std::unique_ptr<char[]> bigger(new char[capacity]);  // default-initialised: not zeroed
+      if (size_ > 0) std::memcpy(bigger.get(), data_.get(), size_);
+      data_ = std::move(bigger);
+      capacity_ = capacity;
+    }
+    return data_.get() + size_;
+  }
+  void grow(std::size_t bytes) { size_ += bytes; }
+
+ private:
+  std::unique_ptr<char[]> data_;
+  std::size_t size_ = 0;
+  std::size_t capacity_ = 0;
+};
+
 struct Input {
-  std::vector<char> text;            // the whole file (a vector: moving it keeps the views valid)
+  TextBuffer text;                    // the whole file (moving it keeps the views valid)
   std::vector<hazard::Mail> entries;  // views into `text`, in time order
   double logstart_s = 0.0;
 };
@@ -31,17 +58,16 @@ constexpr std::size_t kReadBlockBytes = std::size_t{1} << 20;
 // Bytes of an input line, about (a NODE_REPORT line is about 110): a first guess of the entries.
 constexpr std::size_t kTypicalLineBytes = 96;
 
-bool read_whole_file(const std::string& path, std::vector<char>& text) {
+bool read_whole_file(const std::string& path, TextBuffer& text) {
   std::ifstream in(path, std::ios::binary);
   if (!in) return false;
   std::error_code size_unknown;  // a pipe, say: the blocks below still read it
   const auto size = fs::file_size(path, size_unknown);
-  if (!size_unknown) text.reserve(static_cast<std::size_t>(size) + kReadBlockBytes);
+  if (!size_unknown) text.reserve_more(static_cast<std::size_t>(size) + 1);
   while (in) {
-    const std::size_t at = text.size();
-    text.resize(at + kReadBlockBytes);
-    in.read(text.data() + at, static_cast<std::streamsize>(kReadBlockBytes));
-    text.resize(at + static_cast<std::size_t>(in.gcount()));
+    const std::size_t room = std::max(kReadBlockBytes, size_unknown ? 0 : std::size_t(size) + 1);
+    in.read(text.reserve_more(room), static_cast<std::streamsize>(room));
+    text.grow(static_cast<std::size_t>(in.gcount()));
   }
   return !in.bad();
 }

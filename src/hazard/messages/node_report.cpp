@@ -1,6 +1,7 @@
 #include "hazard/messages/node_report.hpp"
 
 #include <cmath>
+#include <utility>
 
 #include "fields.hpp"
 #include "hazard/ranges.hpp"
@@ -33,12 +34,13 @@ struct NodeFields {
 
  private:
   Field* slot_for(std::string_view key) {
-    const std::pair<std::string_view, Field*> slots[] = {
-        {"NAME", &name}, {"X", &x},         {"Y", &y},       {"SPD", &spd},
-        {"SPEED", &speed}, {"HDG", &hdg},   {"HEADING", &heading}, {"LAT", &lat},
-        {"LON", &lon},   {"TIME", &time},   {"TYPE", &type}};
-    for (const auto& [k, slot] : slots) {
-      if (k.size() == key.size() && base::iequals(k, key)) return slot;  // sizes first: cheap
+    static constexpr std::pair<std::string_view, Field NodeFields::*> kSlots[] = {
+        {"NAME", &NodeFields::name}, {"X", &NodeFields::x},         {"Y", &NodeFields::y},
+        {"SPD", &NodeFields::spd},   {"SPEED", &NodeFields::speed}, {"HDG", &NodeFields::hdg},
+        {"HEADING", &NodeFields::heading}, {"LAT", &NodeFields::lat}, {"LON", &NodeFields::lon},
+        {"TIME", &NodeFields::time}, {"TYPE", &NodeFields::type}};
+    for (const auto& [k, slot] : kSlots) {
+      if (k.size() == key.size() && base::iequals(k, key)) return &(this->*slot);  // sizes first
     }
     return nullptr;
   }
