@@ -14,6 +14,7 @@
 #include "base/text.hpp"
 #include "moos/alog.hpp"
 #include "moos/mission.hpp"
+#include "score.hpp"
 
 namespace hazard_replay {
 
@@ -191,11 +192,25 @@ int run(const Options& options, std::ostream& out, std::ostream& err) {
   }
   const Timeline timeline{&mail, start_s, end_s, tick_hz};
   if (options.seeds) {
+    std::optional<double> score;
+    if (options.score) {
+      // The recorded report does not depend on the dice: graded once, the same on every line.
+      const RecordedScore graded = score_recorded_reports(*mission, mail, end_s, err);
+      if (!graded.error.empty()) {
+        err << "hazard_replay: " << graded.error << " (in '" << options.config_path << "')\n";
+        return 1;
+      }
+      score = graded.score;
+      if (!score) {
+        err << "hazard_replay: --score: '" << options.input_path
+            << "' holds no HAZARDSET_REPORT the metric accepts; the lines carry no score\n";
+      }
+    }
     err << "hazard_replay: seeds " << options.seeds->first << ".." << options.seeds->last
         << ", AppTick " << base::fmt(tick_hz) << " Hz\n";
     for (std::uint64_t seed = options.seeds->first;; ++seed) {
       hazard::Driver seeded(built.with_seed({seed, hazard::SeedSource::kCommandLine}));
-      out << seed_summary_json(seed, count_reports(seeded, timeline)) << "\n";
+      out << seed_summary_json(seed, count_reports(seeded, timeline), score) << "\n";
       if (seed == options.seeds->last) break;
     }
     out.flush();
