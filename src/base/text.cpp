@@ -50,8 +50,6 @@ constexpr int kMaxFastDecimals = 9;
 bool append_fix_fast(std::string& out, double value, int decimals) {
   static constexpr double kPow10[kMaxFastDecimals + 1] = {1e0, 1e1, 1e2, 1e3, 1e4,
                                                          1e5, 1e6, 1e7, 1e8, 1e9};
-  static constexpr std::uint64_t kPow10Int[kMaxFastDecimals + 1] = {
-      1, 10, 100, 1000, 10000, 100000, 1000000, 10000000, 100000000, 1000000000};
   if (decimals > kMaxFastDecimals) return false;
   const double magnitude = std::fabs(value);
   const double scaled = magnitude * kPow10[decimals];
@@ -67,18 +65,24 @@ bool append_fix_fast(std::string& out, double value, int decimals) {
     round_up = above_tie > 0.0;
   }
   const std::uint64_t units = static_cast<std::uint64_t>(whole) + (round_up ? 1 : 0);
-  const std::uint64_t integer_part = units / kPow10Int[decimals];
-  const std::uint64_t fraction_part = units % kPow10Int[decimals];
+  // The digits of `units`, then the point `decimals` digits from the right (0.0x: zeros first).
+  char digits[24];
+  const auto count = static_cast<int>(std::to_chars(digits, digits + sizeof digits, units).ptr - digits);
   char text[48];
   char* p = text;
   if (std::signbit(value)) *p++ = '-';
-  p = std::to_chars(p, text + sizeof text, integer_part).ptr;
-  if (decimals > 0) {
+  const int integer_digits = count - decimals;
+  if (integer_digits <= 0) {
+    *p++ = '0';
     *p++ = '.';
-    char digits[24];
-    char* const end = std::to_chars(digits, digits + sizeof digits, fraction_part).ptr;
-    for (auto length = end - digits; length < decimals; ++length) *p++ = '0';  // leading zeros
-    p = std::copy(digits, end, p);
+    for (int i = integer_digits; i < 0; ++i) *p++ = '0';
+    p = std::copy(digits, digits + count, p);
+  } else {
+    p = std::copy(digits, digits + integer_digits, p);
+    if (decimals > 0) {
+      *p++ = '.';
+      p = std::copy(digits + integer_digits, digits + count, p);
+    }
   }
   out.append(text, p);
   return true;
@@ -265,23 +269,28 @@ KeyValueReader::KeyValueReader(std::string_view text, char separator, bool respe
 // only when asked; an unmatched '}' is an ordinary byte, an unclosed '{' runs to the end).
 // Also the first '=' of the piece, wherever it is (npos if none), found in the same pass.
 std::size_t KeyValueReader::piece_end(std::size_t start, std::size_t& equals) const {
+  // Locals, not members, in the loop: the compiler keeps them in registers.
+  const char* const text = text_.data();
   const std::size_t n = text_.size();
+  const char separator = separator_;
+  const bool braces = respect_braces_;
+  std::size_t first_equals = std::string_view::npos;
   std::size_t i = start;
-  equals = std::string_view::npos;
   for (; i < n; ++i) {
-    const char c = text_[i];
-    if (c == separator_) break;
-    if (c == '=' && equals == std::string_view::npos) equals = i;
-    if (c == '{' && respect_braces_) {
+    const char c = text[i];
+    if (c == separator) break;
+    if (c == '=' && first_equals == std::string_view::npos) first_equals = i;
+    if (c == '{' && braces) {
       int depth = 1;
       for (++i; i < n && depth > 0; ++i) {
-        if (text_[i] == '=' && equals == std::string_view::npos) equals = i;
-        depth += text_[i] == '{' ? 1 : text_[i] == '}' ? -1 : 0;
+        if (text[i] == '=' && first_equals == std::string_view::npos) first_equals = i;
+        depth += text[i] == '{' ? 1 : text[i] == '}' ? -1 : 0;
       }
       if (i == n) break;
       --i;  // the outer loop looks at the byte after the closing brace
     }
   }
+  equals = first_equals;
   return i;
 }
 

@@ -50,26 +50,27 @@ std::string field_value(std::string_view key, std::string_view value) {
 
 std::optional<std::string> vehicle_name(const Fields& f, std::string_view key,
                                         std::string& error) {
-  return vehicle_name_field(key, f.get(key), error);
+  const auto name = f.get(key);
+  if (!valid_vehicle_name(key, name, error)) return std::nullopt;
+  return std::string(*name);
 }
 
-std::optional<std::string> vehicle_name_field(std::string_view key,
-                                              std::optional<std::string_view> name,
-                                              std::string& error) {
+bool valid_vehicle_name(std::string_view key, std::optional<std::string_view> name,
+                        std::string& error) {
   if (!name || name->empty()) {
     error = missing_field(key);
-    return std::nullopt;
+    return false;
   }
   if (name->size() > kMaxVehicleNameBytes) {
     error = field_value(key, *name) + " is longer than " + std::to_string(kMaxVehicleNameBytes) +
             " bytes";
-    return std::nullopt;
+    return false;
   }
   if (has_control_byte(*name)) {
     error = field_value(key, *name) + " contains a control byte";
-    return std::nullopt;
+    return false;
   }
-  return std::string(*name);
+  return true;
 }
 
 std::string missing_field(std::string_view key) {

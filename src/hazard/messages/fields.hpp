@@ -42,10 +42,10 @@ std::string field_value(std::string_view key, std::string_view value);
 /// The vehicle name in field `key`: present, non-empty, at most kMaxVehicleNameBytes and free
 /// of control bytes (ranges.hpp); nullopt with `error` set otherwise.
 std::optional<std::string> vehicle_name(const Fields& f, std::string_view key, std::string& error);
-/// vehicle_name's rule for a value found some other way (node_report.cpp).
-std::optional<std::string> vehicle_name_field(std::string_view key,
-                                              std::optional<std::string_view> name,
-                                              std::string& error);
+/// The rule itself, without a copy of the name (node_report.cpp): false with `error` set when
+/// the name is absent, empty, too long or holds a control byte.
+bool valid_vehicle_name(std::string_view key, std::optional<std::string_view> name,
+                        std::string& error);
 /// "missing field 'vname'".
 std::string missing_field(std::string_view key);
 

@@ -102,9 +102,8 @@ Parsed<NodeReport> parse_node_report(std::string_view text, const GeoPlacement* 
   const NodeFields f(text);
   NodeReport r;
   std::string error;
-  auto name = detail::vehicle_name_field("NAME", f.name, error);
-  if (!name) return Parsed<NodeReport>::fail(error);
-  r.name = std::move(*name);
+  if (!detail::valid_vehicle_name("NAME", f.name, error)) return Parsed<NodeReport>::fail(error);
+  r.name.assign(f.name->data(), f.name->size());
 
   const auto x = number_field("X", f.x, error);
   const auto y = number_field("Y", f.y, error);
