@@ -117,4 +117,29 @@ double norm360(double angle_deg);
 /// Angle in (-180, 180].
 double norm180(double angle_deg);
 
+// ---- inline definitions: trim and iequals run on every key and value of every message -------
+
+namespace detail {
+/// ASCII case folding, as std::tolower does in the "C" locale our programs never change,
+/// without a library call per byte.
+inline char lower_ascii(char c) {
+  return c >= 'A' && c <= 'Z' ? static_cast<char>(c + ('a' - 'A')) : c;
+}
+inline bool is_trimmed(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
+}  // namespace detail
+
+inline std::string_view trim(std::string_view text) {
+  while (!text.empty() && detail::is_trimmed(text.front())) text.remove_prefix(1);
+  while (!text.empty() && detail::is_trimmed(text.back())) text.remove_suffix(1);
+  return text;
+}
+
+inline bool iequals(std::string_view a, std::string_view b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (detail::lower_ascii(a[i]) != detail::lower_ascii(b[i])) return false;
+  }
+  return true;
+}
+
 }  // namespace base

@@ -15,9 +15,9 @@ constexpr int kMaxDecimals = 30;
 
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
 
-// ASCII case folding, as std::tolower/toupper do in the "C" locale our programs never change,
-// without a library call per byte (iequals runs on every key of every message).
-char lower_ascii(char c) { return c >= 'A' && c <= 'Z' ? static_cast<char>(c + ('a' - 'A')) : c; }
+using detail::lower_ascii;
+
+// ASCII case folding, as std::toupper does in the "C" locale our programs never change.
 char upper_ascii(char c) { return c >= 'a' && c <= 'z' ? static_cast<char>(c - ('a' - 'A')) : c; }
 
 // Accepts exactly the grammar of parse_number's contract.
@@ -143,22 +143,6 @@ std::string format_shortest(double value) {
   const auto [ptr, ec] = std::to_chars(buf, buf + sizeof buf, value);
   if (ec != std::errc()) return format_g(value, 17);
   return std::string(buf, ptr);
-}
-
-std::string_view trim(std::string_view text) {
-  // A loop over the (usually zero) blanks at each end, not a search through a set per byte.
-  const auto trimmed = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; };
-  while (!text.empty() && trimmed(text.front())) text.remove_prefix(1);
-  while (!text.empty() && trimmed(text.back())) text.remove_suffix(1);
-  return text;
-}
-
-bool iequals(std::string_view a, std::string_view b) {
-  if (a.size() != b.size()) return false;
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    if (lower_ascii(a[i]) != lower_ascii(b[i])) return false;
-  }
-  return true;
 }
 
 std::string to_lower(std::string_view text) {
