@@ -20,25 +20,63 @@ using detail::lower_ascii;
 // ASCII case folding, as std::toupper does in the "C" locale our programs never change.
 char upper_ascii(char c) { return c >= 'a' && c <= 'z' ? static_cast<char>(c - ('a' - 'A')) : c; }
 
-// Accepts exactly the grammar of parse_number's contract.
-bool is_decimal_number(std::string_view s) {
+// A text read against the grammar of parse_number's contract, in one pass. `exact` is set when
+// the value could be had exactly on the way: at most 19 significant digits forming a whole
+// number m <= 2^53, and a decimal exponent e (the written one minus the digits after the point)
+// in [-22, 22]. Then m and 10^|e| are exact doubles and one multiplication or division rounds
+// correctly (Clinger's fast path), which is the value strtod gives.
+struct DecimalScan {
+  bool valid = false;
+  std::optional<double> exact;
+};
+
+constexpr int kMaxExactDigits = 19;          // a uint64 holds any 19 digits
+constexpr int kMaxExactPow10 = 22;           // 10^22 is the largest exact power of ten
+constexpr std::uint64_t kMaxExactMantissa = std::uint64_t{1} << 53;
+constexpr int kExponentCap = 100000;         // far past any double; keeps the int from overflow
+
+DecimalScan scan_decimal(std::string_view s) {
+  static constexpr double kPow10[kMaxExactPow10 + 1] = {
+      1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
+      1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+  DecimalScan scan;
   std::size_t i = 0;
-  if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
-  std::size_t mantissa_digits = 0;
-  while (i < s.size() && is_digit(s[i])) ++i, ++mantissa_digits;
-  if (i < s.size() && s[i] == '.') {
-    ++i;
-    while (i < s.size() && is_digit(s[i])) ++i, ++mantissa_digits;
+  bool negative = false;
+  if (i < s.size() && (s[i] == '+' || s[i] == '-')) negative = s[i++] == '-';
+  std::uint64_t mantissa = 0;
+  int digits = 0;
+  int exponent = 0;
+  for (; i < s.size() && is_digit(s[i]); ++i, ++digits) {
+    if (digits < kMaxExactDigits) mantissa = mantissa * 10 + static_cast<unsigned>(s[i] - '0');
   }
-  if (mantissa_digits == 0) return false;
+  if (i < s.size() && s[i] == '.') {
+    for (++i; i < s.size() && is_digit(s[i]); ++i, ++digits) {
+      if (digits < kMaxExactDigits) mantissa = mantissa * 10 + static_cast<unsigned>(s[i] - '0');
+      --exponent;
+    }
+  }
+  if (digits == 0) return scan;
   if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
     ++i;
-    if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
-    std::size_t exponent_digits = 0;
-    while (i < s.size() && is_digit(s[i])) ++i, ++exponent_digits;
-    if (exponent_digits == 0) return false;
+    bool exponent_negative = false;
+    if (i < s.size() && (s[i] == '+' || s[i] == '-')) exponent_negative = s[i++] == '-';
+    int written = 0;
+    int exponent_digits = 0;
+    for (; i < s.size() && is_digit(s[i]); ++i, ++exponent_digits) {
+      if (written < kExponentCap) written = written * 10 + (s[i] - '0');
+    }
+    if (exponent_digits == 0) return scan;
+    exponent += exponent_negative ? -written : written;
   }
-  return i == s.size();
+  if (i != s.size()) return scan;
+  scan.valid = true;
+  if (digits <= kMaxExactDigits && mantissa <= kMaxExactMantissa &&
+      exponent >= -kMaxExactPow10 && exponent <= kMaxExactPow10) {
+    const auto m = static_cast<double>(mantissa);
+    const double v = exponent >= 0 ? m * kPow10[exponent] : m / kPow10[-exponent];
+    scan.exact = negative ? -v : v;
+  }
+  return scan;
 }
 
 // FIX for the common case, with integer arithmetic: |value| * 10^decimals below 2^53 and at
@@ -84,7 +122,7 @@ bool append_fix_fast(std::string& out, double value, int decimals) {
       p = std::copy(digits + integer_digits, digits + count, p);
     }
   }
-  out.append(text, p);
+  out.append(text, static_cast<std::size_t>(p - text));  // (pointer, length): no _M_replace
   return true;
 }
 
@@ -98,7 +136,7 @@ void append_fix(std::string& out, double value, int decimals) {
   char small[64];
   auto r = std::to_chars(small, small + sizeof small, value, std::chars_format::fixed, decimals);
   if (r.ec == std::errc()) {
-    out.append(small, r.ptr);
+    out.append(small, static_cast<std::size_t>(r.ptr - small));
     return;
   }
   const std::size_t at = out.size();
@@ -114,8 +152,10 @@ void append_fmt(std::string& out, double value, int decimals) {
   // FIX writes a '.' exactly when it has decimals (and the value is finite: "inf" and "nan"
   // end in neither '0' nor '.', so the trimming below leaves them alone).
   if (decimals > 0) {
-    while (out.size() > at && out.back() == '0') out.pop_back();
-    if (out.size() > at && out.back() == '.') out.pop_back();
+    std::size_t end = out.size();  // one resize at the end: pop_back is a call per byte
+    while (end > at && out[end - 1] == '0') --end;
+    if (end > at && out[end - 1] == '.') --end;
+    out.resize(end);
   }
   if (out.size() == at + 2 && out.compare(at, 2, "-0") == 0) out.erase(at, 1);
 }
@@ -190,7 +230,7 @@ std::vector<std::string_view> split(std::string_view text, char separator) {
 
 namespace {
 
-// The reference conversion of a text that passed is_decimal_number. strtod needs a terminated
+// The reference conversion of a text that passed scan_decimal. strtod needs a terminated
 // string; the grammar check makes it locale-safe in the "C" locale that our programs never
 // change. Underflow (1e-400) yields a finite 0 and is kept.
 std::optional<double> convert_with_strtod(std::string_view text) {
@@ -203,13 +243,16 @@ std::optional<double> convert_with_strtod(std::string_view text) {
 
 }  // namespace
 
-// std::from_chars is correctly rounded, as glibc's strtod is, so both give the same double for
-// every text of the grammar; it needs no copy. It takes no '+' and reports overflow and
-// underflow as errors: those texts (and anything else it does not take whole) go to strtod,
-// which decides them as it always did (tests/base/number_differential_test.cpp).
+// Most numbers in messages are short decimals, converted exactly during the grammar check.
+// For the rest, std::from_chars is correctly rounded, as glibc's strtod is, so both give the
+// same double for every text of the grammar; it needs no copy. It takes no '+' and reports
+// overflow and underflow as errors: those texts (and anything else it does not take whole) go
+// to strtod, which decides them as it always did (tests/base/number_differential_test.cpp).
 std::optional<double> parse_number(std::string_view text) {
   text = trim(text);
-  if (!is_decimal_number(text)) return std::nullopt;
+  const DecimalScan scan = scan_decimal(text);
+  if (!scan.valid) return std::nullopt;
+  if (scan.exact) return scan.exact;
   const std::string_view unsigned_or_minus =
       text.front() == '+' ? text.substr(1) : text;
   const char* const end = unsigned_or_minus.data() + unsigned_or_minus.size();

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cstdio>
+#include <cstring>
 #include <system_error>
 
 #include "base/text.hpp"
@@ -120,8 +121,13 @@ void append_alog_line(std::string& out, const AlogEntryView& entry) {
   append_column(out, entry.source, 16);
   const std::size_t value_at = out.size();
   out.append(entry.value);
-  std::replace_if(out.begin() + static_cast<std::ptrdiff_t>(value_at), out.end(),
-                  [](char c) { return c == '\n' || c == '\r'; }, ' ');
+  // Two vectorised searches find the rare line break; the byte loop runs only then.
+  const std::string_view v = entry.value;
+  if (!v.empty() && (std::memchr(v.data(), '\n', v.size()) != nullptr ||
+                     std::memchr(v.data(), '\r', v.size()) != nullptr)) {
+    std::replace_if(out.begin() + static_cast<std::ptrdiff_t>(value_at), out.end(),
+                    [](char c) { return c == '\n' || c == '\r'; }, ' ');
+  }
   out.push_back('\n');
 }
 

@@ -1,7 +1,6 @@
 #include "hazard/messages/node_report.hpp"
 
 #include <cmath>
-#include <utility>
 
 #include "fields.hpp"
 #include "hazard/ranges.hpp"
@@ -33,16 +32,32 @@ struct NodeFields {
   }
 
  private:
+  // The slot of a key, or nullptr: a switch on the length and the first letter leaves at most
+  // one candidate, compared case-insensitively (no lowered copy of the key is built).
   Field* slot_for(std::string_view key) {
-    static constexpr std::pair<std::string_view, Field NodeFields::*> kSlots[] = {
-        {"NAME", &NodeFields::name}, {"X", &NodeFields::x},         {"Y", &NodeFields::y},
-        {"SPD", &NodeFields::spd},   {"SPEED", &NodeFields::speed}, {"HDG", &NodeFields::hdg},
-        {"HEADING", &NodeFields::heading}, {"LAT", &NodeFields::lat}, {"LON", &NodeFields::lon},
-        {"TIME", &NodeFields::time}, {"TYPE", &NodeFields::type}};
-    for (const auto& [k, slot] : kSlots) {
-      if (k.size() == key.size() && base::iequals(k, key)) return &(this->*slot);  // sizes first
+    const auto is = [&](std::string_view spelled, Field& slot) {
+      return base::iequals(spelled, key) ? &slot : nullptr;
+    };
+    const char first = base::detail::lower_ascii(key.empty() ? '\0' : key.front());
+    switch (key.size()) {
+      case 1:
+        return first == 'x' ? &x : first == 'y' ? &y : nullptr;
+      case 3:
+        if (first == 's') return is("SPD", spd);
+        if (first == 'h') return is("HDG", hdg);
+        if (first == 'l') return is("LAT", lat) ? &lat : is("LON", lon);
+        return nullptr;
+      case 4:
+        if (first == 'n') return is("NAME", name);
+        if (first == 't') return is("TIME", time) ? &time : is("TYPE", type);
+        return nullptr;
+      case 5:
+        return is("SPEED", speed);
+      case 7:
+        return is("HEADING", heading);
+      default:
+        return nullptr;
     }
-    return nullptr;
   }
 };
 
