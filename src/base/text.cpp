@@ -81,9 +81,10 @@ DecimalScan scan_decimal(std::string_view s) {
 
 // FIX for the common case, with integer arithmetic: |value| * 10^decimals below 2^53 and at
 // most kMaxFastDecimals decimals. The product is off by at most half an ulp, which matters only
-// when it lies that close to a rounding tie (x.5); the exact error settles those. An exact tie,
-// and every other case, returns false: the caller uses std::to_chars, which rounds the exact
-// binary value as printf does. Same text as printf (tests/base/number_differential_test.cpp).
+// when it lies that close to a rounding tie (x.5); the exact error settles those, and an exact
+// tie goes to the even neighbour, as printf does. Every other case returns false: the caller
+// uses std::to_chars, which rounds the exact binary value as printf does. Same text as printf
+// (tests/base/number_differential_test.cpp).
 constexpr int kMaxFastDecimals = 9;
 bool append_fix_fast(std::string& out, double value, int decimals) {
   static constexpr double kPow10[kMaxFastDecimals + 1] = {1e0, 1e1, 1e2, 1e3, 1e4,
@@ -99,13 +100,16 @@ bool append_fix_fast(std::string& out, double value, int decimals) {
     // Near a tie the product's rounding matters. fma gives its error exactly, and the sign of
     // (fraction - 0.5) + error, both exact doubles, is the side of the tie the value is on.
     const double above_tie = (fraction - 0.5) + std::fma(magnitude, kPow10[decimals], -scaled);
-    if (above_tie == 0.0) return false;  // an exact tie (2.5 to 0 decimals): to_chars decides
-    round_up = above_tie > 0.0;
+    // An exact tie (2.5 to 0 decimals, -10000.25 to 1) goes to the even neighbour, as printf
+    // rounds in the default rounding mode.
+    const bool odd = (static_cast<std::uint64_t>(whole) & 1U) != 0;
+    round_up = above_tie > 0.0 || (above_tie == 0.0 && odd);
   }
   const std::uint64_t units = static_cast<std::uint64_t>(whole) + (round_up ? 1 : 0);
   // The digits of `units`, then the point `decimals` digits from the right (0.0x: zeros first).
   char digits[24];
-  const auto count = static_cast<int>(std::to_chars(digits, digits + sizeof digits, units).ptr - digits);
+  const char* const digits_end = std::to_chars(digits, digits + sizeof digits, units).ptr;
+  const auto count = static_cast<int>(digits_end - digits);
   char text[48];
   char* p = text;
   if (std::signbit(value)) *p++ = '-';
