@@ -106,27 +106,19 @@ bool append_fix_fast(std::string& out, double value, int decimals) {
     round_up = above_tie > 0.0 || (above_tie == 0.0 && odd);
   }
   const std::uint64_t units = static_cast<std::uint64_t>(whole) + (round_up ? 1 : 0);
-  // The digits of `units`, then the point `decimals` digits from the right (0.0x: zeros first).
-  char digits[24];
-  const char* const digits_end = std::to_chars(digits, digits + sizeof digits, units).ptr;
-  const auto count = static_cast<int>(digits_end - digits);
+  // Written from the right: the decimals, the point, the whole part (at least "0"), the sign.
   char text[48];
-  char* p = text;
-  if (std::signbit(value)) *p++ = '-';
-  const int integer_digits = count - decimals;
-  if (integer_digits <= 0) {
-    *p++ = '0';
-    *p++ = '.';
-    for (int i = integer_digits; i < 0; ++i) *p++ = '0';
-    p = std::copy(digits, digits + count, p);
-  } else {
-    p = std::copy(digits, digits + integer_digits, p);
-    if (decimals > 0) {
-      *p++ = '.';
-      p = std::copy(digits + integer_digits, digits + count, p);
-    }
-  }
-  out.append(text, static_cast<std::size_t>(p - text));  // (pointer, length): no _M_replace
+  char* const end = text + sizeof text;
+  char* p = end;
+  std::uint64_t rest = units;
+  for (int i = 0; i < decimals; ++i, rest /= 10) *--p = static_cast<char>('0' + rest % 10);
+  if (decimals > 0) *--p = '.';
+  do {
+    *--p = static_cast<char>('0' + rest % 10);
+    rest /= 10;
+  } while (rest != 0);
+  if (std::signbit(value)) *--p = '-';
+  out.append(p, static_cast<std::size_t>(end - p));
   return true;
 }
 
