@@ -5,6 +5,7 @@
 #include <ostream>
 
 #include "app_support.hpp"
+#include "moos/app.hpp"
 #include "mission/messages/hazard_search.hpp"
 #include "mission/messages/hazardset_report.hpp"
 #include "mission/metric.hpp"
@@ -23,6 +24,8 @@ std::string configure(mission::HazardMetric& metric, const moos::MissionFile& mi
                       const moos::ProcessBlock& block, std::ostream& err) {
   const auto read = app_support::mission_relative_reader(mission.directory());
   for (const moos::ConfigLine& line : block.lines) {
+    // AppTick, CommsTick, ...: the MOOS application's, never handed to the grader (app.hpp).
+    if (moos::is_framework_parameter(line.key)) continue;
     const mission::HazardMetric::ConfigResult r = metric.configure(line.key, line.value);
     if (!r.warning.empty()) err << kMetricAppName << ": " << at(line) << r.warning << "\n";
     if (!r.hazard_file) continue;

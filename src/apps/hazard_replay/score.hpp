@@ -3,7 +3,8 @@
 //
 // Contract: the grader is libmission's HazardMetric, configured from the mission file's
 // `ProcessConfig = uFldHazardMetric` block line by line as uFldHazardMetric configures it
-// (penalties, max_time, and hazard_file, read relative to the mission file: the ground truth).
+// (penalties, max_time, and hazard_file, read relative to the mission file: the ground truth;
+// AppTick, CommsTick and the other MOOS application parameters are skipped, as the app does).
 // The input's HAZARD_SEARCH_START and HAZARDSET_REPORT lines (what a shoreside pLogger records
 // from the vehicles' pHazardMgr) up to the replay's end (the last input, or --until) are handed
 // to it in time order, the grader starting at the first input's time, as uFldHazardMetric would
