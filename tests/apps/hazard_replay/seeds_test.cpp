@@ -82,7 +82,7 @@ void add_metric_and_reports(const ScratchDir& dir, const std::vector<std::string
                               "  sensor_config = width=25, exp=4, pclass=0.7\n"
                               "  show_hazards = false\n"
                               "  min_classify_interval = 0\n") +
-                 "\nProcessConfig = uFldHazardMetric\n{\n  hazard_file = field.txt\n"
+                 "\nProcessConfig = uFldHazardMetric\n{\n  AppTick = 4\n  hazard_file = field.txt\n"
                  "  penalty_missed_hazard = 100\n  penalty_false_alarm = 10\n}\n");
   std::vector<testing::Line> lines = {{0.0, "UHZ_SENSOR_REQUEST", "vname=v"},
                                       {1.0, "HAZARD_SEARCH_START", "true"}};
@@ -111,6 +111,7 @@ TEST(ReplaySeeds, ScoreIsTheLastReportsGradeOnEveryLine) {
   const auto plain = testing::run(dir, {"m.moos", "in.alog", "--seeds=1..2"});
   const auto r = testing::run(dir, {"m.moos", "in.alog", "--seeds=1..2", "--score"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err.find("unknown parameter"), std::string::npos) << r.err;  // AppTick is the app's
   const auto lines = base::split(base::trim(r.out), '\n');
   const auto plain_lines = base::split(base::trim(plain.out), '\n');
   ASSERT_EQ(lines.size(), 2u) << r.out;
