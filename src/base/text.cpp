@@ -1,7 +1,6 @@
 #include "base/text.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -21,9 +20,9 @@ using detail::lower_ascii;
 char upper_ascii(char c) { return c >= 'a' && c <= 'z' ? static_cast<char>(c - ('a' - 'A')) : c; }
 
 // A text read against the grammar of parse_number's contract, in one pass. `exact` is set when
-// the value could be had exactly on the way: at most 19 significant digits forming a whole
-// number m <= 2^53, and a decimal exponent e (the written one minus the digits after the point)
-// in [-22, 22]. Then m and 10^|e| are exact doubles and one multiplication or division rounds
+// the value could be had exactly on the way: at most 19 digits (leading zeros count) forming a
+// whole number m <= 2^53, and a decimal exponent e (the written one minus the digits after the
+// point) in [-22, 22]. Then m and 10^|e| are exact doubles and one multiplication or division rounds
 // correctly (Clinger's fast path), which is the value strtod gives.
 struct DecimalScan {
   bool valid = false;

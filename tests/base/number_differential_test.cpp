@@ -21,7 +21,8 @@ namespace {
 
 // The reference reading: the grammar as a regular expression, then strtod, finite only.
 std::optional<double> reference_number(const std::string& text) {
-  static const std::regex grammar(R"([ \t\r\n]*([+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][+-]?[0-9]+)?)[ \t\r\n]*)");
+  static const std::regex grammar(
+      R"([ \t\r\n]*([+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][+-]?[0-9]+)?)[ \t\r\n]*)");
   std::smatch m;
   if (!std::regex_match(text, m, grammar)) return std::nullopt;
   const std::string number = m[1].str();

@@ -122,7 +122,8 @@ TEST(ReplaySeeds, ScoreIsTheLastReportsGradeOnEveryLine) {
     EXPECT_EQ(lines[i], want);
   }
   // Reports after --until are not graded: only archie's counts.
-  const auto early = testing::run(dir, {"m.moos", "in.alog", "--seeds=1..1", "--score", "--until=115"});
+  const auto early =
+      testing::run(dir, {"m.moos", "in.alog", "--seeds=1..1", "--score", "--until=115"});
   ASSERT_EQ(early.exit_code, 0) << early.err;
   EXPECT_NE(early.out.find(",\"score\":100}"), std::string::npos) << early.out;
 }
