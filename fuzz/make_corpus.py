@@ -116,6 +116,18 @@ def packet(*messages):
     return struct.pack("<ii", 9 + len(payload), len(messages)) + b"\0" + payload
 
 
+def seed_numbers():
+    # Texts for parse_number (the exact short path, long mantissas, edges of double) whose
+    # first nine bytes also make a double and a decimal count for fix and fmt.
+    for name, text in [("coordinate", "-9997.75"), ("epoch", "1700000000.100"),
+                       ("exponent", "2.5E-1"), ("tie", "0.125"), ("plus", "+.5"),
+                       ("underflow", "1e-400"), ("overflow", "1.7976931348623159e308"),
+                       ("long", "0." + "0" * 30 + "1e31"), ("junk", "1e+ nan")]:
+        write("number", name, text)
+    write("number", "double_tie", struct.pack("<d", 10000.25) + bytes([1]))
+    write("number", "double_tiny", struct.pack("<d", -1e-10) + bytes([12]))
+
+
 def seed_wire():
     ident = packet(message(b"i", b"S", b"asynchronous", b"pFuzz", ident=-1))
     mail = packet(
@@ -141,3 +153,4 @@ if __name__ == "__main__":
     seed_mission_mail()
     seed_text_files()
     seed_wire()
+    seed_numbers()

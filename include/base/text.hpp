@@ -55,6 +55,25 @@ struct KeyValue {
 std::vector<KeyValue> split_key_values(std::string_view text, char separator = ',',
                                        bool respect_braces = false);
 
+/// The pieces split_key_values returns, one at a time and without a vector (hot parsers:
+/// NODE_REPORT). `text` must outlive the reader and the views it hands out; `separator` is
+/// none of `{`, `}` and `=`.
+class KeyValueReader {
+ public:
+  explicit KeyValueReader(std::string_view text, char separator = ',',
+                          bool respect_braces = false);
+  /// The next piece into `kv`; false when none is left.
+  bool next(KeyValue& kv);
+
+ private:
+  std::size_t piece_end(std::size_t start, std::size_t& equals) const;
+
+  std::string_view text_;
+  char separator_;
+  bool respect_braces_;
+  std::size_t start_ = 0;
+};
+
 // ---- numbers and booleans ---------------------------------------------------------------------
 
 /// A finite decimal number (grammar above) that uses all of `text` after trimming.
@@ -70,6 +89,10 @@ std::optional<bool> parse_bool(std::string_view text);
 
 /// FIX(v, d): C printf("%.*f", d, v). `decimals` is clamped to [0, 30].
 std::string fix(double value, int decimals);
+/// FIX(v, d) appended to `out` (no temporary string: the swath polygon and the log writer).
+void append_fix(std::string& out, double value, int decimals);
+/// FMT(v, d) appended to `out`.
+void append_fmt(std::string& out, double value, int decimals = 5);
 /// FMT(v, d): FIX(v, d), then (only if the text has a '.') trailing '0's and then a trailing '.'
 /// removed, and finally "-0" mapped to "0" (spec section 0). FMT(0.6561, 3) == "0.656".
 std::string fmt(double value, int decimals = 5);
@@ -93,5 +116,30 @@ std::string escape_for_log(std::string_view text);
 double norm360(double angle_deg);
 /// Angle in (-180, 180].
 double norm180(double angle_deg);
+
+// ---- inline definitions: trim and iequals run on every key and value of every message -------
+
+namespace detail {
+/// ASCII case folding, as std::tolower does in the "C" locale our programs never change,
+/// without a library call per byte.
+inline char lower_ascii(char c) {
+  return c >= 'A' && c <= 'Z' ? static_cast<char>(c + ('a' - 'A')) : c;
+}
+inline bool is_trimmed(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
+}  // namespace detail
+
+inline std::string_view trim(std::string_view text) {
+  while (!text.empty() && detail::is_trimmed(text.front())) text.remove_prefix(1);
+  while (!text.empty() && detail::is_trimmed(text.back())) text.remove_suffix(1);
+  return text;
+}
+
+inline bool iequals(std::string_view a, std::string_view b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (detail::lower_ascii(a[i]) != detail::lower_ascii(b[i])) return false;
+  }
+  return true;
+}
 
 }  // namespace base

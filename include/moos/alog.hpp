@@ -22,6 +22,15 @@ struct AlogEntry {
   std::string value;
 };
 
+/// An entry whose text columns are views (into a parsed line, or the caller's strings): for
+/// readers and writers of large logs (hazard_replay) that copy nothing per line.
+struct AlogEntryView {
+  double time_s = 0.0;
+  std::string_view variable;
+  std::string_view source;
+  std::string_view value;
+};
+
 /// Header lines: "%% LOG FILE: <name>", "%% LOGSTART <epoch>", and a rule of '%'.
 std::string alog_header(std::string_view log_name, double logstart_epoch_s);
 
@@ -33,6 +42,8 @@ AlogEntry alog_entry(const Message& msg, double logstart_s);
 
 /// One line, newline-terminated.
 std::string format_alog_line(const AlogEntry& entry);
+/// The same line appended to `out`.
+void append_alog_line(std::string& out, const AlogEntryView& entry);
 
 enum class AlogLineKind { kEntry, kHeader, kBlank, kMalformed };
 
@@ -42,8 +53,16 @@ struct AlogParse {
   std::string error;      ///< why the line is malformed (kind == kMalformed)
 };
 
+struct AlogViewParse {
+  AlogLineKind kind = AlogLineKind::kBlank;
+  AlogEntryView entry;  ///< views into the line; valid when kind == kEntry
+  std::string error;    ///< why the line is malformed (kind == kMalformed)
+};
+
 /// Classifies and parses one line (without its newline; a trailing CR is ignored).
 AlogParse parse_alog_line(std::string_view line);
+/// The same, without copying the columns (the line must outlive the entry).
+AlogViewParse parse_alog_view(std::string_view line);
 
 /// The LOGSTART value of a header line ("%% LOGSTART 1700000000.0"), if it is one.
 std::optional<double> alog_logstart(std::string_view header_line);

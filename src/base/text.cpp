@@ -1,7 +1,6 @@
 #include "base/text.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -11,57 +10,160 @@ namespace base {
 
 namespace {
 
-constexpr std::string_view kTrimmed = " \t\r\n";
 constexpr int kMaxDecimals = 30;
 
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
 
-char lower_ascii(char c) { return static_cast<char>(std::tolower(static_cast<unsigned char>(c))); }
-char upper_ascii(char c) { return static_cast<char>(std::toupper(static_cast<unsigned char>(c))); }
+using detail::lower_ascii;
 
-// Accepts exactly the grammar of parse_number's contract.
-bool is_decimal_number(std::string_view s) {
+// ASCII case folding, as std::toupper does in the "C" locale our programs never change.
+char upper_ascii(char c) { return c >= 'a' && c <= 'z' ? static_cast<char>(c - ('a' - 'A')) : c; }
+
+// A text read against the grammar of parse_number's contract, in one pass. `exact` is set when
+// the value could be had exactly on the way: at most 19 digits (leading zeros count) forming a
+// whole number m <= 2^53, and a decimal exponent e (the written one minus the digits after the
+// point) in [-22, 22]. Then m and 10^|e| are exact doubles and one multiplication or division rounds
+// correctly (Clinger's fast path), which is the value strtod gives.
+struct DecimalScan {
+  bool valid = false;
+  std::optional<double> exact;
+};
+
+constexpr int kMaxExactDigits = 19;          // a uint64 holds any 19 digits
+constexpr int kMaxExactPow10 = 22;           // 10^22 is the largest exact power of ten
+constexpr std::uint64_t kMaxExactMantissa = std::uint64_t{1} << 53;
+constexpr int kExponentCap = 100000;         // far past any double; keeps the int from overflow
+
+DecimalScan scan_decimal(std::string_view s) {
+  static constexpr double kPow10[kMaxExactPow10 + 1] = {
+      1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
+      1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+  DecimalScan scan;
   std::size_t i = 0;
-  if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
-  std::size_t mantissa_digits = 0;
-  while (i < s.size() && is_digit(s[i])) ++i, ++mantissa_digits;
-  if (i < s.size() && s[i] == '.') {
-    ++i;
-    while (i < s.size() && is_digit(s[i])) ++i, ++mantissa_digits;
+  bool negative = false;
+  if (i < s.size() && (s[i] == '+' || s[i] == '-')) negative = s[i++] == '-';
+  std::uint64_t mantissa = 0;
+  int digits = 0;
+  int exponent = 0;
+  for (; i < s.size() && is_digit(s[i]); ++i, ++digits) {
+    if (digits < kMaxExactDigits) mantissa = mantissa * 10 + static_cast<unsigned>(s[i] - '0');
   }
-  if (mantissa_digits == 0) return false;
+  if (i < s.size() && s[i] == '.') {
+    for (++i; i < s.size() && is_digit(s[i]); ++i, ++digits) {
+      if (digits < kMaxExactDigits) mantissa = mantissa * 10 + static_cast<unsigned>(s[i] - '0');
+      --exponent;
+    }
+  }
+  if (digits == 0) return scan;
   if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
     ++i;
-    if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
-    std::size_t exponent_digits = 0;
-    while (i < s.size() && is_digit(s[i])) ++i, ++exponent_digits;
-    if (exponent_digits == 0) return false;
+    bool exponent_negative = false;
+    if (i < s.size() && (s[i] == '+' || s[i] == '-')) exponent_negative = s[i++] == '-';
+    int written = 0;
+    int exponent_digits = 0;
+    for (; i < s.size() && is_digit(s[i]); ++i, ++exponent_digits) {
+      if (written < kExponentCap) written = written * 10 + (s[i] - '0');
+    }
+    if (exponent_digits == 0) return scan;
+    exponent += exponent_negative ? -written : written;
   }
-  return i == s.size();
+  if (i != s.size()) return scan;
+  scan.valid = true;
+  if (digits <= kMaxExactDigits && mantissa <= kMaxExactMantissa &&
+      exponent >= -kMaxExactPow10 && exponent <= kMaxExactPow10) {
+    const auto m = static_cast<double>(mantissa);
+    const double v = exponent >= 0 ? m * kPow10[exponent] : m / kPow10[-exponent];
+    scan.exact = negative ? -v : v;
+  }
+  return scan;
+}
+
+// FIX for the common case, with integer arithmetic: |value| * 10^decimals below 2^53 and at
+// most kMaxFastDecimals decimals. The product is off by at most half an ulp, which matters only
+// when it lies that close to a rounding tie (x.5); the exact error settles those, and an exact
+// tie goes to the even neighbour, as printf does. Every other case returns false: the caller
+// uses std::to_chars, which rounds the exact binary value as printf does. Same text as printf
+// (tests/base/number_differential_test.cpp).
+constexpr int kMaxFastDecimals = 9;
+bool append_fix_fast(std::string& out, double value, int decimals) {
+  static constexpr double kPow10[kMaxFastDecimals + 1] = {1e0, 1e1, 1e2, 1e3, 1e4,
+                                                         1e5, 1e6, 1e7, 1e8, 1e9};
+  if (decimals > kMaxFastDecimals) return false;
+  const double magnitude = std::fabs(value);
+  const double scaled = magnitude * kPow10[decimals];
+  if (!(scaled < 0x1p53)) return false;  // also NaN and infinities
+  const double whole = std::floor(scaled);
+  const double fraction = scaled - whole;  // exact below 2^53
+  bool round_up = fraction > 0.5;
+  if (std::fabs(fraction - 0.5) <= scaled * 0x1p-50) {
+    // Near a tie the product's rounding matters. fma gives its error exactly, and the sign of
+    // (fraction - 0.5) + error, both exact doubles, is the side of the tie the value is on.
+    const double above_tie = (fraction - 0.5) + std::fma(magnitude, kPow10[decimals], -scaled);
+    // An exact tie (2.5 to 0 decimals, -10000.25 to 1) goes to the even neighbour, as printf
+    // rounds in the default rounding mode.
+    const bool odd = (static_cast<std::uint64_t>(whole) & 1U) != 0;
+    round_up = above_tie > 0.0 || (above_tie == 0.0 && odd);
+  }
+  const std::uint64_t units = static_cast<std::uint64_t>(whole) + (round_up ? 1 : 0);
+  // Written from the right: the decimals, the point, the whole part (at least "0"), the sign.
+  char text[48];
+  char* const end = text + sizeof text;
+  char* p = end;
+  std::uint64_t rest = units;
+  for (int i = 0; i < decimals; ++i, rest /= 10) *--p = static_cast<char>('0' + rest % 10);
+  if (decimals > 0) *--p = '.';
+  do {
+    *--p = static_cast<char>('0' + rest % 10);
+    rest /= 10;
+  } while (rest != 0);
+  if (std::signbit(value)) *--p = '-';
+  out.append(p, static_cast<std::size_t>(end - p));
+  return true;
 }
 
 }  // namespace
 
-std::string fix(double value, int decimals) {
+void append_fix(std::string& out, double value, int decimals) {
   decimals = std::clamp(decimals, 0, kMaxDecimals);
+  if (append_fix_fast(out, value, decimals)) return;
   // std::to_chars with a precision is specified "as if by printf" in the C locale, and is much
   // faster than glibc's printf; the large buffer only matters for values near 1e308.
   char small[64];
   auto r = std::to_chars(small, small + sizeof small, value, std::chars_format::fixed, decimals);
-  if (r.ec == std::errc()) return std::string(small, r.ptr);
-  std::string big(400, '\0');
-  r = std::to_chars(big.data(), big.data() + big.size(), value, std::chars_format::fixed, decimals);
-  big.resize(static_cast<std::size_t>(r.ptr - big.data()));
-  return big;
+  if (r.ec == std::errc()) {
+    out.append(small, static_cast<std::size_t>(r.ptr - small));
+    return;
+  }
+  const std::size_t at = out.size();
+  out.resize(at + 400);
+  r = std::to_chars(out.data() + at, out.data() + out.size(), value, std::chars_format::fixed,
+                    decimals);
+  out.resize(static_cast<std::size_t>(r.ptr - out.data()));
+}
+
+void append_fmt(std::string& out, double value, int decimals) {
+  const std::size_t at = out.size();
+  append_fix(out, value, decimals);
+  // FIX writes a '.' exactly when it has decimals (and the value is finite: "inf" and "nan"
+  // end in neither '0' nor '.', so the trimming below leaves them alone).
+  if (decimals > 0) {
+    std::size_t end = out.size();  // one resize at the end: pop_back is a call per byte
+    while (end > at && out[end - 1] == '0') --end;
+    if (end > at && out[end - 1] == '.') --end;
+    out.resize(end);
+  }
+  if (out.size() == at + 2 && out.compare(at, 2, "-0") == 0) out.erase(at, 1);
+}
+
+std::string fix(double value, int decimals) {
+  std::string s;
+  append_fix(s, value, decimals);
+  return s;
 }
 
 std::string fmt(double value, int decimals) {
-  std::string s = fix(value, decimals);
-  if (s.find('.') != std::string::npos) {
-    while (!s.empty() && s.back() == '0') s.pop_back();
-    if (!s.empty() && s.back() == '.') s.pop_back();
-  }
-  if (s == "-0") s = "0";
+  std::string s;
+  append_fmt(s, value, decimals);
   return s;
 }
 
@@ -76,21 +178,6 @@ std::string format_shortest(double value) {
   const auto [ptr, ec] = std::to_chars(buf, buf + sizeof buf, value);
   if (ec != std::errc()) return format_g(value, 17);
   return std::string(buf, ptr);
-}
-
-std::string_view trim(std::string_view text) {
-  const auto first = text.find_first_not_of(kTrimmed);
-  if (first == std::string_view::npos) return {};
-  const auto last = text.find_last_not_of(kTrimmed);
-  return text.substr(first, last - first + 1);
-}
-
-bool iequals(std::string_view a, std::string_view b) {
-  if (a.size() != b.size()) return false;
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    if (lower_ascii(a[i]) != lower_ascii(b[i])) return false;
-  }
-  return true;
 }
 
 std::string to_lower(std::string_view text) {
@@ -136,16 +223,38 @@ std::vector<std::string_view> split(std::string_view text, char separator) {
   }
 }
 
-std::optional<double> parse_number(std::string_view text) {
-  text = trim(text);
-  if (!is_decimal_number(text)) return std::nullopt;
-  // strtod needs a terminated string; the grammar check above makes it locale-safe in the
-  // "C" locale that our programs never change. Underflow (1e-400) yields a finite 0 and is kept.
+namespace {
+
+// The reference conversion of a text that passed scan_decimal. strtod needs a terminated
+// string; the grammar check makes it locale-safe in the "C" locale that our programs never
+// change. Underflow (1e-400) yields a finite 0 and is kept.
+std::optional<double> convert_with_strtod(std::string_view text) {
   const std::string copy(text);
   char* end = nullptr;
   const double v = std::strtod(copy.c_str(), &end);
   if (end != copy.c_str() + copy.size() || !std::isfinite(v)) return std::nullopt;
   return v;
+}
+
+}  // namespace
+
+// Most numbers in messages are short decimals, converted exactly during the grammar check.
+// For the rest, std::from_chars is correctly rounded, as glibc's strtod is, so both give the
+// same double for every text of the grammar; it needs no copy. It takes no '+' and reports
+// overflow and underflow as errors: those texts (and anything else it does not take whole) go
+// to strtod, which decides them as it always did (tests/base/number_differential_test.cpp).
+std::optional<double> parse_number(std::string_view text) {
+  text = trim(text);
+  const DecimalScan scan = scan_decimal(text);
+  if (!scan.valid) return std::nullopt;
+  if (scan.exact) return scan.exact;
+  const std::string_view unsigned_or_minus =
+      text.front() == '+' ? text.substr(1) : text;
+  const char* const end = unsigned_or_minus.data() + unsigned_or_minus.size();
+  double v = 0.0;
+  const auto [ptr, ec] = std::from_chars(unsigned_or_minus.data(), end, v);
+  if (ec == std::errc() && ptr == end && std::isfinite(v)) return v;
+  return convert_with_strtod(text);
 }
 
 std::optional<std::uint64_t> parse_unsigned(std::string_view text) {
@@ -175,28 +284,61 @@ std::optional<bool> parse_bool(std::string_view text) {
   return std::nullopt;
 }
 
-std::vector<KeyValue> split_key_values(std::string_view text, char separator, bool respect_braces) {
-  std::vector<KeyValue> out;
-  std::size_t start = 0;
-  int depth = 0;
-  for (std::size_t i = 0; i <= text.size(); ++i) {
-    const bool at_end = i == text.size();
-    if (!at_end) {
-      const char c = text[i];
-      if (respect_braces && c == '{') ++depth;
-      if (respect_braces && c == '}' && depth > 0) --depth;
-      if (c != separator || depth > 0) continue;
-    }
-    const std::string_view piece = trim(text.substr(start, i - start));
-    start = i + 1;
-    if (piece.empty()) continue;
-    const auto eq = piece.find('=');
-    if (eq == std::string_view::npos) {
-      out.push_back(KeyValue{piece, {}, false});
-    } else {
-      out.push_back(KeyValue{trim(piece.substr(0, eq)), trim(piece.substr(eq + 1)), true});
+KeyValueReader::KeyValueReader(std::string_view text, char separator, bool respect_braces)
+    : text_(text), separator_(separator), respect_braces_(respect_braces) {}
+
+// The end of the piece that starts at `start`: the next separator outside {...} (braces count
+// only when asked; an unmatched '}' is an ordinary byte, an unclosed '{' runs to the end).
+// Also the first '=' of the piece, wherever it is (npos if none), found in the same pass.
+std::size_t KeyValueReader::piece_end(std::size_t start, std::size_t& equals) const {
+  // Locals, not members, in the loop: the compiler keeps them in registers.
+  const char* const text = text_.data();
+  const std::size_t n = text_.size();
+  const char separator = separator_;
+  const bool braces = respect_braces_;
+  std::size_t first_equals = std::string_view::npos;
+  std::size_t i = start;
+  for (; i < n; ++i) {
+    const char c = text[i];
+    if (c == separator) break;
+    if (c == '=' && first_equals == std::string_view::npos) first_equals = i;
+    if (c == '{' && braces) {
+      int depth = 1;
+      for (++i; i < n && depth > 0; ++i) {
+        if (text[i] == '=' && first_equals == std::string_view::npos) first_equals = i;
+        depth += text[i] == '{' ? 1 : text[i] == '}' ? -1 : 0;
+      }
+      if (i == n) break;
+      --i;  // the outer loop looks at the byte after the closing brace
     }
   }
+  equals = first_equals;
+  return i;
+}
+
+bool KeyValueReader::next(KeyValue& kv) {
+  while (start_ <= text_.size()) {
+    std::size_t equals = 0;
+    const std::size_t end = piece_end(start_, equals);
+    const std::size_t start = start_;
+    start_ = end + 1;
+    if (equals == std::string_view::npos) {
+      const std::string_view piece = trim(text_.substr(start, end - start));
+      if (piece.empty()) continue;
+      kv = KeyValue{piece, {}, false};
+    } else {
+      kv = KeyValue{trim(text_.substr(start, equals - start)),
+                    trim(text_.substr(equals + 1, end - equals - 1)), true};
+    }
+    return true;
+  }
+  return false;
+}
+
+std::vector<KeyValue> split_key_values(std::string_view text, char separator, bool respect_braces) {
+  std::vector<KeyValue> out;
+  KeyValueReader reader(text, separator, respect_braces);
+  for (KeyValue kv; reader.next(kv);) out.push_back(kv);
   return out;
 }
 
@@ -234,7 +376,8 @@ std::string escape_for_log(std::string_view text) {
 // fmod is exact (the remainder of two doubles is representable), so any finite heading, however
 // large (1e15, 1e300), normalises in one step without a loop (N3).
 double norm360(double angle_deg) {
-  double r = std::fmod(angle_deg, 360.0);
+  // fmod(a, 360) is a itself when |a| < 360: the common case skips the library call.
+  double r = std::fabs(angle_deg) < 360.0 ? angle_deg : std::fmod(angle_deg, 360.0);
   if (r < 0) r += 360.0;
   if (r >= 360.0) r = 0.0;  // -1e-17 + 360 rounds to 360
   return r + 0.0;           // -720 gives fmod = -0.0; adding +0.0 makes it +0.0

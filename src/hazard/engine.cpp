@@ -112,6 +112,8 @@ Outputs Engine::start(double now_s) {
 // the next batch of the field's visuals if a big field's are still being posted (visuals.cpp).
 Outputs Engine::step(double now_s) {
   Outputs out;
+  // One swath polygon per vehicle, usually: room for them at once, not by doubling.
+  if (effects_.swath_visuals) out.postings.reserve(by_name_.size() + 1);
   post_options_summary_if_due(now_s, out);
   for (VehicleId id : by_name_) sense(id, now_s, out);
   release_classifications(now_s, out);

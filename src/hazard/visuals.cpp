@@ -116,10 +116,12 @@ void Engine::post_object_visuals(ObjectId id, Outputs& out) const {
 
 void Engine::post_swath(const VehicleState& v, const Swath& swath, bool on, Outputs& out) const {
   const SensorSetting& s = *v.setting;
-  ViewPolygon p;
+  // Every vehicle's swath, every iteration: one polygon per thread is reused, so its points and
+  // label keep their storage (the text itself is built anew, as always).
+  thread_local ViewPolygon p;
   const auto corners = swath.corners();
   p.points.assign(corners.begin(), corners.end());
-  p.label = "sensor_swath_" + v.name;
+  p.label.assign("sensor_swath_").append(v.name);
   if (config_.show_pd && config_.show_pfa) {
     p.msg = base::fix(s.pd, 2) + "/" + base::fix(s.pfa, 2);
   } else if (config_.show_pd) {
@@ -131,6 +133,7 @@ void Engine::post_swath(const VehicleState& v, const Swath& swath, bool on, Outp
   }
   p.edge_color = "green";
   p.fill_color = on ? "white" : "red";
+  p.vertex_size = 0.0;
   p.edge_size = kSwathEdgeSize;
   p.fill_transparency = config_.swath_transparency;
   out.post("VIEW_POLYGON", format_view_polygon(p));

@@ -1,7 +1,9 @@
 #include "moos/alog.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cstdio>
+#include <cstring>
 #include <system_error>
 
 #include "base/text.hpp"
@@ -10,30 +12,33 @@ namespace moos {
 
 namespace {
 
-constexpr std::string_view kBlanks = " \t";
+// The column separators, space and tab (a test per byte, not a search through a set: replays
+// read millions of lines).
+bool is_blank(char c) { return c == ' ' || c == '\t'; }
 
 std::string_view trim_right_cr(std::string_view line) {
   if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
   return line;
 }
 
+void skip_blanks(std::string_view& rest) {
+  std::size_t i = 0;
+  while (i < rest.size() && is_blank(rest[i])) ++i;
+  rest.remove_prefix(i);
+}
+
 // Splits off the next blank-separated token; returns an empty view at the end of the line.
 std::string_view next_token(std::string_view& rest) {
-  const auto start = rest.find_first_not_of(kBlanks);
-  if (start == std::string_view::npos) {
-    rest = {};
-    return {};
-  }
-  rest.remove_prefix(start);
-  const auto end = rest.find_first_of(kBlanks);
+  skip_blanks(rest);
+  std::size_t end = 0;
+  while (end < rest.size() && !is_blank(rest[end])) ++end;
   const std::string_view token = rest.substr(0, end);
-  rest.remove_prefix(end == std::string_view::npos ? rest.size() : end);
+  rest.remove_prefix(end);
   return token;
 }
 
-void append_padded(std::string& out, std::string_view text, std::size_t width) {
-  out.append(text);
-  out.append(text.size() < width ? width - text.size() : 0, ' ');
+void pad_column(std::string& out, std::size_t written, std::size_t width) {
+  out.append(written < width ? width - written : 0, ' ');
   out.push_back(' ');
 }
 
@@ -81,46 +86,72 @@ std::string alog_header(std::string_view log_name, double logstart_epoch_s) {
 
 namespace {
 
-// A VARIABLE or SOURCE column: one word, whatever a client sent. Blanks would shift the
-// columns and a newline would forge a record, so both are escaped (issue 12).
-std::string column_text(std::string_view text) {
-  if (text.empty()) return "_";
-  std::string out = base::escape_for_log(text);
-  std::string::size_type blank = 0;
-  while ((blank = out.find(' ', blank)) != std::string::npos) out.replace(blank, 1, "\\x20");
-  return out;
+// Bytes a VARIABLE or SOURCE column cannot hold as they are (column_text).
+bool needs_escape(char c) {
+  const auto b = static_cast<unsigned char>(c);
+  return b < 0x20 || b == 0x7F || c == '\\' || c == ' ';
+}
+
+// A VARIABLE or SOURCE column: one word, whatever a client sent, padded to `width`. Blanks
+// would shift the columns and a newline would forge a record, so both are escaped (issue 12).
+void append_column(std::string& out, std::string_view text, std::size_t width) {
+  const std::size_t at = out.size();
+  if (text.empty()) {
+    out.push_back('_');
+  } else if (std::none_of(text.begin(), text.end(), needs_escape)) {
+    out.append(text);  // the common case, without building the escaped copy
+  } else {
+    std::string escaped = base::escape_for_log(text);
+    std::string::size_type blank = 0;
+    while ((blank = escaped.find(' ', blank)) != std::string::npos) {
+      escaped.replace(blank, 1, "\\x20");
+    }
+    out.append(escaped);
+  }
+  pad_column(out, out.size() - at, width);
 }
 
 }  // namespace
 
+void append_alog_line(std::string& out, const AlogEntryView& entry) {
+  const std::size_t at = out.size();
+  base::append_fix(out, entry.time_s, 3);  // printf's "%.3f" (base::fix)
+  pad_column(out, out.size() - at, 10);
+  append_column(out, entry.variable, 20);
+  append_column(out, entry.source, 16);
+  const std::size_t value_at = out.size();
+  out.append(entry.value);
+  // Two vectorised searches find the rare line break; the byte loop runs only then.
+  const std::string_view v = entry.value;
+  if (!v.empty() && (std::memchr(v.data(), '\n', v.size()) != nullptr ||
+                     std::memchr(v.data(), '\r', v.size()) != nullptr)) {
+    std::replace_if(out.begin() + static_cast<std::ptrdiff_t>(value_at), out.end(),
+                    [](char c) { return c == '\n' || c == '\r'; }, ' ');
+  }
+  out.push_back('\n');
+}
+
 std::string format_alog_line(const AlogEntry& entry) {
-  char time[64];
-  std::snprintf(time, sizeof time, "%.3f", entry.time_s);
   std::string out;
   out.reserve(48 + entry.variable.size() + entry.value.size());
-  append_padded(out, time, 10);
-  append_padded(out, column_text(entry.variable), 20);
-  append_padded(out, column_text(entry.source), 16);
-  for (char c : entry.value) out.push_back(c == '\n' || c == '\r' ? ' ' : c);
-  out.push_back('\n');
+  append_alog_line(out, {entry.time_s, entry.variable, entry.source, entry.value});
   return out;
 }
 
-AlogParse parse_alog_line(std::string_view line) {
-  AlogParse result;
-  line = trim_right_cr(line);
-  if (line.find_first_not_of(kBlanks) == std::string_view::npos) return result;
-  if (line.substr(line.find_first_not_of(kBlanks), 2) == "%%") {
+AlogViewParse parse_alog_view(std::string_view line) {
+  AlogViewParse result;
+  std::string_view rest = trim_right_cr(line);
+  skip_blanks(rest);
+  if (rest.empty()) return result;
+  if (rest.substr(0, 2) == "%%") {
     result.kind = AlogLineKind::kHeader;
     return result;
   }
-  std::string_view rest = line;
   const std::string_view time = next_token(rest);
   const std::string_view variable = next_token(rest);
   const std::string_view source = next_token(rest);
-  const auto value_start = rest.find_first_not_of(kBlanks);
-  const std::string_view value =
-      value_start == std::string_view::npos ? std::string_view{} : rest.substr(value_start);
+  skip_blanks(rest);
+  const std::string_view value = rest;
   const auto t = base::parse_number(time);
   if (!t) {
     result.kind = AlogLineKind::kMalformed;
@@ -133,7 +164,20 @@ AlogParse parse_alog_line(std::string_view line) {
     return result;
   }
   result.kind = AlogLineKind::kEntry;
-  result.entry = AlogEntry{*t, std::string(variable), std::string(source), std::string(value)};
+  result.entry = AlogEntryView{*t, variable, source, value};
+  return result;
+}
+
+AlogParse parse_alog_line(std::string_view line) {
+  AlogViewParse view = parse_alog_view(line);
+  AlogParse result;
+  result.kind = view.kind;
+  result.error = std::move(view.error);
+  const AlogEntryView& e = view.entry;
+  if (view.kind == AlogLineKind::kEntry) {
+    result.entry = AlogEntry{e.time_s, std::string(e.variable), std::string(e.source),
+                             std::string(e.value)};
+  }
   return result;
 }
 

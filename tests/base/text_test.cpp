@@ -80,6 +80,41 @@ TEST(Text, BracesProtectCommasWhenAsked) {
   EXPECT_EQ(base::split_key_values("pts={1,2:3,4},label=x").size(), 4u);
 }
 
+// The edges of the brace rule (issue 14 rewrote the scan): nesting, an unmatched '}' (an
+// ordinary byte), an unclosed '{' (the rest is one piece), '=' only inside braces.
+TEST(Text, BraceEdgesSplitAsBefore) {
+  const auto kv = base::split_key_values(" a={x,{y,z}},b}=1,c , {d=2,e} ,f={g", ',', true);
+  ASSERT_EQ(kv.size(), 5u);
+  EXPECT_EQ(kv[0].key, "a");
+  EXPECT_EQ(kv[0].value, "{x,{y,z}}");
+  EXPECT_EQ(kv[1].key, "b}");
+  EXPECT_EQ(kv[1].value, "1");
+  EXPECT_FALSE(kv[2].has_equals);
+  EXPECT_EQ(kv[2].key, "c");
+  EXPECT_EQ(kv[3].key, "{d");
+  EXPECT_EQ(kv[3].value, "2,e}");
+  EXPECT_EQ(kv[4].key, "f");
+  EXPECT_EQ(kv[4].value, "{g");
+  const auto tail = base::split_key_values("x={1,2}y,z={", ',', true);
+  ASSERT_EQ(tail.size(), 2u);
+  EXPECT_EQ(tail[0].value, "{1,2}y");
+  EXPECT_EQ(tail[1].value, "{");
+}
+
+TEST(Text, KeyValueReaderGivesTheSplitPieces) {
+  const std::string_view text = "NAME=v1, X=3,,{a,b}, Y = 4 ,junk";
+  const auto all = base::split_key_values(text, ',', true);
+  base::KeyValueReader reader(text, ',', true);
+  std::size_t i = 0;
+  for (base::KeyValue kv; reader.next(kv); ++i) {
+    ASSERT_LT(i, all.size());
+    EXPECT_EQ(kv.key, all[i].key);
+    EXPECT_EQ(kv.value, all[i].value);
+    EXPECT_EQ(kv.has_equals, all[i].has_equals);
+  }
+  EXPECT_EQ(i, 5u);
+}
+
 TEST(Text, CaseHelpers) {
   EXPECT_TRUE(base::iequals("Sensor_Config", "sensor_config"));
   EXPECT_FALSE(base::iequals("a", "ab"));

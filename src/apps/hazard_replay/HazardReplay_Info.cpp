@@ -3,8 +3,8 @@
 namespace hazard_replay {
 
 std::string usage_line() {
-  return "Usage: hazard_replay CONFIG.moos INPUT.alog [--alias=NAME] [--seed=N | --seeds=A..B] "
-         "[--until=T] [--output=OUT.alog]";
+  return "Usage: hazard_replay CONFIG.moos INPUT.alog [--alias=NAME] "
+         "[--seed=N | --seeds=A..B [--score]] [--until=T] [--output=OUT.alog]";
 }
 
 std::string help_text() {
@@ -25,6 +25,10 @@ std::string help_text() {
          "  --seed=N           dice seed, a whole number (beats random_seed and seed_random)\n"
          "  --seeds=A..B       replay once per seed A to B; instead of the .alog, one JSON line\n"
          "                     per seed: {\"seed\":S,\"detections\":D,\"classifications\":C}\n"
+         "  --score            with --seeds: each line also carries ,\"score\":X, the last\n"
+         "                     HAZARD_SEARCH_SCORE of the input's HAZARDSET_REPORT lines graded\n"
+         "                     by CONFIG.moos's `ProcessConfig = uFldHazardMetric` block (its\n"
+         "                     hazard_file is the truth); left out when no report is accepted\n"
          "  --until=T          stop at time T (input time base) instead of the last input\n"
          "  --output=OUT.alog  write the postings to OUT.alog instead of standard output\n"
          "  --help, -h         this text\n"

@@ -13,6 +13,7 @@ const moos::SwitchTable& switch_table() {
     t.rules = {moos::switch_rule("--alias", SwitchKind::kText, "a name"),
                moos::switch_rule("--seed", SwitchKind::kUnsigned, "a whole number in [0, 2^64)"),
                moos::switch_rule("--seeds", SwitchKind::kText, "a range A..B of whole numbers"),
+               moos::switch_rule("--score", SwitchKind::kFlag, "no value"),
                moos::switch_rule("--until", SwitchKind::kNumber, "a finite number of seconds"),
                moos::switch_rule("--output", SwitchKind::kText, "a file name"),
                moos::help_switch_rule()};
@@ -59,6 +60,8 @@ ParsedArgs parse_args(const std::vector<std::string>& args) {
                   std::to_string(kMaxSeedsPerRun) + " seeds: '--seeds=" + *range + "'");
     }
   }
+  o.score = v.has("--score");
+  if (o.score && !o.seeds) return fail("--score needs --seeds=A..B");
   o.until_s = v.number("--until");
   o.output_path = v.text("--output");
   return ParsedArgs{o, {}};

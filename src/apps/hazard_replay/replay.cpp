@@ -1,8 +1,10 @@
 #include "replay.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <ostream>
 
 #include "app_support.hpp"
@@ -12,6 +14,7 @@
 #include "base/text.hpp"
 #include "moos/alog.hpp"
 #include "moos/mission.hpp"
+#include "score.hpp"
 
 namespace hazard_replay {
 
@@ -20,29 +23,79 @@ namespace {
 namespace fs = std::filesystem;
 using base::fix;
 
+// A growable byte buffer that, unlike std::vector<char>, does not zero what read() will fill.
+class TextBuffer {
+ public:
+  char* data() { return data_.get(); }
+  const char* data() const { return data_.get(); }
+  std::size_t size() const { return size_; }
+  /// Room for `more` bytes after size(); returns where they go (commit them with grow()).
+  char* reserve_more(std::size_t more) {
+    if (capacity_ - size_ < more) {
+      const std::size_t capacity = std::max(size_ + more, capacity_ * 2);
+      std::unique_ptr<char[]> bigger(new char[capacity]);  // default-initialised: not zeroed
+      if (size_ > 0) std::memcpy(bigger.get(), data_.get(), size_);
+      data_ = std::move(bigger);
+      capacity_ = capacity;
+    }
+    return data_.get() + size_;
+  }
+  void grow(std::size_t bytes) { size_ += bytes; }
+
+ private:
+  std::unique_ptr<char[]> data_;
+  std::size_t size_ = 0;
+  std::size_t capacity_ = 0;
+};
+
 struct Input {
-  std::vector<moos::AlogEntry> entries;  // time order
+  TextBuffer text;                    // the whole file (moving it keeps the views valid)
+  std::vector<hazard::Mail> entries;  // views into `text`, in time order
   double logstart_s = 0.0;
 };
 
-std::optional<Input> read_input(const std::string& path, std::ostream& err) {
+// Reads in large blocks: the whole log is held, as its entries always were, but as one buffer.
+constexpr std::size_t kReadBlockBytes = std::size_t{1} << 20;
+// Bytes of an input line, about (a NODE_REPORT line is about 110): a first guess of the entries.
+constexpr std::size_t kTypicalLineBytes = 96;
+
+bool read_whole_file(const std::string& path, TextBuffer& text) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
+  if (!in) return false;
+  std::error_code size_unknown;  // a pipe, say: the blocks below still read it
+  const auto size = fs::file_size(path, size_unknown);
+  if (!size_unknown) text.reserve_more(static_cast<std::size_t>(size) + 1);
+  while (in) {
+    const std::size_t room = std::max(kReadBlockBytes, size_unknown ? 0 : std::size_t(size) + 1);
+    in.read(text.reserve_more(room), static_cast<std::streamsize>(room));
+    text.grow(static_cast<std::size_t>(in.gcount()));
+  }
+  return !in.bad();
+}
+
+std::optional<Input> read_input(const std::string& path, std::ostream& err) {
   Input input;
-  std::string line;
+  if (!read_whole_file(path, input.text)) return std::nullopt;
+  const std::string_view all(input.text.data(), input.text.size());
+  input.entries.reserve(all.size() / kTypicalLineBytes);
   int number = 0;
-  while (std::getline(in, line)) {
+  // Lines as std::getline gives them: split at '\n', a last line without one still counts.
+  for (std::size_t start = 0; start < all.size();) {
+    const std::size_t newline = all.find('\n', start);
+    const std::size_t end = newline == std::string_view::npos ? all.size() : newline;
+    const std::string_view line = all.substr(start, end - start);
+    start = end + 1;
     ++number;
-    const moos::AlogParse p = moos::parse_alog_line(line);
+    const moos::AlogViewParse p = moos::parse_alog_view(line);
     if (p.kind == moos::AlogLineKind::kEntry) {
-      input.entries.push_back(p.entry);
+      input.entries.push_back(hazard::Mail{p.entry.variable, p.entry.value, p.entry.time_s});
     } else if (p.kind == moos::AlogLineKind::kHeader) {
-      if (const auto start = moos::alog_logstart(line)) input.logstart_s = *start;
+      if (const auto logstart = moos::alog_logstart(line)) input.logstart_s = *logstart;
     } else if (p.kind == moos::AlogLineKind::kMalformed) {
       err << path << ":" << number << ": warning: " << p.error << "; line skipped\n";
     }
   }
-  const auto earlier = [](const moos::AlogEntry& a, const moos::AlogEntry& b) {
+  const auto earlier = [](const hazard::Mail& a, const hazard::Mail& b) {
     return a.time_s < b.time_s;
   };
   // A logger writes in time order: sorting (moving every entry) only when it did not.
@@ -52,17 +105,28 @@ std::optional<Input> read_input(const std::string& path, std::ostream& err) {
   return input;
 }
 
-// Writes one engine call's outputs: postings to the log, the rest to the error stream.
+// Writes one engine call's outputs: postings to the log (through a large buffer, not one
+// stream call per line), the rest to the error stream.
 class Writer {
  public:
   Writer(std::ostream& out, std::ostream& err, std::string source)
-      : out_(out), err_(err), source_(std::move(source)) {}
+      : out_(out), err_(err), source_(std::move(source)) {
+    buffer_.reserve(kFlushBytes + kFlushBytes / 4);
+  }
+  Writer(const Writer&) = delete;
+  Writer& operator=(const Writer&) = delete;
+  ~Writer() { flush(); }
 
   void write(const hazard::TimedOutputs& timed) {
     const hazard::Outputs& o = timed.outputs;
     const double time_s = timed.time_s;
     for (const hazard::Posting& p : o.postings) {
-      out_ << moos::format_alog_line({time_s, p.variable, source_, p.value});
+      moos::append_alog_line(buffer_, {time_s, p.variable, source_, p.value});
+    }
+    if (buffer_.size() >= kFlushBytes) flush();
+    if (o.config_warnings.empty() && o.run_warnings.empty() &&
+        o.retracted_run_warnings.empty() && o.events.empty()) {
+      return;
     }
     const std::string when = "[" + fix(time_s, 3) + "] ";
     for (const auto& w : o.config_warnings) err_ << when << "config warning: " << w << "\n";
@@ -71,12 +135,18 @@ class Writer {
     for (const auto& e : o.events) err_ << when << "event: " << e << "\n";
   }
 
+  void flush() {
+    out_.write(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
+    buffer_.clear();
+  }
+
  private:
+  static constexpr std::size_t kFlushBytes = std::size_t{1} << 20;
   std::ostream& out_;
   std::ostream& err_;
   std::string source_;
+  std::string buffer_;
 };
-
 
 // A guard against a mistyped --until (1e12 s at 4 Hz would never finish).
 constexpr double kMaxIterations = 1e8;
@@ -122,11 +192,25 @@ int run(const Options& options, std::ostream& out, std::ostream& err) {
   }
   const Timeline timeline{&mail, start_s, end_s, tick_hz};
   if (options.seeds) {
+    std::optional<double> score;
+    if (options.score) {
+      // The recorded report does not depend on the dice: graded once, the same on every line.
+      const RecordedScore graded = score_recorded_reports(*mission, mail, end_s, err);
+      if (!graded.error.empty()) {
+        err << "hazard_replay: " << graded.error << " (in '" << options.config_path << "')\n";
+        return 1;
+      }
+      score = graded.score;
+      if (!score) {
+        err << "hazard_replay: --score: '" << options.input_path
+            << "' holds no HAZARDSET_REPORT the metric accepts; the lines carry no score\n";
+      }
+    }
     err << "hazard_replay: seeds " << options.seeds->first << ".." << options.seeds->last
         << ", AppTick " << base::fmt(tick_hz) << " Hz\n";
     for (std::uint64_t seed = options.seeds->first;; ++seed) {
       hazard::Driver seeded(built.with_seed({seed, hazard::SeedSource::kCommandLine}));
-      out << seed_summary_json(seed, count_reports(seeded, timeline)) << "\n";
+      out << seed_summary_json(seed, count_reports(seeded, timeline), score) << "\n";
       if (seed == options.seeds->last) break;
     }
     out.flush();
@@ -144,20 +228,20 @@ int run(const Options& options, std::ostream& out, std::ostream& err) {
   }
   Writer writer(out, err, options.app_name);
   replay(driver, timeline, [&](const hazard::TimedOutputs& t) { writer.write(t); });
+  writer.flush();
   out.flush();
   return 0;
 }
 
 void replay(hazard::Driver& driver, const Timeline& timeline,
             const std::function<void(const hazard::TimedOutputs&)>& sink) {
-  const std::vector<moos::AlogEntry>& mail = *timeline.mail;
+  const std::vector<hazard::Mail>& mail = *timeline.mail;
   if (mail.empty()) return;
   sink(driver.start(timeline.start_s));
   std::size_t next = 0;
   auto deliver_until = [&](double t) {
     for (; next < mail.size() && mail[next].time_s <= t; ++next) {
-      const moos::AlogEntry& m = mail[next];
-      sink(driver.deliver(hazard::Mail{m.variable, m.value, m.time_s}));
+      sink(driver.deliver(mail[next]));
     }
   };
   for (long k = 0;; ++k) {

@@ -3,7 +3,8 @@
 // output", "Release timing", "Seeds").
 //
 // With --seeds=A..B the same replay runs once per seed and, instead of the .alog, writes one
-// JSON line per seed: {"seed":S,"detections":D,"classifications":C} (no metric score).
+// JSON line per seed: {"seed":S,"detections":D,"classifications":C}, with ,"score":X before the
+// brace under --score when the input holds a report the metric grades (score.hpp).
 //
 // Contract: the loop delivers each input line at its time through hazard::Driver::deliver, the
 // same entry point the app uses, and runs Driver::step at t0 + k / AppTick (k = 0, 1, ...) while
@@ -46,6 +47,9 @@ struct Options {
   std::optional<std::uint64_t> seed;
   /// --seeds=A..B: one replay per seed, one JSON line each instead of the .alog (seeds.cpp).
   std::optional<SeedRange> seeds;
+  /// --score (with --seeds): each line also carries the metric's score of the input's report
+  /// (score.hpp).
+  bool score = false;
   std::optional<double> until_s;
   std::optional<std::string> output_path;
   bool help = false;
@@ -53,7 +57,7 @@ struct Options {
 
 /// The input mail in time order and the iteration times: t0 + k / tick_hz up to end_s.
 struct Timeline {
-  const std::vector<moos::AlogEntry>* mail = nullptr;
+  const std::vector<hazard::Mail>* mail = nullptr;  ///< views into the input's text
   double start_s = 0.0;
   double end_s = 0.0;
   double tick_hz = 4.0;
@@ -74,8 +78,11 @@ struct SeedCounts {
 /// Replays `timeline` through `driver`, counting its reports (seeds.cpp).
 SeedCounts count_reports(hazard::Driver& driver, const Timeline& timeline);
 
-/// One JSON line, `{"seed":S,"detections":D,"classifications":C}` (no newline).
-std::string seed_summary_json(std::uint64_t seed, const SeedCounts& counts);
+/// One JSON line, `{"seed":S,"detections":D,"classifications":C}`, or with `score`
+/// `{"seed":S,"detections":D,"classifications":C,"score":X}` (X the shortest exact decimal);
+/// no newline.
+std::string seed_summary_json(std::uint64_t seed, const SeedCounts& counts,
+                              std::optional<double> score = std::nullopt);
 
 /// Runs the replay; writes the .alog to `out` and diagnostics to `err`. Returns the exit code
 /// (0 done, 1 a file or block problem).

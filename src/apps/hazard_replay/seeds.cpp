@@ -1,6 +1,7 @@
 // hazard_replay --seeds: one replay per seed, summarised as a JSON line (contract in replay.hpp).
 #include <string>
 
+#include "base/text.hpp"
 #include "replay.hpp"
 
 namespace hazard_replay {
@@ -24,10 +25,14 @@ SeedCounts count_reports(hazard::Driver& driver, const Timeline& timeline) {
   return counts;
 }
 
-std::string seed_summary_json(std::uint64_t seed, const SeedCounts& counts) {
-  return "{\"seed\":" + std::to_string(seed) + ",\"detections\":" +
-         std::to_string(counts.detections) + ",\"classifications\":" +
-         std::to_string(counts.classifications) + "}";
+std::string seed_summary_json(std::uint64_t seed, const SeedCounts& counts,
+                              std::optional<double> score) {
+  std::string out = "{\"seed\":" + std::to_string(seed) + ",\"detections\":" +
+                    std::to_string(counts.detections) + ",\"classifications\":" +
+                    std::to_string(counts.classifications);
+  // The grader's scores are finite (clipped to [0, 100]): a JSON number.
+  if (score) out += ",\"score\":" + base::format_shortest(*score);
+  return out + "}";
 }
 
 }  // namespace hazard_replay

@@ -14,7 +14,11 @@ std::optional<std::string_view> Fields::get(std::string_view key) const {
 }
 
 std::optional<double> Fields::number(std::string_view key, std::string& error) const {
-  const auto text = get(key);
+  return number_field(key, get(key), error);
+}
+
+std::optional<double> number_field(std::string_view key, std::optional<std::string_view> text,
+                                   std::string& error) {
   if (!text) return std::nullopt;
   const auto v = base::parse_number(*text);
   if (!v && error.empty()) error = field_value(key, *text) + " is not a finite number";
@@ -47,20 +51,26 @@ std::string field_value(std::string_view key, std::string_view value) {
 std::optional<std::string> vehicle_name(const Fields& f, std::string_view key,
                                         std::string& error) {
   const auto name = f.get(key);
+  if (!valid_vehicle_name(key, name, error)) return std::nullopt;
+  return std::string(*name);
+}
+
+bool valid_vehicle_name(std::string_view key, std::optional<std::string_view> name,
+                        std::string& error) {
   if (!name || name->empty()) {
     error = missing_field(key);
-    return std::nullopt;
+    return false;
   }
   if (name->size() > kMaxVehicleNameBytes) {
     error = field_value(key, *name) + " is longer than " + std::to_string(kMaxVehicleNameBytes) +
             " bytes";
-    return std::nullopt;
+    return false;
   }
   if (has_control_byte(*name)) {
     error = field_value(key, *name) + " contains a control byte";
-    return std::nullopt;
+    return false;
   }
-  return std::string(*name);
+  return true;
 }
 
 std::string missing_field(std::string_view key) {
@@ -74,13 +84,20 @@ void append_field(std::string& out, std::string_view key, std::string_view value
   out.append(value);
 }
 
-std::string format_points(const std::vector<glm::dvec2>& points, int decimals) {
-  std::string out = "{";
+void append_points(std::string& out, const std::vector<glm::dvec2>& points, int decimals) {
+  out.push_back('{');
   for (std::size_t i = 0; i < points.size(); ++i) {
     if (i > 0) out.push_back(':');
-    out += base::fmt(points[i].x, decimals) + "," + base::fmt(points[i].y, decimals);
+    base::append_fmt(out, points[i].x, decimals);
+    out.push_back(',');
+    base::append_fmt(out, points[i].y, decimals);
   }
   out.push_back('}');
+}
+
+std::string format_points(const std::vector<glm::dvec2>& points, int decimals) {
+  std::string out;
+  append_points(out, points, decimals);
   return out;
 }
 

@@ -30,6 +30,10 @@ class Fields {
   std::vector<base::KeyValue> pieces_;
 };
 
+/// Fields::number's rule for a value found some other way (a one-pass parser: node_report.cpp).
+std::optional<double> number_field(std::string_view key, std::optional<std::string_view> text,
+                                   std::string& error);
+
 /// Whether `text` holds a control byte (below 0x20, or 0x7F): names and labels must not, since
 /// they reach variable names, postings and log lines.
 bool has_control_byte(std::string_view text);
@@ -38,6 +42,10 @@ std::string field_value(std::string_view key, std::string_view value);
 /// The vehicle name in field `key`: present, non-empty, at most kMaxVehicleNameBytes and free
 /// of control bytes (ranges.hpp); nullopt with `error` set otherwise.
 std::optional<std::string> vehicle_name(const Fields& f, std::string_view key, std::string& error);
+/// The rule itself, without a copy of the name (node_report.cpp): false with `error` set when
+/// the name is absent, empty, too long or holds a control byte.
+bool valid_vehicle_name(std::string_view key, std::optional<std::string_view> name,
+                        std::string& error);
 /// "missing field 'vname'".
 std::string missing_field(std::string_view key);
 
@@ -46,6 +54,8 @@ void append_field(std::string& out, std::string_view key, std::string_view value
 
 /// "{x1,y1:x2,y2}" with FMT(., decimals) coordinates.
 std::string format_points(const std::vector<glm::dvec2>& points, int decimals);
+/// The same appended to `out`.
+void append_points(std::string& out, const std::vector<glm::dvec2>& points, int decimals);
 /// Parses "{x1,y1:x2,y2:...}" (braces optional); nullopt if any coordinate is bad.
 std::optional<std::vector<glm::dvec2>> parse_points(std::string_view text);
 

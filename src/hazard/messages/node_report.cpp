@@ -7,26 +7,66 @@
 
 namespace hazard {
 
-using detail::Fields;
 using detail::missing_field;
+using detail::number_field;
 
 namespace {
 
 // A coordinate given as LAT/LON keeps its precision (about 1 mm at 8 decimals).
 constexpr int kLatLonDecimals = 8;
 
-std::optional<std::string_view> either(const Fields& f, std::string_view a, std::string_view b) {
-  auto v = f.get(a);
-  return v ? v : f.get(b);
-}
+using Field = std::optional<std::string_view>;
 
-std::optional<double> optional_number(const Fields& f, std::string_view key) {
-  const auto text = f.get(key);
+// The keys a node report is read for, found in one pass over the text without a list of pieces
+// (a node report arrives ten times a second per vehicle). As detail::Fields: keys compare
+// case-insensitively, a piece without '=' is no value, a repeated key: the last one wins.
+struct NodeFields {
+  Field name, x, y, spd, speed, hdg, heading, lat, lon, time, type;
+
+  explicit NodeFields(std::string_view text) {
+    base::KeyValueReader reader(text, ',', /*respect_braces=*/true);
+    for (base::KeyValue kv; reader.next(kv);) {
+      if (!kv.has_equals) continue;
+      if (Field* slot = slot_for(kv.key)) *slot = kv.value;
+    }
+  }
+
+ private:
+  // The slot of a key, or nullptr: a switch on the length and the first letter leaves at most
+  // one candidate, compared case-insensitively (no lowered copy of the key is built).
+  Field* slot_for(std::string_view key) {
+    const auto is = [&](std::string_view spelled, Field& slot) {
+      return base::iequals(spelled, key) ? &slot : nullptr;
+    };
+    const char first = base::detail::lower_ascii(key.empty() ? '\0' : key.front());
+    switch (key.size()) {
+      case 1:
+        return first == 'x' ? &x : first == 'y' ? &y : nullptr;
+      case 3:
+        if (first == 's') return is("SPD", spd);
+        if (first == 'h') return is("HDG", hdg);
+        if (first == 'l') return is("LAT", lat) ? &lat : is("LON", lon);
+        return nullptr;
+      case 4:
+        if (first == 'n') return is("NAME", name);
+        if (first == 't') return is("TIME", time) ? &time : is("TYPE", type);
+        return nullptr;
+      case 5:
+        return is("SPEED", speed);
+      case 7:
+        return is("HEADING", heading);
+      default:
+        return nullptr;
+    }
+  }
+};
+
+std::optional<double> optional_number(Field text) {
   return text ? base::parse_number(*text) : std::nullopt;
 }
 
 // A LAT/LON-only position through the placement, or the reason it cannot be placed.
-std::optional<glm::dvec2> place_lat_lon(const Fields& f, const GeoPlacement* placement,
+std::optional<glm::dvec2> place_lat_lon(const NodeFields& f, const GeoPlacement* placement,
                                         std::string& error) {
   const GeoPlacement none;
   if (!placement) placement = &none;
@@ -34,15 +74,15 @@ std::optional<glm::dvec2> place_lat_lon(const Fields& f, const GeoPlacement* pla
     error = "LAT/LON without X/Y cannot be placed (" + placement->unavailable + ")";
     return std::nullopt;
   }
-  const auto lat = f.number("LAT", error);
-  const auto lon = f.number("LON", error);
+  const auto lat = number_field("LAT", f.lat, error);
+  const auto lon = number_field("LON", f.lon, error);
   if (!error.empty()) return std::nullopt;
   if (!valid_latitude(*lat)) {
-    error = detail::field_value("LAT", *f.get("LAT")) + " is outside [-90, 90]";
+    error = detail::field_value("LAT", *f.lat) + " is outside [-90, 90]";
     return std::nullopt;
   }
   if (!valid_longitude(*lon)) {
-    error = detail::field_value("LON", *f.get("LON")) + " is outside [-180, 360]";
+    error = detail::field_value("LON", *f.lon) + " is outside [-180, 360]";
     return std::nullopt;
   }
   return placement->projection->to_local(*lat, *lon);
@@ -50,17 +90,15 @@ std::optional<glm::dvec2> place_lat_lon(const Fields& f, const GeoPlacement* pla
 
 // Physically meaningful ranges (ranges.hpp): a position beyond kMaxNodeCoordinate_m, or a
 // speed that is negative or beyond kMaxNodeSpeed_mps, is refused; empty when in range.
-std::string out_of_range(const Fields& f, glm::dvec2 position, double spd,
+std::string out_of_range(const NodeFields& f, glm::dvec2 position, double spd,
                          std::string_view spd_text) {
-  const std::string bound = base::fmt(kMaxNodeCoordinate_m, 0);
   if (std::fabs(position.x) > kMaxNodeCoordinate_m ||
       std::fabs(position.y) > kMaxNodeCoordinate_m) {
-    const auto x = f.get("X");
-    const auto y = f.get("Y");
-    const std::string given = x && y ? detail::field_value("X", *x) + ", " +
-                                           detail::field_value("Y", *y)
-                                     : "the position placed from LAT/LON";
-    return given + ": beyond " + bound + " m from the origin (kMaxNodeCoordinate_m)";
+    const std::string given = f.x && f.y ? detail::field_value("X", *f.x) + ", " +
+                                               detail::field_value("Y", *f.y)
+                                         : "the position placed from LAT/LON";
+    return given + ": beyond " + base::fmt(kMaxNodeCoordinate_m, 0) +
+           " m from the origin (kMaxNodeCoordinate_m)";
   }
   if (!(spd >= 0.0 && spd <= kMaxNodeSpeed_mps)) {
     return detail::field_value("SPD", spd_text) + " is outside [0, " +
@@ -76,19 +114,18 @@ Parsed<NodeReport> parse_node_report(std::string_view text) {
 }
 
 Parsed<NodeReport> parse_node_report(std::string_view text, const GeoPlacement* placement) {
-  const Fields f(text, /*respect_braces=*/true);
+  const NodeFields f(text);
   NodeReport r;
   std::string error;
-  auto name = detail::vehicle_name(f, "NAME", error);
-  if (!name) return Parsed<NodeReport>::fail(error);
-  r.name = std::move(*name);
+  if (!detail::valid_vehicle_name("NAME", f.name, error)) return Parsed<NodeReport>::fail(error);
+  r.name.assign(f.name->data(), f.name->size());
 
-  const auto x = f.number("X", error);
-  const auto y = f.number("Y", error);
-  const auto spd_text = either(f, "SPD", "SPEED");
-  const auto hdg_text = either(f, "HDG", "HEADING");
-  const auto spd = spd_text ? base::parse_number(*spd_text) : std::nullopt;
-  const auto hdg = hdg_text ? base::parse_number(*hdg_text) : std::nullopt;
+  const auto x = number_field("X", f.x, error);
+  const auto y = number_field("Y", f.y, error);
+  const Field spd_text = f.spd ? f.spd : f.speed;
+  const Field hdg_text = f.hdg ? f.hdg : f.heading;
+  const auto spd = optional_number(spd_text);
+  const auto hdg = optional_number(hdg_text);
   if (!error.empty()) return Parsed<NodeReport>::fail(error);
   if (spd_text && !spd) {
     return Parsed<NodeReport>::fail(detail::field_value("SPD", *spd_text) +
@@ -101,7 +138,7 @@ Parsed<NodeReport> parse_node_report(std::string_view text, const GeoPlacement* 
   std::optional<glm::dvec2> position;
   if (x && y) {
     position = glm::dvec2{*x, *y};
-  } else if (f.get("LAT") && f.get("LON")) {
+  } else if (f.lat && f.lon) {
     position = place_lat_lon(f, placement, error);
     if (!position) return Parsed<NodeReport>::fail(error);
     r.placed_from_lat_lon = true;
@@ -116,10 +153,10 @@ Parsed<NodeReport> parse_node_report(std::string_view text, const GeoPlacement* 
   r.heading_deg = base::norm360(*hdg);
   const std::string why = out_of_range(f, {r.x_m, r.y_m}, r.speed_mps, spd_text.value_or(""));
   if (!why.empty()) return Parsed<NodeReport>::fail(why);
-  r.lat_deg = optional_number(f, "LAT");
-  r.lon_deg = optional_number(f, "LON");
-  r.time_s = optional_number(f, "TIME");
-  if (const auto type = f.get("TYPE"); type && !type->empty()) r.type = std::string(*type);
+  r.lat_deg = optional_number(f.lat);
+  r.lon_deg = optional_number(f.lon);
+  r.time_s = optional_number(f.time);
+  if (f.type && !f.type->empty()) r.type = std::string(*f.type);
   return Parsed<NodeReport>::ok(std::move(r));
 }
 

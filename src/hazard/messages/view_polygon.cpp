@@ -28,15 +28,22 @@ Result parse_view_polygon(std::string_view text) {
   return Result::ok(std::move(p));
 }
 
+// Appended in place (one string, no temporaries): every vehicle's swath is posted each iteration.
 std::string format_view_polygon(const ViewPolygon& p) {
-  std::string out = "pts=" + detail::format_points(p.points, 1);
+  std::string out;
+  out.reserve(160 + 24 * p.points.size() + p.label.size() + p.msg.size());
+  out += "pts=";
+  detail::append_points(out, p.points, 1);
   if (!p.label.empty()) detail::append_field(out, "label", p.label);
   if (!p.msg.empty()) detail::append_field(out, "msg", p.msg);
   if (!p.edge_color.empty()) detail::append_field(out, "edge_color", p.edge_color);
   if (!p.fill_color.empty()) detail::append_field(out, "fill_color", p.fill_color);
-  detail::append_field(out, "vertex_size", base::fmt(p.vertex_size, 1));
-  detail::append_field(out, "edge_size", base::fmt(p.edge_size, 1));
-  detail::append_field(out, "fill_transparency", base::fmt(std::clamp(p.fill_transparency, 0.0, 1.0), 2));
+  out += ",vertex_size=";
+  base::append_fmt(out, p.vertex_size, 1);
+  out += ",edge_size=";
+  base::append_fmt(out, p.edge_size, 1);
+  out += ",fill_transparency=";
+  base::append_fmt(out, std::clamp(p.fill_transparency, 0.0, 1.0), 2);
   return out;
 }
 

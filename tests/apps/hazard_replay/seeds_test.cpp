@@ -73,5 +73,81 @@ TEST(ReplaySeeds, OneLinePerSeedMatchingEachSeedsOwnReplay) {
   EXPECT_EQ(testing::run(dir, {"m.moos", "in.alog", "--seeds=3..6"}).out, r.out);
 }
 
+// --score: the shoreside's metric block grades the recorded reports as uFldHazardMetric would.
+// Truth: o1, o3, ... o19 hazards, o0, o2, ... o18 benign (make_study); default penalties:
+// worst = 10 x 100 + 10 x 10 = 1100.
+void add_metric_and_reports(const ScratchDir& dir, const std::vector<std::string>& reports) {
+  write_file(dir / "m.moos",
+             testing::mission("  hazard_file = field.txt\n"
+                              "  sensor_config = width=25, exp=4, pclass=0.7\n"
+                              "  show_hazards = false\n"
+                              "  min_classify_interval = 0\n") +
+                 "\nProcessConfig = uFldHazardMetric\n{\n  AppTick = 4\n  hazard_file = field.txt\n"
+                 "  penalty_missed_hazard = 100\n  penalty_false_alarm = 10\n}\n");
+  std::vector<testing::Line> lines = {{0.0, "UHZ_SENSOR_REQUEST", "vname=v"},
+                                      {1.0, "HAZARD_SEARCH_START", "true"}};
+  double t = 100.0;
+  for (const std::string& r : reports) lines.push_back({t += 10.0, "HAZARDSET_REPORT", r});
+  lines.push_back({t + 10.0, "NODE_REPORT", "NAME=v,X=0,Y=0,SPD=1.5,HDG=90"});
+  write_file(dir / "in.alog", testing::alog(lines));
+}
+
+std::string objects(int first, int step) {
+  std::string out;
+  for (int i = first; i < 20; i += step) {
+    out += "#x=" + std::to_string(i * 10) + ",y=5,label=o" + std::to_string(i);
+  }
+  return out;
+}
+
+TEST(ReplaySeeds, ScoreIsTheLastReportsGradeOnEveryLine) {
+  ScratchDir dir;
+  make_study(dir);
+  // archie reports every hazard (score 100); betty then reports half the hazards and half the
+  // benign objects: 5 missed x 100 + 5 false alarms x 10 = 550 of 1100, score 50. The
+  // MOOSDB's last HAZARD_SEARCH_SCORE is betty's.
+  add_metric_and_reports(dir, {"source=archie" + objects(1, 2), "source=betty" + objects(0, 4) +
+                                   objects(1, 4)});
+  const auto plain = testing::run(dir, {"m.moos", "in.alog", "--seeds=1..2"});
+  const auto r = testing::run(dir, {"m.moos", "in.alog", "--seeds=1..2", "--score"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err.find("unknown parameter"), std::string::npos) << r.err;  // AppTick is the app's
+  const auto lines = base::split(base::trim(r.out), '\n');
+  const auto plain_lines = base::split(base::trim(plain.out), '\n');
+  ASSERT_EQ(lines.size(), 2u) << r.out;
+  ASSERT_EQ(plain_lines.size(), 2u) << plain.out;
+  for (std::size_t i = 0; i < 2; ++i) {
+    std::string want(plain_lines[i]);
+    want.insert(want.size() - 1, ",\"score\":50");
+    EXPECT_EQ(lines[i], want);
+  }
+  // Reports after --until are not graded: only archie's counts.
+  const auto early =
+      testing::run(dir, {"m.moos", "in.alog", "--seeds=1..1", "--score", "--until=115"});
+  ASSERT_EQ(early.exit_code, 0) << early.err;
+  EXPECT_NE(early.out.find(",\"score\":100}"), std::string::npos) << early.out;
+}
+
+TEST(ReplaySeeds, ScoreWithoutAReportOrAMetricBlock) {
+  ScratchDir dir;
+  make_study(dir);
+  add_metric_and_reports(dir, {});
+  const auto none = testing::run(dir, {"m.moos", "in.alog", "--seeds=0..0", "--score"});
+  ASSERT_EQ(none.exit_code, 0) << none.err;
+  EXPECT_EQ(none.out.find("score"), std::string::npos) << none.out;
+  EXPECT_NE(none.err.find("holds no HAZARDSET_REPORT the metric accepts"), std::string::npos)
+      << none.err;
+
+  make_study(dir);  // the mission again, without the metric's block
+  const auto no_block = testing::run(dir, {"m.moos", "in.alog", "--seeds=0..0", "--score"});
+  EXPECT_EQ(no_block.exit_code, 1);
+  EXPECT_NE(no_block.err.find("--score needs a 'ProcessConfig = uFldHazardMetric' block"),
+            std::string::npos)
+      << no_block.err;
+  const auto no_seeds = testing::run(dir, {"m.moos", "in.alog", "--score"});
+  EXPECT_EQ(no_seeds.exit_code, 2);
+  EXPECT_NE(no_seeds.err.find("--score needs --seeds=A..B"), std::string::npos) << no_seeds.err;
+}
+
 }  // namespace
 }  // namespace hazard_replay

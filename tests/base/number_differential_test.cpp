@@ -1,0 +1,160 @@
+// The fast paths of the text grammar against their references, on many generated inputs
+// (issue 14): parse_number (std::from_chars, strtod when it refuses) against the grammar of the
+// rulings ("Numbers") checked by a regular expression and converted by strtod; fix and fmt
+// (integer arithmetic, std::to_chars when a tie is too close to call) against C printf.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <optional>
+#include <random>
+#include <regex>
+#include <string>
+
+#include "base/text.hpp"
+
+namespace base {
+namespace {
+
+// The reference reading: the grammar as a regular expression, then strtod, finite only.
+std::optional<double> reference_number(const std::string& text) {
+  static const std::regex grammar(
+      R"([ \t\r\n]*([+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][+-]?[0-9]+)?)[ \t\r\n]*)");
+  std::smatch m;
+  if (!std::regex_match(text, m, grammar)) return std::nullopt;
+  const std::string number = m[1].str();
+  char* end = nullptr;
+  const double v = std::strtod(number.c_str(), &end);
+  if (end != number.c_str() + number.size() || !std::isfinite(v)) return std::nullopt;
+  return v;
+}
+
+// Same double, bit for bit (the sign of zero included), or both refused.
+void expect_same_number(const std::string& text) {
+  const auto got = parse_number(text);
+  const auto want = reference_number(text);
+  ASSERT_EQ(got.has_value(), want.has_value()) << "'" << text << "'";
+  if (!got) return;
+  std::uint64_t a = 0, b = 0;
+  std::memcpy(&a, &*got, sizeof a);
+  std::memcpy(&b, &*want, sizeof b);
+  ASSERT_EQ(a, b) << "'" << text << "'";
+}
+
+std::string digits(std::mt19937_64& rng, int max_count) {
+  std::string out;
+  const int n = static_cast<int>(rng() % static_cast<std::uint64_t>(max_count + 1));
+  for (int i = 0; i < n; ++i) out.push_back(static_cast<char>('0' + rng() % 10));
+  return out;
+}
+
+// Texts near and off the grammar: signs, long mantissas, exponents past both ends of double.
+std::string number_like(std::mt19937_64& rng) {
+  std::string out;
+  if (rng() % 4 == 0) out += rng() % 2 ? " " : "\t";
+  if (rng() % 3 == 0) out.push_back(rng() % 2 ? '-' : '+');
+  out += digits(rng, rng() % 8 == 0 ? 40 : 12);
+  if (rng() % 2) out += "." + digits(rng, rng() % 8 == 0 ? 40 : 12);
+  if (rng() % 2) {
+    out.push_back(rng() % 2 ? 'e' : 'E');
+    if (rng() % 2) out.push_back(rng() % 2 ? '-' : '+');
+    out += std::to_string(rng() % 420);
+  }
+  if (rng() % 16 == 0) out.insert(rng() % (out.size() + 1), 1, "+-.eEx n"[rng() % 8]);
+  if (rng() % 4 == 0) out += rng() % 2 ? " " : "\r\n";
+  return out;
+}
+
+TEST(NumberDifferential, GeneratedTextsReadAsTheStrtodReferenceReadsThem) {
+  std::mt19937_64 rng(14);
+  for (int i = 0; i < 200000; ++i) expect_same_number(number_like(rng));
+}
+
+TEST(NumberDifferential, EdgesOfDoubleReadAsTheStrtodReferenceReadsThem) {
+  for (const char* text :
+       {"0", "-0", "+0", "-0.0", "0e0", "-0e-5", "1.7976931348623157e308",
+        "1.7976931348623158e308", "1.7976931348623159e308", "-1.7976931348623159e308", "1e308",
+        "1e309", "4.9406564584124654e-324", "2.4703282292062327e-324",
+        "2.4703282292062328e-324", "-2.4703282292062328e-324", "1e-320", "1e-400", "-1e-400",
+        "2.2250738585072011e-308", "2.2250738585072014e-308", "9007199254740993",
+        "0.1000000000000000055511151231257827", "123456789012345678901234567890", "+.5", "5.",
+        ".5e1", "+5.e-1", "00000000000000000000000001", "1e0000000000000000000000002", ".",
+        "+", "e1", "1e", "1e+", "--1", "+-1", "1..2", "0x1p3", "inf", "nan", "1 2", ""}) {
+    expect_same_number(text);
+  }
+  expect_same_number("0." + std::string(800, '0') + "1e790");  // far past 19 digits
+  expect_same_number(std::string(400, '9'));
+}
+
+// The reference of fix: C printf.
+std::string printf_fixed(double value, int decimals) {
+  char text[512];
+  std::snprintf(text, sizeof text, "%.*f", decimals, value);
+  return text;
+}
+
+// The reference of fmt: printf, trailing zeros and point dropped, "-0" read as "0" (spec 0).
+std::string printf_fmt(double value, int decimals) {
+  std::string s = printf_fixed(value, decimals);
+  if (s.find('.') != std::string::npos) {
+    while (s.back() == '0') s.pop_back();
+    if (s.back() == '.') s.pop_back();
+  }
+  return s == "-0" ? "0" : s;
+}
+
+// Values of every kind a log carries: coordinates, probabilities, exact ties (x.5, x.25 ...),
+// decimal fractions near ties (0.125, 2.675), huge and tiny magnitudes, raw bit patterns.
+double value_like(std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const double sign = rng() % 2 ? -1.0 : 1.0;
+  switch (rng() % 6) {
+    case 0: return sign * unit(rng) * 20000.0;
+    case 1: return sign * static_cast<double>(rng() % 2000000) / 1000.0;
+    case 2: return sign * (static_cast<double>(rng() % 100000) + 0.5) / std::pow(10.0, rng() % 6);
+    case 3: return sign * static_cast<double>(rng() % 100000) / 8.0 / std::pow(10.0, rng() % 4);
+    case 4: return sign * unit(rng) * std::pow(10.0, static_cast<double>(rng() % 40) - 20.0);
+    default: {
+      double v = 0.0;
+      do {
+        const std::uint64_t bits = rng();
+        std::memcpy(&v, &bits, sizeof v);
+      } while (!std::isfinite(v));
+      return v;
+    }
+  }
+}
+
+TEST(NumberDifferential, FixAndFmtWriteWhatPrintfWrites) {
+  std::mt19937_64 rng(2026);
+  for (int i = 0; i < 300000; ++i) {
+    const double v = value_like(rng);
+    const int decimals = static_cast<int>(rng() % 13);
+    ASSERT_EQ(fix(v, decimals), printf_fixed(v, decimals)) << v << " " << decimals;
+    ASSERT_EQ(fmt(v, decimals), printf_fmt(v, decimals)) << v << " " << decimals;
+  }
+  for (const double v : {0.0, -0.0, 0.5, 1.5, 2.5, -2.5, 0.125, 0.375, 2.675, 1.005, 1e15, 9e15,
+                         9007199254740991.0, 9007199254740993.0, 1e22, 5e-324, -1e-10}) {
+    for (int decimals = 0; decimals <= 12; ++decimals) {
+      EXPECT_EQ(fix(v, decimals), printf_fixed(v, decimals)) << v << " " << decimals;
+      EXPECT_EQ(fmt(v, decimals), printf_fmt(v, decimals)) << v << " " << decimals;
+    }
+  }
+}
+
+TEST(NumberDifferential, AppendedFormsEqualTheReturnedOnes) {
+  std::string out = "x=";
+  append_fix(out, 2.675, 2);
+  out += ",y=";
+  append_fmt(out, -0.001, 2);
+  out += ",z=";
+  append_fmt(out, 25.0, 1);
+  EXPECT_EQ(out, "x=" + fix(2.675, 2) + ",y=" + fmt(-0.001, 2) + ",z=" + fmt(25.0, 1));
+  EXPECT_EQ(out, "x=2.67,y=0,z=25");
+}
+
+}  // namespace
+}  // namespace base
