@@ -197,9 +197,7 @@ class Run {
       if (now >= next_request) {
         for (const auto& v : vehicles_)
           if (!v.acked)
-            client_->notify("UHZ_CONFIG_REQUEST",
-                            "vname=" + v.name + ",width=" + base::format_g(spec_.sensor_width_m) +
-                                ",pd=0.9");
+            post_config_request(v.name, "0.9");
         next_request = now + kConfigRepeat_real_s;
       }
       for (const auto& item : inbox_.take()) {
@@ -252,13 +250,23 @@ class Run {
   }
 
   /// The periodic requests due at `sim_s`: configuration (pd alternating 0.9 / 0.85, so each
+  /// A vehicle's UHZ_CONFIG_REQUEST, stamped as coming from the vehicle's own community: the
+  /// original sensor answers only a request whose originating community is its vname (spec
+  /// 7.2; ours does not check it), and every vehicle here shares one client.
+  void post_config_request(const std::string& vname, const std::string& pd) {
+    moos::Message m = moos::make_string_notify(
+        "UHZ_CONFIG_REQUEST",
+        "vname=" + vname + ",width=" + base::format_g(spec_.sensor_width_m) + ",pd=" + pd,
+        std::string(), moos::kUnsetDouble);
+    m.community = vname;
+    client_->post(std::move(m));
+  }
+
   /// is a real update) and paced classification.
   void periodic_requests(Vehicle& v, double sim_s) {
     if (spec_.config_every_s > 0 && sim_s >= v.next_config_sim_s) {
       const bool odd = std::fmod(std::floor(v.next_config_sim_s / spec_.config_every_s), 2) != 0;
-      client_->notify("UHZ_CONFIG_REQUEST", "vname=" + v.name + ",width=" +
-                                                base::format_g(spec_.sensor_width_m) +
-                                                (odd ? ",pd=0.85" : ",pd=0.9"));
+      post_config_request(v.name, odd ? "0.85" : "0.9");
       v.next_config_sim_s += spec_.config_every_s;
     }
     if (spec_.classify_every_s > 0 && sim_s >= v.next_classify_sim_s) {
