@@ -13,6 +13,7 @@
 #include <string>
 
 #include "base/text.hpp"
+#include "number_reference.hpp"
 #include "fuzz_input.hpp"
 
 namespace {
@@ -20,17 +21,7 @@ namespace {
 // std::regex recurses per byte: longer texts are left to the unit test's generated ones.
 constexpr std::size_t kMaxRegexBytes = 256;
 
-std::optional<double> reference_number(const std::string& text) {
-  static const std::regex grammar(
-      R"([ \t\r\n]*([+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][+-]?[0-9]+)?)[ \t\r\n]*)");
-  std::smatch m;
-  if (!std::regex_match(text, m, grammar)) return std::nullopt;
-  const std::string number = m[1].str();
-  char* end = nullptr;
-  const double v = std::strtod(number.c_str(), &end);
-  if (end != number.c_str() + number.size() || !std::isfinite(v)) return std::nullopt;
-  return v;
-}
+using test_support::reference_number;
 
 void check_number(std::string_view text) {
   if (text.size() > kMaxRegexBytes) return;

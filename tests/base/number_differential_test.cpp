@@ -15,22 +15,12 @@
 #include <string>
 
 #include "base/text.hpp"
+#include "number_reference.hpp"
 
 namespace base {
 namespace {
 
-// The reference reading: the grammar as a regular expression, then strtod, finite only.
-std::optional<double> reference_number(const std::string& text) {
-  static const std::regex grammar(
-      R"([ \t\r\n]*([+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][+-]?[0-9]+)?)[ \t\r\n]*)");
-  std::smatch m;
-  if (!std::regex_match(text, m, grammar)) return std::nullopt;
-  const std::string number = m[1].str();
-  char* end = nullptr;
-  const double v = std::strtod(number.c_str(), &end);
-  if (end != number.c_str() + number.size() || !std::isfinite(v)) return std::nullopt;
-  return v;
-}
+using test_support::reference_number;
 
 // Same double, bit for bit (the sign of zero included), or both refused.
 void expect_same_number(const std::string& text) {
