@@ -71,7 +71,8 @@ long long own_status_kb(const std::string& field) {
   std::ifstream in("/proc/self/status");
   std::stringstream text;
   text << in.rdbuf();
-  for (const auto line : base::split(text.str(), '\n')) {
+  const std::string status = text.str();  // the pieces below are views into it
+  for (const auto line : base::split(status, '\n')) {
     if (!base::starts_with(line, field + ":")) continue;
     std::string_view value = base::trim(line.substr(field.size() + 1));
     if (!base::ends_with(value, "kB")) return -1;
