@@ -239,7 +239,15 @@ TEST_F(HostileHttp, AHeaderFloodKeepsMemoryBoundedAndThePageServed_Issue12) {
   }
   for (std::thread& flooder : flooders) flooder.join();
   const long long peak_kB = own_status_kb("VmHWM");
+#if defined(__SANITIZE_ADDRESS__)
+  // ASan keeps freed memory in its quarantine (256 MB by default), so resident memory says
+  // nothing here; the release run checks the bound.
+  (void)peak_kB;
+  (void)before_kB;
+  (void)kFloodMemory_kB;
+#else
   EXPECT_LT(peak_kB - before_kB, kFloodMemory_kB) << "from " << before_kB << " kB";
+#endif
   EXPECT_GT(refused.load(), kFlooders) << connections.load() << " connections";
   EXPECT_EQ(wrong_answers.load(), 0);
   EXPECT_EQ(pages_served, pages);
