@@ -228,18 +228,18 @@ std::vector<Message> TcpClient::fetch() {
 }
 
 bool TcpClient::transmit(Message msg) {
-  bool was_empty = false;
+  bool first_of_batch = false;
   {
     std::lock_guard<std::mutex> lock(mutex_);
     if (state_ != ConnectionState::kConnected) return false;
     msg.id = next_id_++;  // every posted message consumes an id (spec 2.5)
-    was_empty = outbox_.empty() && !holding_sends_;
+    first_of_batch = outbox_.empty() && !holding_sends_;
     outbox_.push_back(std::move(msg));
   }
   // Only the first message of a batch wakes the comms thread: it takes the whole outbox, and it
   // never sleeps past its next send slot while the outbox holds anything (serve()). While sends
   // are held, release_sends() wakes it.
-  if (was_empty) wake();
+  if (first_of_batch) wake();
   return true;
 }
 

@@ -42,14 +42,20 @@ class QuietApp : public MoosApp {
   }
 };
 
+/// QuietApp's settings at AppTick kAppTickHz, with IdleAppTick `idle_app_tick_hz`.
+AppSettings quiet_settings(std::optional<double> idle_app_tick_hz) {
+  AppSettings s;
+  s.app_name = s.moos_name = "pQuiet";
+  s.community = "alpha";
+  s.app_tick_hz = kAppTickHz;
+  s.idle_app_tick_hz = idle_app_tick_hz;
+  return s;
+}
+
 class IdleApp : public ::testing::Test {
  protected:
   void start(std::optional<double> idle_app_tick_hz) {
-    AppSettings s;
-    s.app_name = s.moos_name = "pQuiet";
-    s.community = "alpha";
-    s.app_tick_hz = kAppTickHz;
-    s.idle_app_tick_hz = idle_app_tick_hz;
+    AppSettings s = quiet_settings(idle_app_tick_hz);
     s.time_warp = bus.time_warp();
     app_comms = bus.connect(s.moos_name);
     ASSERT_TRUE(app.start(*app_comms, s));
@@ -152,12 +158,7 @@ TEST(IdleAppLoop, MailIsHandledWhenEverySleepEndsLate) {
   auto tester = bus.connect("tester");
   auto comms = bus.connect("pQuiet");
   QuietApp app;
-  AppSettings s;
-  s.app_name = s.moos_name = "pQuiet";
-  s.community = "alpha";
-  s.app_tick_hz = kAppTickHz;
-  s.idle_app_tick_hz = 0.05;  // alone, a cycle every 20 s
-  ASSERT_TRUE(app.start(*comms, s));
+  ASSERT_TRUE(app.start(*comms, quiet_settings(0.05)));  // alone, a cycle every 20 s
   app.cycle();
   clock.sleep_real_s(3.0);
   ASSERT_TRUE(tester->notify("IN", 1.0));  // at about 3.01 s

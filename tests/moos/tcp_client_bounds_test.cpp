@@ -9,9 +9,7 @@ namespace {
 // An app cycle's postings leave in one packet (Comms::hold_sends), however long the cycle.
 TEST_F(TcpClientTest, HeldSendsLeaveTogetherInOnePacket) {
   TcpClient client(options());
-  ASSERT_TRUE(client.start());
-  handshake();
-  ASSERT_TRUE(client.wait_until_connected(kWait_s));
+  ASSERT_NO_FATAL_FAILURE(connect(client));
   ASSERT_TRUE(server.read_packet(kWait_s).has_value());  // the first TIMING; the next in 0.75 s
   client.hold_sends();
   for (const char* var : {"A", "B", "C"}) {
@@ -45,15 +43,11 @@ TEST_F(TcpClientTest, AFullInboxDropsTheOldestMailAndCountsIt_Issue12) {
   TcpClientOptions o = options();
   o.max_inbox_messages = 8;
   TcpClient client(o);
-  ASSERT_TRUE(client.start());
-  handshake();
-  ASSERT_TRUE(client.wait_until_connected(kWait_s));
+  ASSERT_NO_FATAL_FAILURE(connect(client));
   std::vector<Message> flood;
   for (int i = 0; i < 20; ++i) flood.push_back(make_double_notify("N", i, "s", kT0));
   server.send(flood);
-  const double deadline = steady_now_s() + kWait_s;
-  while (client.mail_dropped() + 0u < 12u && steady_now_s() < deadline)
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  wait_for_drops(client, 12);
   const std::vector<Message> kept = client.fetch();
   // 20 arrived, the bound is 8: the oldest were dropped down to 3/4 of the bound, the newest kept.
   ASSERT_FALSE(kept.empty());
@@ -67,14 +61,10 @@ TEST_F(TcpClientTest, TheInboxByteBoundHoldsForLargeMessages_Issue12) {
   TcpClientOptions o = options();
   o.max_inbox_bytes = 64 * 1024;
   TcpClient client(o);
-  ASSERT_TRUE(client.start());
-  handshake();
-  ASSERT_TRUE(client.wait_until_connected(kWait_s));
+  ASSERT_NO_FATAL_FAILURE(connect(client));
   for (int i = 0; i < 10; ++i)
     server.send({make_string_notify("BIG", std::string(20000, static_cast<char>('a' + i)), "s", kT0)});
-  const double deadline = steady_now_s() + kWait_s;
-  while (client.mail_dropped() < 7u && steady_now_s() < deadline)
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  wait_for_drops(client, 7);
   const std::vector<Message> kept = client.fetch();
   std::size_t bytes = 0;
   for (const Message& m : kept) bytes += m.sval.size();
@@ -88,9 +78,7 @@ TEST_F(TcpClientTest, AnAppShowsTheDroppedMailAsOneStandingRunWarning_Issue12) {
   TcpClientOptions o = options();
   o.max_inbox_messages = 8;
   TcpClient client(o);
-  ASSERT_TRUE(client.start());
-  handshake();
-  ASSERT_TRUE(client.wait_until_connected(kWait_s));
+  ASSERT_NO_FATAL_FAILURE(connect(client));
   MoosApp app(AppTraits{"pQuiet", 4.0});
   AppSettings settings;
   settings.app_name = settings.moos_name = "pQuiet";
@@ -99,9 +87,7 @@ TEST_F(TcpClientTest, AnAppShowsTheDroppedMailAsOneStandingRunWarning_Issue12) {
     std::vector<Message> burst;
     for (int i = 0; i < 20; ++i) burst.push_back(make_double_notify("N", i, "s", kT0));
     server.send(burst);
-    const double deadline = steady_now_s() + kWait_s;
-    while (client.mail_dropped() < 14u * static_cast<unsigned>(flood) && steady_now_s() < deadline)
-      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    wait_for_drops(client, 14u * static_cast<unsigned>(flood));
     app.cycle();
   }
   EXPECT_EQ(client.mail_dropped(), 28u);

@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdint>
 #include <optional>
 #include <thread>
 
@@ -176,6 +177,18 @@ class TcpClientTest : public ::testing::Test {
     ASSERT_TRUE(server.read_exact(32).has_value());
     ASSERT_TRUE(server.read_packet().has_value());
     server.send({welcome(skew)});
+  }
+  /// Starts `client`, answers its handshake and waits until it is connected.
+  void connect(TcpClient& client) {
+    ASSERT_TRUE(client.start());
+    ASSERT_NO_FATAL_FAILURE(handshake());
+    ASSERT_TRUE(client.wait_until_connected(kWait_s));
+  }
+  /// Waits up to kWait_s until `client` has dropped at least `messages` unread messages.
+  static void wait_for_drops(const TcpClient& client, std::uint64_t messages) {
+    const double deadline = steady_now_s() + kWait_s;
+    while (client.mail_dropped() < messages && steady_now_s() < deadline)
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
 
   ManualClock clock{kT0};

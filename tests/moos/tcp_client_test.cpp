@@ -86,9 +86,7 @@ TEST_F(TcpClientTest, PoisonStopsTheClientForGood_1_7) {
 
 TEST_F(TcpClientTest, RegistrationsAndNotificationsGoOutWithIncreasingIds_2_5) {
   TcpClient client(options());
-  ASSERT_TRUE(client.start());
-  handshake();
-  ASSERT_TRUE(client.wait_until_connected(kWait_s));
+  ASSERT_NO_FATAL_FAILURE(connect(client));
   ASSERT_TRUE(client.register_variable("NAV_X", 0.5));
   ASSERT_TRUE(client.notify("DEPTH", 12.5));
   ASSERT_TRUE(client.notify("MODE", std::string("SURVEY")));
@@ -181,9 +179,7 @@ TEST_F(TcpClientTest, LeadingTimingIsConsumedAndRefinesTheSkew_4_4) {
 
 TEST_F(TcpClientTest, NullsAndStrayTimingsAreDroppedNotSetTypesDelivered_4_6) {
   TcpClient client(options());
-  ASSERT_TRUE(client.start());
-  handshake();
-  ASSERT_TRUE(client.wait_until_connected(kWait_s));
+  ASSERT_NO_FATAL_FAILURE(connect(client));
   Message null_msg;  // default message: type '.'
   Message not_set = make_double_notify("UNSET", 0.0, "", kT0);
   not_set.data_type = data_type::kNotSet;
@@ -228,9 +224,7 @@ TEST_F(TcpClientTest, ReconnectsAndResendsEveryRegistrationFirst_1_9) {
   TcpClient client(o);
   int connects = 0;
   client.set_on_connect([&] { ++connects; });
-  ASSERT_TRUE(client.start());
-  handshake();
-  ASSERT_TRUE(client.wait_until_connected(kWait_s));
+  ASSERT_NO_FATAL_FAILURE(connect(client));
   client.register_variable("A", 0.0);
   client.register_wildcard("NAV_*", "*", 0.5);
   client.register_variable("B", 2.0);
@@ -280,9 +274,7 @@ TEST_F(TcpClientTest, GarbageFromTheServerClosesTheConnection_2_7) {
   auto o = options();
   o.time_warp = 10.0;
   TcpClient client(o);
-  ASSERT_TRUE(client.start());
-  handshake();
-  ASSERT_TRUE(client.wait_until_connected(kWait_s));
+  ASSERT_NO_FATAL_FAILURE(connect(client));
   server.send_bytes(std::string("\x05\x00\x00\x00", 4));  // a header announcing 5 bytes
   EXPECT_TRUE(server.peer_closed());
   EXPECT_NE(client.last_error().find("bad packet"), std::string::npos);
