@@ -110,6 +110,9 @@ std::string excerpt(std::string_view text, std::size_t max_chars = 160);
 /// can neither end a line nor forge one. Printable ASCII and bytes >= 0x80 (UTF-8) are kept.
 std::string escape_for_log(std::string_view text);
 
+/// Outside text as a warning or log line quotes it: excerpt(), then escape_for_log().
+std::string log_excerpt(std::string_view text);
+
 // ---- angles -----------------------------------------------------------------------------------
 
 /// Angle in [0, 360) (never -0.0), exact for every finite input, in one fmod (no loop, N3).

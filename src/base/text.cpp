@@ -395,4 +395,6 @@ std::string excerpt(std::string_view text, std::size_t max_chars) {
   return out;
 }
 
+std::string log_excerpt(std::string_view text) { return escape_for_log(excerpt(text)); }
+
 }  // namespace base

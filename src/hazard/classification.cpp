@@ -25,9 +25,6 @@ std::optional<double> latest(std::optional<double> a, std::optional<double> b) {
   return std::max(*a, *b);
 }
 
-// A label from a request, for a warning: cut and escaped (it is outside text).
-std::string quoted(std::string_view label) { return base::escape_for_log(base::excerpt(label)); }
-
 // The oldest unused credit of the pair (D7), removed; nullopt when it holds none.
 std::optional<Credit> take_oldest_credit(VehicleState& v, ObjectId object) {
   const auto record = v.objects.find(object);
@@ -42,7 +39,7 @@ void Engine::handle_classify_request(const ClassifyRequest& r, double now_s, Out
   const auto id = find_vehicle(r.vname);
   if (!id) {
     out.run_warnings.push_back("Classify request from unknown vehicle " + r.vname +
-                               " (label " + quoted(r.label) + "); refused");
+                               " (label " + base::log_excerpt(r.label) + "); refused");
     return;
   }
   VehicleState& v = vehicles_[*id];
@@ -51,18 +48,18 @@ void Engine::handle_classify_request(const ClassifyRequest& r, double now_s, Out
   if (v.queue.size() >= kMaxClassifyQueue) return refuse_queue_full(v, r.label, out);
   const auto object = field_.find(r.label);
   if (!object) {
-    out.run_warnings.push_back(v.name + " classify request for unknown label: " + quoted(r.label));
+    out.run_warnings.push_back(v.name + " classify request for unknown label: " + base::log_excerpt(r.label));
     return;
   }
   if (!v.setting) {
     out.run_warnings.push_back("No sensor setting (no classifier) for " + v.name +
-                               "; classify request for " + quoted(r.label) + " refused");
+                               "; classify request for " + base::log_excerpt(r.label) + " refused");
     return;
   }
   const std::optional<Credit> taken = take_oldest_credit(v, *object);
   if (!taken) {
     out.run_warnings.push_back("No detection credit for " + v.name + " and label " +
-                               quoted(r.label) +
+                               base::log_excerpt(r.label) +
                                " (one classification per detection); refused");
     return;
   }
@@ -101,7 +98,7 @@ void Engine::refuse_queue_full(VehicleState& v, std::string_view label, Outputs&
   if (!v.warned_queue_full) {
     out.run_warnings.push_back("Classify queue of " + v.name + " full (kMaxClassifyQueue = " +
                                std::to_string(kMaxClassifyQueue) + " requests): request for " +
-                               quoted(label) +
+                               base::log_excerpt(label) +
                                " refused, its credit kept (further refusals only counted)");
   }
   v.warned_queue_full = true;

@@ -271,12 +271,10 @@ Applied apply_value(EngineConfig& config, const ParameterSpec& spec, std::string
 
 std::string place(const ConfigEntry& e) { return e.file + ":" + std::to_string(e.line) + ": "; }
 
-/// Mission text in a warning: cut and escaped, since a mission line may hold any byte but a
-/// newline (issue 12: an ESC sequence in a value reached the terminal report).
-std::string shown(std::string_view text) { return base::escape_for_log(base::excerpt(text)); }
-
+/// Mission text in a warning goes through base::log_excerpt, since a mission line may hold any
+/// byte but a newline (issue 12: an ESC sequence in a value reached the terminal report).
 std::string parameter_value(const ConfigEntry& e) {
-  return "parameter '" + shown(e.key) + "' value '" + shown(e.value) + "'";
+  return "parameter '" + base::log_excerpt(e.key) + "' value '" + base::log_excerpt(e.value) + "'";
 }
 
 // The value the block gives `geodesy` (its last valid line, D36), read before the other lines
@@ -299,9 +297,9 @@ std::optional<double> origin_value(const char* name, const std::optional<double>
   if (!text && !value) return std::nullopt;
   const std::string written = text ? *text : base::fmt(*value);
   if (!value) {
-    problem = std::string(name) + " value '" + base::excerpt(written) + "' is not a number";
+    problem = std::string(name) + " value '" + base::log_excerpt(written) + "' is not a number";
   } else if (!valid(*value)) {
-    problem = std::string(name) + " value '" + base::excerpt(written) + "' is outside " + range;
+    problem = std::string(name) + " value '" + base::log_excerpt(written) + "' is outside " + range;
   } else {
     return value;
   }
@@ -319,12 +317,12 @@ class Loader {
   void load(const ConfigEntry& e) {
     const ParameterSpec* spec = find_parameter(e.key);
     if (!spec) {
-      warn(place(e) + "unknown parameter '" + shown(e.key) + "' (value '" + shown(e.value) +
-           "') ignored");
+      warn(place(e) + "unknown parameter '" + base::log_excerpt(e.key) + "' (value '" +
+           base::log_excerpt(e.value) + "') ignored");
       return;
     }
     if (base::trim(e.value).empty()) {
-      warn(place(e) + "parameter '" + shown(e.key) + "' has no value; ignored");
+      warn(place(e) + "parameter '" + base::log_excerpt(e.key) + "' has no value; ignored");
       return;
     }
     switch (spec->kind) {
@@ -389,7 +387,7 @@ class Loader {
     status.path = std::string(base::trim(e.value));
     const std::optional<std::string> text = read_(status.path);
     if (!text) {
-      warn(place(e) + "cannot read hazard file '" + shown(status.path) + "'");
+      warn(place(e) + "cannot read hazard file '" + base::log_excerpt(status.path) + "'");
     } else {
       status.read_ok = true;
       status.counts = load_hazard_file_text(*text, base::escape_for_log(status.path),
@@ -415,7 +413,7 @@ class Loader {
     const std::string canonical = base::to_lower(spec.name == "moos_*" ? e.key : spec.name);
     const auto [it, first] = seen_.emplace(canonical, place(e));
     if (!first) {
-      warn(place(e) + "parameter '" + shown(e.key) + "' repeated (also at " +
+      warn(place(e) + "parameter '" + base::log_excerpt(e.key) + "' repeated (also at " +
            it->second.substr(0, it->second.size() - 2) + "); the last value is used");
       it->second = place(e);
     }

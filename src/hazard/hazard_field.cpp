@@ -209,7 +209,7 @@ HazardFileCounts load_hazard_file_text(std::string_view text, std::string_view f
       continue;  // gen_hazards' region and the grader's source: not the sensor's business
     } else {
       warnings.push_back(place(file, line_number) + "unrecognised line '" +
-                         base::escape_for_log(base::excerpt(line)) +
+                         base::log_excerpt(line) +
                          "' ignored (expected 'hazard = ...', 'region = ...' or 'source = ...')");
     }
   }

@@ -29,11 +29,8 @@ constexpr std::string_view kFrameworkKeys[] = {
     "SORTMAILBYTIME", "CATCHCOMMANDMESSAGES", "TERM_REPORT_INTERVAL", "MAX_APPCAST_EVENTS",
     "MAX_APPCAST_RUN_WARNINGS", "MOOS_TIME_WARP"};
 
-/// Mission text as it may appear in a warning: cut and escaped (issue 12, log injection).
-std::string shown(std::string_view text) { return base::escape_for_log(base::excerpt(text)); }
-
 std::string place(const ConfigLine& line) {
-  return " (" + shown(line.file) + ":" + std::to_string(line.line) + ")";
+  return " (" + base::log_excerpt(line.file) + ":" + std::to_string(line.line) + ")";
 }
 
 /// libMOOS booleans: TRUE in any case, or a number > 0 (spec 6.2).
@@ -50,13 +47,13 @@ std::optional<std::size_t> clipped_count(const ConfigLine& line, long long lo, l
   const auto n = base::parse_integer(line.value, std::numeric_limits<long long>::min(),
                                      std::numeric_limits<long long>::max());
   if (!n) {
-    s.config_warnings.push_back("Invalid " + base::to_upper(line.key) + ": " + shown(line.value) +
+    s.config_warnings.push_back("Invalid " + base::to_upper(line.key) + ": " + base::log_excerpt(line.value) +
                                 place(line));
     return std::nullopt;
   }
   const long long clipped = std::clamp(*n, lo, hi);
   if (clipped != *n)
-    s.config_warnings.push_back(base::to_upper(line.key) + " " + shown(line.value) + " clipped to " +
+    s.config_warnings.push_back(base::to_upper(line.key) + " " + base::log_excerpt(line.value) + " clipped to " +
                                 std::to_string(clipped) + place(line));
   return static_cast<std::size_t>(clipped);
 }
@@ -64,25 +61,23 @@ std::optional<std::size_t> clipped_count(const ConfigLine& line, long long lo, l
 void apply_framework_line(const ConfigLine& line, AppSettings& s, bool& block_app_tick) {
   const std::string key = base::to_upper(line.key);
   const std::string& v = line.value;
-  const std::string shown_value = shown(v);  // v as the warnings quote it
+  const std::string shown_value = base::log_excerpt(v);  // v as the warnings quote it
   auto warn = [&](const std::string& what) { s.config_warnings.push_back(what + place(line)); };
-  if (key == "APPTICK") {
+  // AppTick and IdleAppTick: a rate in [kMinAppTickHz, kMaxAppTickHz], else a warning.
+  auto tick_rate = [&](const char* name) -> std::optional<double> {
     const auto f = base::parse_number(v);
-    if (f && is_valid_app_tick(*f)) {
+    if (f && is_valid_app_tick(*f)) return f;
+    warn(std::string("Invalid ") + name + ": " + shown_value + " (must be a number in [" +
+         base::format_g(kMinAppTickHz) + ", " + base::format_g(kMaxAppTickHz) + "] Hz)");
+    return std::nullopt;
+  };
+  if (key == "APPTICK") {
+    if (const auto f = tick_rate("AppTick")) {
       s.app_tick_hz = *f;
       block_app_tick = true;
-    } else {
-      warn("Invalid AppTick: " + shown_value + " (must be a number in [" + base::format_g(kMinAppTickHz) +
-           ", " + base::format_g(kMaxAppTickHz) + "] Hz)");
     }
   } else if (key == "IDLEAPPTICK") {
-    const auto f = base::parse_number(v);
-    if (f && is_valid_app_tick(*f)) {
-      s.idle_app_tick_hz = *f;
-    } else {
-      warn("Invalid IdleAppTick: " + shown_value + " (must be a number in [" +
-           base::format_g(kMinAppTickHz) + ", " + base::format_g(kMaxAppTickHz) + "] Hz)");
-    }
+    if (const auto f = tick_rate("IdleAppTick")) s.idle_app_tick_hz = *f;
   } else if (key == "COMMSTICK") {
     if (auto t = base::parse_integer(v, 1, kMaxCommsTickHz)) s.comms_tick_hz = static_cast<int>(*t);
     else warn("Invalid CommsTick: " + shown_value + " (must be a whole number in 1..200)");
@@ -134,8 +129,8 @@ void apply_block(const ProcessBlock& block, const AppTraits& traits, AppSettings
     if (same == chosen.end()) {
       chosen.push_back(&line);
     } else if (traits.repeated_parameters == RepeatedParameter::kLastWinsWithWarning) {
-      s.config_warnings.push_back(shown(line.key) + " repeated" + place(line) +
-                                  ": the last value, " + shown(line.value) + ", is used");
+      s.config_warnings.push_back(base::log_excerpt(line.key) + " repeated" + place(line) +
+                                  ": the last value, " + base::log_excerpt(line.value) + ", is used");
       *same = &line;
     }
   }
@@ -152,19 +147,19 @@ void apply_globals(const MissionFile& mission, AppSettings& s) {
     if (auto p = base::parse_integer(base::remove_blanks(port->value), 1, kMaxPort))
       s.server_port = static_cast<int>(*p);
     else
-      s.config_warnings.push_back("Invalid ServerPort: " + shown(port->value) + place(*port));
+      s.config_warnings.push_back("Invalid ServerPort: " + base::log_excerpt(port->value) + place(*port));
   }
   if (const ConfigLine* warp = mission.global_line("MOOSTimeWarp")) {
     if (const auto w = parse_time_warp(base::remove_blanks(warp->value)))
       s.time_warp = *w;
     else
-      s.config_warnings.push_back("Invalid MOOSTimeWarp: " + shown(warp->value) + place(*warp));
+      s.config_warnings.push_back("Invalid MOOSTimeWarp: " + base::log_excerpt(warp->value) + place(*warp));
   }
   if (const ConfigLine* term = mission.global_line("TERM_REPORTING")) {
     if (auto b = base::parse_bool(term->value))
       s.term_reporting = *b;
     else
-      s.config_warnings.push_back("Invalid value for TERM_REPORTING: " + shown(term->value) +
+      s.config_warnings.push_back("Invalid value for TERM_REPORTING: " + base::log_excerpt(term->value) +
                                   place(*term));
   }
 }
@@ -474,7 +469,7 @@ void MoosApp::report_config_warning(const std::string& text) {
 }
 
 void MoosApp::report_unhandled_config_line(const ConfigLine& line) {
-  report_config_warning("Unhandled config line: " + shown(line.key) + "=" + shown(line.value));
+  report_config_warning("Unhandled config line: " + base::log_excerpt(line.key) + "=" + base::log_excerpt(line.value));
 }
 
 void MoosApp::report_run_warning(const std::string& text) {

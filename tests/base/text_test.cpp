@@ -189,5 +189,13 @@ TEST(Text, EscapeForLogKeepsOneLineAndUtf8_Issue12) {
   EXPECT_EQ(base::escape_for_log("caf\xc3\xa9"), "caf\xc3\xa9");
 }
 
+TEST(Text, LogExcerptCutsThenEscapes_Issue12) {
+  EXPECT_EQ(base::log_excerpt("a\nb"), "a\\x0Ab");
+  const std::string long_text = std::string(200, 'x') + "\x1b";
+  EXPECT_EQ(base::log_excerpt(long_text), base::escape_for_log(base::excerpt(long_text)));
+  EXPECT_EQ(base::log_excerpt(long_text).find('\x1b'), std::string::npos);
+  EXPECT_LT(base::log_excerpt(long_text).size(), long_text.size());
+}
+
 }  // namespace
 }  // namespace base

@@ -175,6 +175,8 @@ TEST(Geodesy, WithoutAUsableOriginLatLonOnlyInputIsRejectedWithTheReason_T9) {
       {MissionOrigin{}, "the mission file gives no LatOrigin and LongOrigin"},
       {MissionOrigin{std::nullopt, -71.0, std::string("north"), std::string("-71")},
        "the mission's LatOrigin value 'north' is not a number"},
+      {MissionOrigin{std::nullopt, -71.0, std::string("4\x1b[2J"), std::string("-71")},
+       "the mission's LatOrigin value '4\\x1B[2J' is not a number"},  // escaped (issue 12)
       {origin_of(95, -71), "the mission's LatOrigin value '95' is outside [-90, 90]"},
       {MissionOrigin{42.0, std::nullopt, std::string("42"), std::nullopt},
        "the mission's LatOrigin is given without LongOrigin"},

@@ -44,7 +44,7 @@ bool has_control_byte(std::string_view text) {
 }
 
 std::string field_value(std::string_view key, std::string_view value) {
-  return "field '" + std::string(key) + "' value '" + base::escape_for_log(base::excerpt(value)) +
+  return "field '" + std::string(key) + "' value '" + base::log_excerpt(value) +
          "'";
 }
 
