@@ -42,6 +42,12 @@ std::optional<ProcUsage> read_proc_usage(pid_t pid);
 /// Nearest-rank percentile of `values` (copied and sorted); NaN if empty.
 double percentile(std::vector<double> values, double fraction);
 
+/// CPU seconds per simulated hour had the app kept its nominal tick: `cpu_per_h` scaled by
+/// AppTick / achieved iterations per MOOS second (CPU per iteration x nominal iterations). An app
+/// that saturates a core cannot show its cost per simulated hour, only this; for one that keeps
+/// its tick (within 1 %) it is `cpu_per_h`, as it is when the iterations are unknown (<= 0).
+double cpu_per_h_at_nominal_tick(double cpu_per_h, double iterations_per_s, double app_tick_hz);
+
 /// A TCP port on 127.0.0.1 that was free a moment ago (bound to port 0, then released).
 std::optional<int> free_tcp_port();
 /// The first executable `name` in a PATH folder, "" if none.

@@ -81,6 +81,7 @@ struct LoadResult {
   double delay_p99_ms = -1;
 };
 
+
 LoadResult run_load(const LoadSpec& spec, const Target& target, std::ostream& log);
 
 }  // namespace bench

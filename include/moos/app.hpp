@@ -225,6 +225,9 @@ class MoosApp {
   void post_status_if_due();
   void post_report(double iterate_start_moos_s);
   void schedule_next(double cycle_start_moos_s);
+  /// After a cycle: tells the comms when the next fetch comes (Comms::expect_fetch_within), so
+  /// it can leave reading to it; none while slots are skipped, when mail must wake the app.
+  void promise_next_fetch();
   // IdleAppTick (app_idle.cpp).
   /// When the next cycle is due: the next AppTick slot, or while quiet and without mail the
   /// first slot at or after idle_resume_moos_s_.

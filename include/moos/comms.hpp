@@ -84,6 +84,11 @@ class Comms {
   /// not one for the first posting and one for the rest). Postings are never lost or reordered.
   virtual void hold_sends() {}
   virtual void release_sends() {}
+  /// The caller will call fetch() again within about `real_s` real seconds (0 or less: no
+  /// promise, e.g. before a long sleep that mail must end). An implementation may then leave
+  /// reading to fetch() and save its own wake-ups (TcpClient); mail is never delayed past the
+  /// fetch that was promised.
+  virtual void expect_fetch_within(double /*real_s*/) {}
   /// Mail dropped unread since the start because the inbox was full (never decreases).
   std::uint64_t mail_dropped() const { return mail_dropped_.load(); }
 

@@ -21,6 +21,13 @@
 //   messages elsewhere and NULL messages anywhere are dropped; everything else, `~` data types
 //   included, goes to the inbox in arrival order. A framing or decoding error closes the
 //   connection (then it is retried).
+// - The app's own thread does the I/O when it can (issue 14): fetch() first reads what the socket
+//   holds, and release_sends() writes the held batch itself when the send slot is open. After
+//   expect_fetch_within(), the comms thread leaves reading to fetch() for that long plus
+//   kAppReadGrace_real_s (except while a TIMING echo is awaited, so the skew stays exact), so an
+//   app cycling with steady mail wakes one thread per cycle, not two per packet. The comms
+//   thread still does everything when the app does not cycle, and is the only one that drops a
+//   connection: a failure the app's thread meets is handed to it.
 // - Deviations from libMOOS, deliberate: the inbox is kept across a reconnect (libMOOS clears it,
 //   losing mail that had arrived); the inbox is bounded by max_inbox_messages and
 //   max_inbox_bytes and, when either is reached, the OLDEST unread mail is dropped and counted
@@ -123,18 +130,50 @@ class TcpClient final : public Comms {
   std::vector<Message> fetch() override;
   void hold_sends() override;
   void release_sends() override;
+  void expect_fetch_within(double real_s) override;
+
+  /// How long past its promise the comms thread leaves reading to fetch(): a cycling app's late
+  /// iterations never make it read, and a stalled app's mail waits at most this much longer to
+  /// be counted against the inbox bounds (it could not be handled sooner anyway).
+  static constexpr double kAppReadGrace_real_s = 0.5;
 
  protected:
   bool transmit(Message msg) override;
 
  private:
+  /// Bytes read per recv call, and recv calls per read (1 MiB) before sending gets a turn.
+  static constexpr std::size_t kReadChunkBytes = 64 * 1024;
+  static constexpr int kMaxReadChunksPerWake = 16;
+  /// How long after a TIMING its echo is read by the comms thread at once (when the skew is
+  /// corrected): beyond that the echo is late anyway, and fetch() may read it.
+  static constexpr double kTimingEchoWindow_real_s = 0.25;
+
+  static double steady_now_s();
+  static std::string errno_text(const char* what);  ///< "what: strerror(errno)"
+  bool on_comms_thread() const;
   void run();
   bool connect_socket();
   bool handshake();
   void serve();
+  /// The comms thread's next poll (io_mutex_ held): what to wait for, and how long.
+  struct PollPlan {
+    short socket_events = 0;
+    double wait_real_s = 0;
+  };
+  PollPlan plan_poll(double now);
+  bool app_reads(double now) const;
   void drop_connection(const std::string& why);
+  /// A socket failure: dropped at once on the comms thread; from the app's thread handed to the
+  /// comms thread (it owns the socket's life), and no more I/O happens here until then.
+  void fail_io(const std::string& why);
+  /// Encodes the next packet (io_mutex_ held) when the write buffer is free, the send slot open
+  /// and something is due: a TIMING, or posted messages not held. True if a packet was started.
+  bool start_packet_if_due(double now);
   bool write_pending();
   bool read_available();
+  /// The app's thread reads / sends for itself when the comms thread is not busy doing it.
+  void read_for_app();
+  bool send_for_app();
   /// Drops the oldest unread mail until the inbox is within 3/4 of its bounds (mutex held); a
   /// bulk drop keeps the cost of a flood linear.
   void enforce_inbox_bounds();
@@ -152,15 +191,25 @@ class TcpClient final : public Comms {
 
   std::thread thread_;
   std::atomic<bool> stopping_{false};
-  int socket_ = -1;       // owned by the comms thread
   int wake_read_ = -1;    // self-pipe: transmit()/close() wake the comms thread
   int wake_write_ = -1;
-  PacketReader reader_;   // comms thread only
-  std::string write_buffer_;  // comms thread only: bytes of the packet being written
+
+  // The socket's I/O state. Lock order: io_mutex_ before mutex_. The comms thread holds io_mutex_
+  // for all I/O but its poll; the app's thread only try-locks it, and does I/O only while
+  // connected, so connect and handshake (not connected yet) and drop_connection (under the lock)
+  // never meet it.
+  std::mutex io_mutex_;
+  int socket_ = -1;
+  PacketReader reader_;
+  std::string write_buffer_;  // bytes of the packet being written
   std::size_t write_offset_ = 0;
-  double next_send_allowed_ = 0;   // steady seconds, comms thread only
-  std::optional<double> last_timing_sent_;  // steady seconds, comms thread only; nullopt: never
-  bool time_correction_ = true;    // comms thread only
+  double next_send_allowed_ = 0;   // steady seconds
+  std::optional<double> last_timing_sent_;  // steady seconds; nullopt: never
+  bool awaiting_timing_echo_ = false;  // a TIMING went out and its echo has not come back
+  bool time_correction_ = true;
+  std::string app_io_failure_;  // a failure met on the app's thread, for the comms thread to drop
+  bool new_mail_ = false;  // the inbox grew under this hold of io_mutex_: announce it after
+  std::atomic<double> app_reads_until_{0};  // steady s: reading left to fetch() until then
 
   mutable std::mutex mutex_;
   mutable std::condition_variable changed_;

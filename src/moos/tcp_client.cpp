@@ -3,10 +3,11 @@
 //
 // Structure: one comms thread owns the socket (non-blocking) and runs
 //   connect -> handshake -> serve (poll on socket + self-pipe) -> drop -> wait 1 MOOS s -> ...
-// Public calls only touch the shared state under `mutex_` and write one byte into the self-pipe
-// to wake the thread. The thread never calls user code while holding `mutex_`.
-// Lock order: mutex_ (this client) before the Comms base's book lock (replay_messages()).
-// The receiving half (packets to the inbox, the skew) is in tcp_client_receive.cpp.
+// Public calls touch the shared state under `mutex_` and write one byte into the self-pipe to
+// wake the thread; fetch() and release_sends() may also do the socket's I/O themselves under
+// `io_mutex_` (try-locked, see tcp_client.hpp). No user code runs while either lock is held.
+// Lock order: io_mutex_, then mutex_ (this client), then the Comms base's book lock.
+// The sending half is in tcp_client_send.cpp, the receiving half in tcp_client_receive.cpp.
 
 #include "moos/tcp_client.hpp"
 
@@ -33,19 +34,11 @@ namespace moos {
 
 namespace {
 
-/// Bytes read per recv call, and recv calls per wake-up (1 MiB) before sending gets a turn.
-constexpr std::size_t kReadChunkBytes = 64 * 1024;
-constexpr int kMaxReadChunksPerWake = 16;
 /// The hostname token of WELCOME's source aux (spec 1.6).
 constexpr std::string_view kHostnameToken = "hostname";
 constexpr double kMsPerSecond = 1000.0;
 /// A longest poll wait, so a missed wake-up can never stall the thread for long.
-constexpr double kMaxPollWait_real_s = 0.5;
-
-double steady_now_s() {
-  using namespace std::chrono;
-  return duration_cast<duration<double>>(steady_clock::now().time_since_epoch()).count();
-}
+constexpr double kMaxPollWait_real_s = 1.0;
 
 int poll_timeout_ms(double seconds) {
   if (seconds <= 0) return 0;
@@ -63,8 +56,6 @@ void drain_wake_pipe(int fd) {
   while (::read(fd, buf, sizeof buf) > 0) {
   }
 }
-
-std::string errno_text(const char* what) { return std::string(what) + ": " + std::strerror(errno); }
 
 std::string own_hostname(const std::string& configured) {
   if (!configured.empty()) return configured;
@@ -106,6 +97,17 @@ std::optional<in_addr> resolve_ipv4(const std::string& host, std::string* error)
 }
 
 }  // namespace
+
+double TcpClient::steady_now_s() {
+  using namespace std::chrono;
+  return duration_cast<duration<double>>(steady_clock::now().time_since_epoch()).count();
+}
+
+std::string TcpClient::errno_text(const char* what) {
+  return std::string(what) + ": " + std::strerror(errno);
+}
+
+bool TcpClient::on_comms_thread() const { return std::this_thread::get_id() == thread_.get_id(); }
 
 TcpClient::TcpClient(TcpClientOptions options)
     : Comms(options.name),
@@ -219,43 +221,16 @@ std::string TcpClient::community() const {
   return community_;
 }
 
-std::vector<Message> TcpClient::fetch() {
-  std::lock_guard<std::mutex> lock(mutex_);
-  std::vector<Message> mail;
-  mail.swap(inbox_);
-  inbox_bytes_ = 0;
-  return mail;
-}
-
-bool TcpClient::transmit(Message msg) {
-  bool first_of_batch = false;
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    if (state_ != ConnectionState::kConnected) return false;
-    msg.id = next_id_++;  // every posted message consumes an id (spec 2.5)
-    first_of_batch = outbox_.empty() && !holding_sends_;
-    outbox_.push_back(std::move(msg));
+void TcpClient::expect_fetch_within(double real_s) {
+  if (!(real_s > 0)) {
+    // The comms thread reads again; wake it if it had left reading to fetch().
+    if (app_reads_until_.exchange(0.0) > steady_now_s()) wake();
+    return;
   }
-  // Only the first message of a batch wakes the comms thread: it takes the whole outbox, and it
-  // never sleeps past its next send slot while the outbox holds anything (serve()). While sends
-  // are held, release_sends() wakes it.
-  if (first_of_batch) wake();
-  return true;
-}
-
-void TcpClient::hold_sends() {
-  std::lock_guard<std::mutex> lock(mutex_);
-  holding_sends_ = true;
-}
-
-void TcpClient::release_sends() {
-  bool wake_now = false;
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    holding_sends_ = false;
-    wake_now = !outbox_.empty();
-  }
-  if (wake_now) wake();
+  const double now = steady_now_s();
+  // A first promise wakes the comms thread, which may be polling for input, to stop doing so; a
+  // promise renewed in time (every cycle of a cycling app) costs nothing.
+  if (app_reads_until_.exchange(now + real_s + kAppReadGrace_real_s) <= now) wake();
 }
 
 // ---- comms thread ---------------------------------------------------------------------------
@@ -294,8 +269,10 @@ void TcpClient::run() {
     if (connect_socket() && handshake()) {
       fire_on_connect();
       serve();
+      std::lock_guard<std::mutex> io(io_mutex_);
       drop_connection("");
     } else if (socket_ >= 0) {
+      std::lock_guard<std::mutex> io(io_mutex_);
       ::close(socket_);
       socket_ = -1;
     }
@@ -305,6 +282,7 @@ void TcpClient::run() {
     }
     wait_for_wake(retry_delay_real_s());
   }
+  std::lock_guard<std::mutex> io(io_mutex_);
   if (socket_ >= 0) ::close(socket_);
   socket_ = -1;
 }
@@ -423,6 +401,7 @@ bool TcpClient::handshake() {
   if (time_correction_) skew_s_ = first.dval;
   server_delay_s_ = 0.0;
   last_timing_sent_.reset();
+  awaiting_timing_echo_ = false;
   next_send_allowed_ = 0;
   {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -441,6 +420,8 @@ bool TcpClient::handshake() {
 }
 
 void TcpClient::drop_connection(const std::string& why) {
+  app_io_failure_.clear();
+  awaiting_timing_echo_ = false;
   {
     // State first, socket second: whoever sees the close also sees the reason.
     std::lock_guard<std::mutex> lock(mutex_);
@@ -457,127 +438,83 @@ void TcpClient::drop_connection(const std::string& why) {
   reader_ = PacketReader(options_.max_packet_bytes);
 }
 
-Message TcpClient::timing_message() const {
-  Message m;  // id -1, source "" (spec 2.6, vector I)
-  m.type = msg_type::kTiming;
-  m.data_type = data_type::kDouble;
-  m.key = kTimingKey;
-  m.time = local_time();
-  m.dval = 0.0;
-  return m;
+void TcpClient::fail_io(const std::string& why) {
+  if (on_comms_thread()) {
+    drop_connection(why);
+    return;
+  }
+  if (app_io_failure_.empty()) app_io_failure_ = why;
+  wake();
+}
+
+bool TcpClient::app_reads(double now) const {
+  if (now >= app_reads_until_.load()) return false;
+  // With the skew corrected, a TIMING echo is read the moment it arrives: that moment is the
+  // measurement (spec 4.4).
+  const bool echo_due = time_correction_ && awaiting_timing_echo_ && last_timing_sent_ &&
+                        now < *last_timing_sent_ + kTimingEchoWindow_real_s;
+  return !echo_due;
+}
+
+TcpClient::PollPlan TcpClient::plan_poll(double now) {
+  PollPlan plan;
+  // The next TIMING is due then (at once if none was ever sent).
+  plan.wait_real_s = last_timing_sent_ ? *last_timing_sent_ + kTimingInterval_real_s - now : 0.0;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!outbox_.empty() && !holding_sends_ && write_buffer_.empty())
+      plan.wait_real_s = std::min(plan.wait_real_s, next_send_allowed_ - now);
+  }
+  if (!write_buffer_.empty()) plan.socket_events |= POLLOUT;
+  if (app_reads(now)) {
+    plan.wait_real_s = std::min(plan.wait_real_s, app_reads_until_.load() - now);
+  } else {
+    plan.socket_events |= POLLIN;
+  }
+  return plan;
 }
 
 void TcpClient::serve() {
-  // Bytes that followed WELCOME in the same segment belong to normal traffic (spec 5.1a).
-  if (!process_buffered()) return;
-  while (!stopping_) {
-    const double now = steady_now_s();
-    const bool timing_due = !last_timing_sent_ || now - *last_timing_sent_ >= kTimingInterval_real_s;
-    if (write_buffer_.empty() && now >= next_send_allowed_) {
-      std::vector<Message> batch;
-      {
-        std::lock_guard<std::mutex> lock(mutex_);
-        // Held messages wait for the release, unless a TIMING goes out anyway.
-        if (timing_due || (!outbox_.empty() && !holding_sends_)) {
-          if (timing_due) batch.push_back(timing_message());  // TIMING first (spec 4.3 step 2)
-          for (auto& m : outbox_) batch.push_back(std::move(m));
-          outbox_.clear();
-          ++packets_sent_;
-          ++packets_in_flight_;
-        }
-      }
-      if (!batch.empty()) {
-        if (timing_due) last_timing_sent_ = now;
-        write_buffer_ = encode_packet(batch);
-        write_offset_ = 0;
-      }
-    }
-    if (!write_pending()) return;
-
-    // Sleep until something happens or the next TIMING / send slot is due.
-    double wait = last_timing_sent_ ? *last_timing_sent_ + kTimingInterval_real_s - now : 0.0;
+  bool ok = true;
+  bool mail = false;
+  {
+    // Bytes that followed WELCOME in the same segment belong to normal traffic (spec 5.1a).
+    std::lock_guard<std::mutex> io(io_mutex_);
+    ok = process_buffered();
+    mail = std::exchange(new_mail_, false);
+  }
+  if (mail) fire_on_mail();
+  while (ok && !stopping_) {
+    pollfd p[2] = {{-1, 0, 0}, {wake_read_, POLLIN, 0}};
+    double wait = 0;
     {
-      std::lock_guard<std::mutex> lock(mutex_);
-      if (!outbox_.empty() && !holding_sends_ && write_buffer_.empty())
-        wait = std::min(wait, next_send_allowed_ - now);
+      std::lock_guard<std::mutex> io(io_mutex_);
+      if (!app_io_failure_.empty()) {
+        drop_connection(std::exchange(app_io_failure_, {}));
+        return;
+      }
+      const double now = steady_now_s();
+      start_packet_if_due(now);
+      if (!write_pending()) return;
+      const PollPlan plan = plan_poll(now);
+      p[0] = {socket_, plan.socket_events, 0};
+      wait = plan.wait_real_s;
     }
-    pollfd p[2] = {{socket_, static_cast<short>(POLLIN | (write_buffer_.empty() ? 0 : POLLOUT)), 0},
-                   {wake_read_, POLLIN, 0}};
+    // Sleep until something happens, or the next TIMING / send slot / read is due.
     if (::poll(p, 2, poll_timeout_ms(wait)) < 0 && errno != EINTR) {
+      std::lock_guard<std::mutex> io(io_mutex_);
       drop_connection(errno_text("poll"));
       return;
     }
     if (p[1].revents & POLLIN) drain_wake_pipe(wake_read_);
-    if ((p[0].revents & (POLLIN | POLLERR | POLLHUP)) && !read_available()) return;
-  }
-}
-
-bool TcpClient::write_pending() {
-  while (write_offset_ < write_buffer_.size()) {
-    const ssize_t n = ::send(socket_, write_buffer_.data() + write_offset_,
-                             write_buffer_.size() - write_offset_, MSG_NOSIGNAL);
-    if (n > 0) {
-      write_offset_ += static_cast<std::size_t>(n);
-      continue;
+    if (p[0].revents & (POLLIN | POLLERR | POLLHUP)) {
+      {
+        std::lock_guard<std::mutex> io(io_mutex_);
+        ok = read_available();
+        mail = std::exchange(new_mail_, false);
+      }
+      if (mail) fire_on_mail();
     }
-    if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK || errno == EINTR)) return true;
-    drop_connection(errno_text("send"));
-    return false;
-  }
-  if (!write_buffer_.empty()) {
-    write_buffer_.clear();
-    write_offset_ = 0;
-    // Pause after each send (spec 4.3 step 4): the server's requested delay or the warp delay.
-    const double warp_delay_s = options_.time_warp > 1
-                                    ? options_.time_warp * options_.tw_delay_factor_ms / kMsPerSecond
-                                    : 0.0;
-    next_send_allowed_ = steady_now_s() + std::max(server_delay_s_.load(), warp_delay_s);
-    std::lock_guard<std::mutex> lock(mutex_);
-    if (packets_in_flight_ > 0) --packets_in_flight_;
-    changed_.notify_all();
-  }
-  return true;
-}
-
-bool TcpClient::read_available() {
-  bool peer_closed = false;
-  char buf[kReadChunkBytes];
-  // Bounded so that a flooding server cannot starve our own sending.
-  for (int chunk = 0; chunk < kMaxReadChunksPerWake; ++chunk) {
-    const ssize_t n = ::recv(socket_, buf, sizeof buf, 0);
-    if (n > 0) {
-      reader_.feed(std::string_view(buf, static_cast<std::size_t>(n)));
-      continue;
-    }
-    if (n == 0) {
-      peer_closed = true;  // process what arrived before the close first
-      break;
-    }
-    if (errno == EAGAIN || errno == EWOULDBLOCK) break;
-    if (errno == EINTR) continue;
-    drop_connection(errno_text("recv"));
-    return false;
-  }
-  if (!process_buffered()) return false;
-  if (peer_closed) {
-    drop_connection("the server closed the connection");
-    return false;
-  }
-  return true;
-}
-
-bool TcpClient::process_buffered() {
-  std::vector<Message> messages;
-  while (true) {
-    DecodeError derr;
-    const auto status = reader_.next(messages, &derr);
-    if (status == PacketReader::Status::kNeedMore) return true;
-    if (status == PacketReader::Status::kError) {
-      drop_connection("bad packet from the server: " + derr.reason + " (offset " +
-                      std::to_string(derr.offset) + ")");
-      return false;
-    }
-    handle_packet(std::move(messages));
   }
 }
 

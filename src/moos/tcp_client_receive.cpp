@@ -1,8 +1,11 @@
 // The receiving half of TcpClient (contract in tcp_client.hpp): a decoded packet from the
 // server goes to the bounded inbox; a TIMING echo at its head refines the skew (spec 4.3, 4.4).
-// Runs on the comms thread; the inbox is shared with fetch() under `mutex_`.
+// The comms thread reads, or fetch() on the app's own thread; the inbox is shared under `mutex_`.
+
+#include <sys/socket.h>
 
 #include <algorithm>
+#include <cerrno>
 
 #include "moos/tcp_client.hpp"
 
@@ -22,25 +25,82 @@ constexpr double kSkewMemory = 0.9;
 
 }  // namespace
 
+std::vector<Message> TcpClient::fetch() {
+  read_for_app();
+  std::lock_guard<std::mutex> lock(mutex_);
+  std::vector<Message> mail;
+  mail.swap(inbox_);
+  inbox_bytes_ = 0;
+  inbox_.reserve(mail.size());  // the next cycle's mail, in one allocation, not a growth series
+  return mail;
+}
+
+void TcpClient::read_for_app() {
+  std::unique_lock<std::mutex> io(io_mutex_, std::try_to_lock);
+  if (!io.owns_lock() || !app_io_failure_.empty() || !is_connected()) return;
+  read_available();  // a failure is handed to the comms thread
+  new_mail_ = false;  // the caller is fetching it now: nothing to announce
+}
+
+bool TcpClient::read_available() {
+  bool peer_closed = false;
+  char buf[kReadChunkBytes];
+  // Bounded so that a flooding server cannot starve our own sending.
+  for (int chunk = 0; chunk < kMaxReadChunksPerWake; ++chunk) {
+    const ssize_t n = ::recv(socket_, buf, sizeof buf, 0);
+    if (n > 0) {
+      reader_.feed(std::string_view(buf, static_cast<std::size_t>(n)));
+      if (static_cast<std::size_t>(n) < sizeof buf) break;  // drained: spare the EAGAIN call
+      continue;
+    }
+    if (n == 0) {
+      peer_closed = true;  // process what arrived before the close first
+      break;
+    }
+    if (errno == EAGAIN || errno == EWOULDBLOCK) break;
+    if (errno == EINTR) continue;
+    fail_io(errno_text("recv"));
+    return false;
+  }
+  if (!process_buffered()) return false;
+  if (peer_closed) {
+    fail_io("the server closed the connection");
+    return false;
+  }
+  return true;
+}
+
+bool TcpClient::process_buffered() {
+  std::vector<Message> messages;
+  while (true) {
+    DecodeError derr;
+    const auto status = reader_.next(messages, &derr);
+    if (status == PacketReader::Status::kNeedMore) return true;
+    if (status == PacketReader::Status::kError) {
+      fail_io("bad packet from the server: " + derr.reason + " (offset " +
+              std::to_string(derr.offset) + ")");
+      return false;
+    }
+    handle_packet(std::move(messages));
+  }
+}
+
 void TcpClient::handle_packet(std::vector<Message> messages) {
   if (messages.empty()) return;
   auto begin = messages.begin();
   if (begin->type == msg_type::kTiming) {  // consumed by the comms layer (spec 4.3)
     refine_skew(*begin);
+    awaiting_timing_echo_ = false;
     ++begin;
   }
-  bool added = false;
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    for (auto it = begin; it != messages.end(); ++it) {
-      if (it->type == msg_type::kNull || it->type == msg_type::kTiming) continue;
-      inbox_bytes_ += inbox_cost(*it);
-      inbox_.push_back(std::move(*it));
-      added = true;
-    }
-    enforce_inbox_bounds();
+  std::lock_guard<std::mutex> lock(mutex_);
+  for (auto it = begin; it != messages.end(); ++it) {
+    if (it->type == msg_type::kNull || it->type == msg_type::kTiming) continue;
+    inbox_bytes_ += inbox_cost(*it);
+    inbox_.push_back(std::move(*it));
+    new_mail_ = true;
   }
-  if (added) fire_on_mail();
+  enforce_inbox_bounds();
 }
 
 void TcpClient::enforce_inbox_bounds() {

@@ -42,6 +42,19 @@ TEST(ReadProcUsage, SeesThisProcess) {
   EXPECT_GE(usage->cpu_s, 0.0);
 }
 
+TEST(NominalTickCost, ScalesAnAppThatMissesItsTickToTheTickItWasAskedFor) {
+  // The original at 100k x 10: 343 CPU s per simulated hour while iterating 0.1 times of 4.
+  EXPECT_DOUBLE_EQ(bench::cpu_per_h_at_nominal_tick(343.0, 0.1, 4.0), 343.0 * 40);
+  EXPECT_DOUBLE_EQ(bench::cpu_per_h_at_nominal_tick(100.0, 2.0, 4.0), 200.0);
+}
+
+TEST(NominalTickCost, LeavesAnAppThatKeepsItsTickOrIsNotCountedAsMeasured) {
+  EXPECT_DOUBLE_EQ(bench::cpu_per_h_at_nominal_tick(2.5, 4.0, 4.0), 2.5);
+  EXPECT_DOUBLE_EQ(bench::cpu_per_h_at_nominal_tick(2.5, 3.97, 4.0), 2.5);  // within 1 %
+  EXPECT_DOUBLE_EQ(bench::cpu_per_h_at_nominal_tick(2.5, -1.0, 4.0), 2.5);  // unknown
+  EXPECT_DOUBLE_EQ(bench::cpu_per_h_at_nominal_tick(2.5, 0.0, 4.0), 2.5);
+}
+
 TEST(Percentile, IsNearestRank) {
   std::vector<double> values;
   for (int i = 100; i >= 1; --i) values.push_back(i);  // unsorted on purpose

@@ -1,0 +1,118 @@
+// The sending half of TcpClient (contract in tcp_client.hpp): posted messages wait in the outbox
+// and leave as one packet per send slot, a TIMING at its head when one is due (spec 4.3). The
+// comms thread sends, or the app's own thread when it releases a batch and the slot is open.
+
+#include <poll.h>
+#include <sys/socket.h>
+
+#include <algorithm>
+#include <cerrno>
+
+#include "moos/tcp_client.hpp"
+
+namespace moos {
+
+namespace {
+constexpr double kMsPerSecond = 1000.0;
+}  // namespace
+
+bool TcpClient::transmit(Message msg) {
+  bool first_of_batch = false;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (state_ != ConnectionState::kConnected) return false;
+    msg.id = next_id_++;  // every posted message consumes an id (spec 2.5)
+    first_of_batch = outbox_.empty() && !holding_sends_;
+    outbox_.push_back(std::move(msg));
+  }
+  // Only the first message of a batch wakes the comms thread: it takes the whole outbox, and it
+  // never sleeps past its next send slot while the outbox holds anything (serve()). While sends
+  // are held, release_sends() sends them, or wakes it.
+  if (first_of_batch) wake();
+  return true;
+}
+
+void TcpClient::hold_sends() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  holding_sends_ = true;
+}
+
+void TcpClient::release_sends() {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    holding_sends_ = false;
+    if (outbox_.empty()) return;
+  }
+  if (!send_for_app()) wake();
+}
+
+bool TcpClient::send_for_app() {
+  std::unique_lock<std::mutex> io(io_mutex_, std::try_to_lock);
+  if (!io.owns_lock() || !app_io_failure_.empty() || !is_connected()) return false;
+  if (!start_packet_if_due(steady_now_s())) return false;
+  write_pending();  // a failure is handed to the comms thread
+  return write_buffer_.empty();  // the rest of a partial write is the comms thread's
+}
+
+Message TcpClient::timing_message() const {
+  Message m;  // id -1, source "" (spec 2.6, vector I)
+  m.type = msg_type::kTiming;
+  m.data_type = data_type::kDouble;
+  m.key = kTimingKey;
+  m.time = local_time();
+  m.dval = 0.0;
+  return m;
+}
+
+bool TcpClient::start_packet_if_due(double now) {
+  if (!write_buffer_.empty() || now < next_send_allowed_) return false;
+  const bool timing_due = !last_timing_sent_ || now - *last_timing_sent_ >= kTimingInterval_real_s;
+  std::vector<Message> batch;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    // Held messages wait for the release, unless a TIMING goes out anyway.
+    if (!timing_due && (outbox_.empty() || holding_sends_)) return false;
+    batch.reserve(outbox_.size() + 1);
+    if (timing_due) batch.push_back(timing_message());  // TIMING first (spec 4.3 step 2)
+    for (auto& m : outbox_) batch.push_back(std::move(m));
+    outbox_.clear();
+    ++packets_sent_;
+    ++packets_in_flight_;
+  }
+  if (timing_due) {
+    last_timing_sent_ = now;
+    awaiting_timing_echo_ = true;
+  }
+  write_buffer_ = encode_packet(batch);
+  write_offset_ = 0;
+  return true;
+}
+
+bool TcpClient::write_pending() {
+  while (write_offset_ < write_buffer_.size()) {
+    const ssize_t n = ::send(socket_, write_buffer_.data() + write_offset_,
+                             write_buffer_.size() - write_offset_, MSG_NOSIGNAL);
+    if (n > 0) {
+      write_offset_ += static_cast<std::size_t>(n);
+      continue;
+    }
+    if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK || errno == EINTR)) return true;
+    fail_io(errno_text("send"));
+    return false;
+  }
+  if (!write_buffer_.empty()) {
+    write_buffer_.clear();
+    write_offset_ = 0;
+    // Pause after each send (spec 4.3 step 4): the server's requested delay or the warp delay.
+    const double warp_delay_s = options_.time_warp > 1
+                                    ? options_.time_warp * options_.tw_delay_factor_ms / kMsPerSecond
+                                    : 0.0;
+    next_send_allowed_ = steady_now_s() + std::max(server_delay_s_.load(), warp_delay_s);
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (packets_in_flight_ > 0) --packets_in_flight_;
+    changed_.notify_all();
+  }
+  return true;
+}
+
+}  // namespace moos
