@@ -52,6 +52,12 @@ std::optional<unsigned long long> cpu_ticks_from_stat(std::string_view stat_line
   return *utime + *stime;
 }
 
+std::optional<unsigned long long> run_ns_from_schedstat(std::string_view schedstat_line) {
+  const auto fields = base::split(base::trim(schedstat_line), ' ');
+  if (fields.size() != 3) return std::nullopt;
+  return base::parse_unsigned(fields[0]);
+}
+
 std::optional<long long> status_kb(std::string_view status_text, std::string_view field) {
   for (const auto line : base::split(status_text, '\n')) {
     const auto colon = line.find(':');
@@ -64,6 +70,26 @@ std::optional<long long> status_kb(std::string_view status_text, std::string_vie
   return std::nullopt;
 }
 
+namespace {
+
+/// The run time of every live thread of `pid` (schedstat), in seconds; nullopt if any is missing.
+std::optional<double> threads_cpu_s(const std::string& proc_dir) {
+  std::error_code ec;
+  unsigned long long total_ns = 0;
+  bool any = false;
+  for (const auto& task : std::filesystem::directory_iterator(proc_dir + "/task", ec)) {
+    const auto ns = run_ns_from_schedstat(read_whole(task.path().string() + "/schedstat"));
+    if (!ns) continue;  // a thread that ended meanwhile
+    total_ns += *ns;
+    any = true;
+  }
+  if (ec || !any) return std::nullopt;
+  constexpr double kNsPerSecond = 1e9;
+  return static_cast<double>(total_ns) / kNsPerSecond;
+}
+
+}  // namespace
+
 std::optional<ProcUsage> read_proc_usage(pid_t pid) {
   const std::string dir = "/proc/" + std::to_string(pid);
   const auto ticks = cpu_ticks_from_stat(read_whole(dir + "/stat"));
@@ -72,7 +98,8 @@ std::optional<ProcUsage> read_proc_usage(pid_t pid) {
   const auto hwm = status_kb(status, "VmHWM");
   if (!ticks || !rss || !hwm) return std::nullopt;
   ProcUsage usage;
-  usage.cpu_s = static_cast<double>(*ticks) / static_cast<double>(::sysconf(_SC_CLK_TCK));
+  usage.cpu_s = threads_cpu_s(dir).value_or(static_cast<double>(*ticks) /
+                                            static_cast<double>(::sysconf(_SC_CLK_TCK)));
   usage.rss_kb = *rss;
   usage.hwm_kb = *hwm;
   return usage;

@@ -6,6 +6,8 @@
 // Contract:
 // - cpu_ticks_from_stat parses one /proc/<pid>/stat line: utime + stime (fields 14 and 15) in
 //   clock ticks; the command name in parentheses may hold blanks and ')' (the LAST ')' ends it).
+// - run_ns_from_schedstat parses a /proc/<pid>/task/<tid>/schedstat line: its first field,
+//   nanoseconds on a CPU (exact, where /proc/<pid>/stat counts 10-ms clock ticks).
 // - status_kb reads a "Field:   123 kB" line of /proc/<pid>/status (VmRSS, VmHWM).
 // - percentile is nearest-rank: the smallest value with at least `fraction` of the values at or
 //   below it; NaN for no values. fraction is clamped to [0, 1].
@@ -28,11 +30,15 @@ double steady_now_s();
 
 /// utime + stime of a /proc/<pid>/stat line, in clock ticks; nullopt if malformed.
 std::optional<unsigned long long> cpu_ticks_from_stat(std::string_view stat_line);
+/// Nanoseconds on a CPU from a schedstat line ("run_ns wait_ns slices"); nullopt if malformed.
+std::optional<unsigned long long> run_ns_from_schedstat(std::string_view schedstat_line);
 /// The value in kB of `field` ("VmRSS", "VmHWM") in /proc/<pid>/status text.
 std::optional<long long> status_kb(std::string_view status_text, std::string_view field);
 
 struct ProcUsage {
-  double cpu_s = 0;      ///< user + system CPU seconds since the process started
+  /// CPU seconds of the process's live threads (schedstat, exact), or user + system clock ticks
+  /// of /proc/<pid>/stat where schedstat is missing; a thread that ended takes its time along.
+  double cpu_s = 0;
   long long rss_kb = 0;  ///< resident set now
   long long hwm_kb = 0;  ///< resident set high-water mark
 };

@@ -21,9 +21,9 @@
 //   messages elsewhere and NULL messages anywhere are dropped; everything else, `~` data types
 //   included, goes to the inbox in arrival order. A framing or decoding error closes the
 //   connection (then it is retried).
-// - The app's own thread does the I/O when it can (issue 14): fetch() first reads what the socket
-//   holds, and release_sends() writes the held batch itself when the send slot is open. After
-//   expect_fetch_within(), the comms thread leaves reading to fetch() for that long plus
+// - The app's own thread does the I/O when it can (issue 14): release_sends() writes the held
+//   batch itself when the send slot is open. After expect_fetch_within(), fetch() first reads
+//   what the socket holds, and the comms thread leaves reading to fetch() for that long plus
 //   kAppReadGrace_real_s (except while a TIMING echo is awaited, so the skew stays exact), so an
 //   app cycling with steady mail wakes one thread per cycle, not two per packet. The comms
 //   thread still does everything when the app does not cycle, and is the only one that drops a
@@ -147,6 +147,10 @@ class TcpClient final : public Comms {
   /// How long after a TIMING its echo is read by the comms thread at once (when the skew is
   /// corrected): beyond that the echo is late anyway, and fetch() may read it.
   static constexpr double kTimingEchoWindow_real_s = 0.25;
+  /// While the app's thread sends packets itself, the comms thread waits this much longer for a
+  /// due TIMING, which then rides in the app's next packet (one wake-up saved per TIMING); the
+  /// longest gap between two TIMINGs, 0.95 s, stays within libMOOS's 1.0 s.
+  static constexpr double kAppTimingSlack_real_s = 0.2;
 
   static double steady_now_s();
   static std::string errno_text(const char* what);  ///< "what: strerror(errno)"
@@ -205,6 +209,7 @@ class TcpClient final : public Comms {
   std::size_t write_offset_ = 0;
   double next_send_allowed_ = 0;   // steady seconds
   std::optional<double> last_timing_sent_;  // steady seconds; nullopt: never
+  std::optional<double> last_app_send_;     // steady seconds of the app thread's last packet
   bool awaiting_timing_echo_ = false;  // a TIMING went out and its echo has not come back
   bool time_correction_ = true;
   std::string app_io_failure_;  // a failure met on the app's thread, for the comms thread to drop

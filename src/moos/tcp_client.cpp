@@ -401,6 +401,7 @@ bool TcpClient::handshake() {
   if (time_correction_) skew_s_ = first.dval;
   server_delay_s_ = 0.0;
   last_timing_sent_.reset();
+  last_app_send_.reset();
   awaiting_timing_echo_ = false;
   next_send_allowed_ = 0;
   {
@@ -458,8 +459,12 @@ bool TcpClient::app_reads(double now) const {
 
 TcpClient::PollPlan TcpClient::plan_poll(double now) {
   PollPlan plan;
-  // The next TIMING is due then (at once if none was ever sent).
-  plan.wait_real_s = last_timing_sent_ ? *last_timing_sent_ + kTimingInterval_real_s - now : 0.0;
+  // The next TIMING is due then (at once if none was ever sent), or a little later when the
+  // app's thread sends, as its next packet carries it.
+  const bool app_sends = last_app_send_ && now - *last_app_send_ < kTimingInterval_real_s;
+  const double slack_s = app_sends ? kAppTimingSlack_real_s : 0.0;
+  plan.wait_real_s =
+      last_timing_sent_ ? *last_timing_sent_ + kTimingInterval_real_s + slack_s - now : 0.0;
   {
     std::lock_guard<std::mutex> lock(mutex_);
     if (!outbox_.empty() && !holding_sends_ && write_buffer_.empty())

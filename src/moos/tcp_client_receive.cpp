@@ -36,6 +36,8 @@ std::vector<Message> TcpClient::fetch() {
 }
 
 void TcpClient::read_for_app() {
+  // Without a promise the comms thread reads everything as it arrives: nothing is left here.
+  if (steady_now_s() >= app_reads_until_.load()) return;
   std::unique_lock<std::mutex> io(io_mutex_, std::try_to_lock);
   if (!io.owns_lock() || !app_io_failure_.empty() || !is_connected()) return;
   read_available();  // a failure is handed to the comms thread

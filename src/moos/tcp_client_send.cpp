@@ -49,7 +49,9 @@ void TcpClient::release_sends() {
 bool TcpClient::send_for_app() {
   std::unique_lock<std::mutex> io(io_mutex_, std::try_to_lock);
   if (!io.owns_lock() || !app_io_failure_.empty() || !is_connected()) return false;
-  if (!start_packet_if_due(steady_now_s())) return false;
+  const double now = steady_now_s();
+  if (!start_packet_if_due(now)) return false;
+  last_app_send_ = now;
   write_pending();  // a failure is handed to the comms thread
   return write_buffer_.empty();  // the rest of a partial write is the comms thread's
 }

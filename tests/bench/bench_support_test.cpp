@@ -11,6 +11,27 @@
 
 namespace {
 
+TEST(RunNsFromSchedstat, TakesTheFirstOfThreeFields) {
+  EXPECT_EQ(bench::run_ns_from_schedstat("27203456 1024 311\n"), 27203456u);
+  EXPECT_FALSE(bench::run_ns_from_schedstat("27203456 1024").has_value());
+  EXPECT_FALSE(bench::run_ns_from_schedstat("x 1 2").has_value());
+  EXPECT_FALSE(bench::run_ns_from_schedstat("").has_value());
+}
+
+TEST(ReadProcUsage, CountsThisProcessesCpuToTheNanosecond) {
+  const auto before = bench::read_proc_usage(::getpid());
+  ASSERT_TRUE(before.has_value());
+  volatile double sink = 0;
+  for (int i = 0; i < 3000000; ++i) sink = sink + std::sqrt(static_cast<double>(i));
+  const auto after = bench::read_proc_usage(::getpid());
+  ASSERT_TRUE(after.has_value());
+  const double spent_s = after->cpu_s - before->cpu_s;
+  EXPECT_GT(spent_s, 0.0);
+  // Clock ticks would show 0 or a multiple of 10 ms; schedstat shows the loop's own time.
+  const double hundredths = spent_s * 100;
+  EXPECT_GT(std::fabs(hundredths - std::round(hundredths)), 1e-6);
+}
+
 TEST(CpuTicksFromStat, SumsUtimeAndStimeAfterTheCommandName) {
   // A command name with a blank and a ')' inside: only the last ')' ends it.
   const std::string line =

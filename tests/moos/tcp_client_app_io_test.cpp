@@ -1,6 +1,6 @@
-// TcpClient's I/O on the app's own thread (issue 14, tcp_client.hpp): fetch() reads what the
-// socket holds, a promised fetch leaves reading to the app, release_sends() writes the batch
-// itself, and a failure the app's thread meets is handed to the comms thread.
+// TcpClient's I/O on the app's own thread (issue 14, tcp_client.hpp): after a promise, fetch()
+// reads what the socket holds and the comms thread leaves it the reading; release_sends() writes
+// the batch itself; a failure the app's thread meets is handed to the comms thread.
 #include <atomic>
 
 #include "tcp_client_fixture.hpp"
@@ -111,6 +111,27 @@ TEST_F(TcpClientAppIo, AReleasedBatchIsWrittenByTheAppsOwnThread_Issue14) {
   for (const auto& m : *packet)
     if (m.type != msg_type::kTiming) keys.push_back(m.key);
   EXPECT_EQ(keys, (std::vector<std::string>{"X", "Y"}));
+}
+
+TEST_F(TcpClientAppIo, WhileTheAppSendsTheTimingRidesInItsPackets_Issue14) {
+  TcpClient client(uncorrected());
+  ASSERT_NO_FATAL_FAILURE(connect_and_settle(client));
+  const double end = steady_now_s() + 3.0;
+  for (int i = 0; steady_now_s() < end; ++i) {  // an app cycling every 0.1 real s
+    client.hold_sends();
+    ASSERT_TRUE(client.notify("P", static_cast<double>(i)));
+    client.release_sends();
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  int riding = 0;
+  int alone = 0;
+  while (auto packet = server.read_packet(0.2)) {
+    if (packet->front().type == msg_type::kTiming) ++(packet->size() > 1 ? riding : alone);
+  }
+  // About four TIMINGs in 3 s; one may go alone when a cycle is late (a loaded machine).
+  EXPECT_GE(riding + alone, 3);
+  EXPECT_GE(riding, 2);
+  EXPECT_LE(alone, 1);
 }
 
 TEST_F(TcpClientAppIo, AFetchThatFindsTheConnectionClosedHandsItToTheCommsThread_Issue14) {
