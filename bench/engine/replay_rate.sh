@@ -5,7 +5,8 @@
 # The CPU time (user + system, /usr/bin/time) of a replay of DURATION simulated seconds minus
 # that of a 1-second replay (loading the field) is divided by the node reports between them.
 #
-#   bench/engine/replay_rate.sh [DURATION_S (default 300)]
+#   bench/engine/replay_rate.sh [DURATION_S (default 300)] [--study]
+# --study times the study mode instead (`--seeds=1..1`: one JSON line, no .alog, no visuals).
 # BUILD_DIR (default build/release) is where hazard_replay and gen_hazards were built.
 set -euo pipefail
 HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
@@ -15,10 +16,15 @@ REPLAY="$BUILD/src/apps/hazard_replay/hazard_replay"
 GEN="$BUILD/src/apps/gen_hazards/gen_hazards"
 for p in "$REPLAY" "$GEN"; do [[ -x "$p" ]] || { echo "replay_rate.sh: build $p first" >&2; exit 1; }; done
 DURATION="${1:-300}"
+STUDY="${2:-}"
+[[ -z "$STUDY" || "$STUDY" == --study ]] ||
+  { echo "replay_rate.sh: the second argument may only be --study: '$STUDY'" >&2; exit 2; }
 [[ "$DURATION" =~ ^[0-9]+$ && "$DURATION" -ge 2 && "$DURATION" -le 36000 ]] ||
   { echo "replay_rate.sh: DURATION_S must be a whole number in [2, 36000]: '$DURATION'" >&2; exit 2; }
 WORK="$(mktemp -d /tmp/replay_rate.XXXXXX)"
 trap 'rm -rf "$WORK"' EXIT
+MODE=(--output="$WORK/out.alog")
+if [[ -n "$STUDY" ]]; then MODE=(--seeds=1..1); fi
 
 "$GEN" --polygon=-10000,-10000:10000,-10000:10000,10000:-10000,10000 \
   --objects=500000,hazard --objects=500000,benign --seed=1 > "$WORK/field.txt"
@@ -55,8 +61,8 @@ make_log 1 "$WORK/short.alog"
 make_log "$DURATION" "$WORK/long.alog"
 
 cpu() {  # user + system seconds of one replay
-  /usr/bin/time -f "%U %S" -o "$WORK/time" "$REPLAY" "$WORK/m.moos" "$1" \
-    --output="$WORK/out.alog" 2>/dev/null
+  /usr/bin/time -f "%U %S" -o "$WORK/time" "$REPLAY" "$WORK/m.moos" "$1" "${MODE[@]}" \
+    >/dev/null 2>&1
   awk '{ print $1 + $2 }' "$WORK/time"
 }
 short_s=$(cpu "$WORK/short.alog")

@@ -122,7 +122,9 @@ class Engine {
 
   /// This engine as built, with another seed: a study over seeds loads the field once
   /// (hazard_replay --seeds). Only before start(): the copy has no start time, vehicles or mail.
-  Engine with_seed(SeedChoice seed) const;
+  /// `readers` (effects.hpp): a study that reads only which reports were posted passes
+  /// kReportCounts, and the copy builds no visual's text.
+  Engine with_seed(SeedChoice seed, PostingReaders readers = PostingReaders::kViewers) const;
 
   /// Start-up: the loader's config warnings and, if show_hazards, the object visuals.
   /// Records `now_s` as the start time (the report's relative times).

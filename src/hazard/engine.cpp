@@ -19,10 +19,11 @@ Engine::Engine(EngineSetup setup, SeedChoice seed)
   visuals_cursor_ = field_.size();
 }
 
-Engine Engine::with_seed(SeedChoice seed) const {
+Engine Engine::with_seed(SeedChoice seed, PostingReaders readers) const {
   Engine copy(*this);
   copy.seed_ = seed;
   copy.dice_ = Dice(seed.seed);
+  copy.effects_ = for_readers(effects_, readers);
   return copy;
 }
 

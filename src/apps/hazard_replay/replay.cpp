@@ -209,7 +209,7 @@ int run(const Options& options, std::ostream& out, std::ostream& err) {
     err << "hazard_replay: seeds " << options.seeds->first << ".." << options.seeds->last
         << ", AppTick " << base::fmt(tick_hz) << " Hz\n";
     for (std::uint64_t seed = options.seeds->first;; ++seed) {
-      hazard::Driver seeded(built.with_seed({seed, hazard::SeedSource::kCommandLine}));
+      hazard::Driver seeded(study_engine(built, seed));
       out << seed_summary_json(seed, count_reports(seeded, timeline), score) << "\n";
       if (seed == options.seeds->last) break;
     }
