@@ -114,7 +114,8 @@ Parsed<NodeReport> parse_node_report(std::string_view text) {
 }
 
 // The report is built in its place in the result (ten a second per vehicle: not moved out).
-Parsed<NodeReport> parse_node_report(std::string_view text, const GeoPlacement* placement) {
+Parsed<NodeReport> parse_node_report(std::string_view text, const GeoPlacement* placement,
+                                     NodeReportKeep keep) {
   const NodeFields f(text);
   Parsed<NodeReport> result;
   NodeReport& r = result.value.emplace();
@@ -155,6 +156,7 @@ Parsed<NodeReport> parse_node_report(std::string_view text, const GeoPlacement* 
   r.heading_deg = base::norm360(*hdg);
   const std::string why = out_of_range(f, {r.x_m, r.y_m}, r.speed_mps, spd_text.value_or(""));
   if (!why.empty()) return Parsed<NodeReport>::fail(why);
+  if (keep == NodeReportKeep::kPose) return result;  // nothing below can reject the report
   r.lat_deg = optional_number(f.lat);
   r.lon_deg = optional_number(f.lon);
   r.time_s = optional_number(f.time);
