@@ -66,8 +66,6 @@ class KeyValueReader {
   bool next(KeyValue& kv);
 
  private:
-  std::size_t piece_end(std::size_t start, std::size_t& equals) const;
-
   std::string_view text_;
   char separator_;
   bool respect_braces_;
