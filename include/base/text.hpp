@@ -66,8 +66,6 @@ class KeyValueReader {
   bool next(KeyValue& kv);
 
  private:
-  std::size_t piece_end(std::size_t start, std::size_t& equals) const;
-
   std::string_view text_;
   char separator_;
   bool respect_braces_;
@@ -128,7 +126,10 @@ namespace detail {
 inline char lower_ascii(char c) {
   return c >= 'A' && c <= 'Z' ? static_cast<char>(c + ('a' - 'A')) : c;
 }
-inline bool is_trimmed(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
+/// One compare for the usual byte (anything above ' ' is kept), four for the rest.
+inline bool is_trimmed(char c) {
+  return static_cast<unsigned char>(c) <= ' ' && (c == ' ' || c == '\t' || c == '\r' || c == '\n');
+}
 }  // namespace detail
 
 inline std::string_view trim(std::string_view text) {

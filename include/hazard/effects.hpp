@@ -22,6 +22,7 @@
 //   detection_visuals  show_detections is not 0 (detection and classification circles)
 //   hazard_markers     show_hazards                                         (manual 7.6)
 // Costs per effect are measured in docs/effects.md (bench/engine/effects_bench).
+// Who reads the postings can switch the visual effects off too (PostingReaders, below).
 
 #include <string_view>
 #include <vector>
@@ -47,5 +48,16 @@ struct Effects {
 };
 
 Effects choose_effects(const EngineConfig& config, const HazardField& field);
+
+/// Who reads the engine's postings. kViewers: they go to MOOS or to a log, where a viewer may
+/// draw them; the visual effects are as configured. kReportCounts: only which reports were
+/// posted is read (a study over seeds, hazard_replay --seeds), never a posting's text.
+enum class PostingReaders { kViewers, kReportCounts };
+
+/// `effects` as `readers` need them: for kReportCounts the visual effects (swath_visuals,
+/// detection_visuals, hazard_markers) are off, so no VIEW_* text is built. A visual only posts
+/// (it rolls no die and changes no state), so every other posting, event, warning and die
+/// outcome is the same either way (tests/hazard/posting_readers_test.cpp).
+Effects for_readers(Effects effects, PostingReaders readers);
 
 }  // namespace hazard

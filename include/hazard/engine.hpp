@@ -24,6 +24,7 @@
 // the options summary), sensing.cpp, detection.cpp, classification.cpp, visuals.cpp,
 // interface.cpp, invariants.cpp.
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -122,7 +123,9 @@ class Engine {
 
   /// This engine as built, with another seed: a study over seeds loads the field once
   /// (hazard_replay --seeds). Only before start(): the copy has no start time, vehicles or mail.
-  Engine with_seed(SeedChoice seed) const;
+  /// `readers` (effects.hpp): a study that reads only which reports were posted passes
+  /// kReportCounts, and the copy builds no visual's text.
+  Engine with_seed(SeedChoice seed, PostingReaders readers = PostingReaders::kViewers) const;
 
   /// Start-up: the loader's config warnings and, if show_hazards, the object visuals.
   /// Records `now_s` as the start time (the report's relative times).
@@ -230,6 +233,8 @@ class Engine {
   std::optional<VehicleId> free_vehicle_slot(std::string_view name, double now_s, Outputs& out);
   /// Where `name` is or belongs in by_name_.
   std::vector<VehicleId>::const_iterator name_position(std::string_view name) const;
+  /// The vehicle `name` from recent_ids_ when its slot still holds it; nullopt otherwise.
+  std::optional<VehicleId> recent_vehicle(std::string_view name, std::size_t slot) const;
   void notify(const VehicleState& v, ObjectId id, std::uint32_t pass, DiePurpose purpose,
               bool outcome) const;
 
@@ -244,6 +249,11 @@ class Engine {
 
   std::vector<VehicleState> vehicles_;
   std::vector<VehicleId> by_name_;  ///< ids in name order; also the name lookup
+  /// A cache in front of the name lookup (mail comes ten times a second per vehicle): the id
+  /// last found for a name, in the slot of the name's hash. A hit is checked against the
+  /// vehicle's name, so a stale slot (a forgotten vehicle, a collision) is only a miss.
+  static constexpr std::size_t kRecentIdSlots = 1024;
+  std::array<VehicleId, kRecentIdSlots> recent_ids_{};
   std::optional<double> start_time_s_;
   std::optional<double> last_summary_s_;
   BoundDrops drops_;

@@ -44,6 +44,12 @@ AlogEntry alog_entry(const Message& msg, double logstart_s);
 std::string format_alog_line(const AlogEntry& entry);
 /// The same line appended to `out`.
 void append_alog_line(std::string& out, const AlogEntryView& entry);
+/// The line in two parts, for a writer of many lines with the same time, variable and source
+/// (hazard_replay: a hundred swath polygons per iteration): the TIME, VARIABLE and SOURCE
+/// columns, and then the VALUE column with the newline. Together they are append_alog_line.
+void append_alog_columns(std::string& out, double time_s, std::string_view variable,
+                         std::string_view source);
+void append_alog_value(std::string& out, std::string_view value);
 
 enum class AlogLineKind { kEntry, kHeader, kBlank, kMalformed };
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 
 namespace base {
 
@@ -45,14 +46,19 @@ DecimalScan scan_decimal(std::string_view s) {
   std::uint64_t mantissa = 0;
   int digits = 0;
   int exponent = 0;
-  for (; i < s.size() && is_digit(s[i]); ++i, ++digits) {
-    if (digits < kMaxExactDigits) mantissa = mantissa * 10 + static_cast<unsigned>(s[i] - '0');
-  }
-  if (i < s.size() && s[i] == '.') {
-    for (++i; i < s.size() && is_digit(s[i]); ++i, ++digits) {
-      if (digits < kMaxExactDigits) mantissa = mantissa * 10 + static_cast<unsigned>(s[i] - '0');
-      --exponent;
+  // The digits before and after the point, each compared once (unsigned: below '0' wraps).
+  const auto take_digits = [&](bool after_point) {
+    for (; i < s.size(); ++i, ++digits) {
+      const unsigned digit = static_cast<unsigned>(static_cast<unsigned char>(s[i])) - '0';
+      if (digit > 9) return;
+      if (digits < kMaxExactDigits) mantissa = mantissa * 10 + digit;
+      if (after_point) --exponent;
     }
+  };
+  take_digits(false);
+  if (i < s.size() && s[i] == '.') {
+    ++i;
+    take_digits(true);
   }
   if (digits == 0) return scan;
   if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
@@ -84,15 +90,19 @@ DecimalScan scan_decimal(std::string_view s) {
 // tie goes to the even neighbour, as printf does. Every other case returns false: the caller
 // uses std::to_chars, which rounds the exact binary value as printf does. Same text as printf
 // (tests/base/number_differential_test.cpp).
+// With `fmt` the text is FMT's (trailing zeros and then a trailing '.' removed, "-0" as "0"),
+// trimmed before it is appended: one append per number (the swath polygon writes eleven).
 constexpr int kMaxFastDecimals = 9;
-bool append_fix_fast(std::string& out, double value, int decimals) {
+bool append_fixed_fast(std::string& out, double value, int decimals, bool fmt) {
   static constexpr double kPow10[kMaxFastDecimals + 1] = {1e0, 1e1, 1e2, 1e3, 1e4,
                                                          1e5, 1e6, 1e7, 1e8, 1e9};
   if (decimals > kMaxFastDecimals) return false;
   const double magnitude = std::fabs(value);
   const double scaled = magnitude * kPow10[decimals];
   if (!(scaled < 0x1p53)) return false;  // also NaN and infinities
-  const double whole = std::floor(scaled);
+  // Truncation is floor here (0 <= scaled < 2^53), without a library call.
+  const auto whole_units = static_cast<std::uint64_t>(scaled);
+  const auto whole = static_cast<double>(whole_units);
   const double fraction = scaled - whole;  // exact below 2^53
   bool round_up = fraction > 0.5;
   if (std::fabs(fraction - 0.5) <= scaled * 0x1p-50) {
@@ -101,10 +111,10 @@ bool append_fix_fast(std::string& out, double value, int decimals) {
     const double above_tie = (fraction - 0.5) + std::fma(magnitude, kPow10[decimals], -scaled);
     // An exact tie (2.5 to 0 decimals, -10000.25 to 1) goes to the even neighbour, as printf
     // rounds in the default rounding mode.
-    const bool odd = (static_cast<std::uint64_t>(whole) & 1U) != 0;
+    const bool odd = (whole_units & 1U) != 0;
     round_up = above_tie > 0.0 || (above_tie == 0.0 && odd);
   }
-  const std::uint64_t units = static_cast<std::uint64_t>(whole) + (round_up ? 1 : 0);
+  const std::uint64_t units = whole_units + (round_up ? 1 : 0);
   // Written from the right: the decimals, the point, the whole part (at least "0"), the sign.
   char text[48];
   char* const end = text + sizeof text;
@@ -112,12 +122,29 @@ bool append_fix_fast(std::string& out, double value, int decimals) {
   std::uint64_t rest = units;
   for (int i = 0; i < decimals; ++i, rest /= 10) *--p = static_cast<char>('0' + rest % 10);
   if (decimals > 0) *--p = '.';
-  do {
-    *--p = static_cast<char>('0' + rest % 10);
-    rest /= 10;
-  } while (rest != 0);
+  // The whole part two digits per division.
+  static constexpr char kPairs[] =
+      "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
+      "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
+      "8081828384858687888990919293949596979899";
+  for (; rest >= 100; rest /= 100) {
+    p -= 2;
+    std::memcpy(p, kPairs + 2 * (rest % 100), 2);
+  }
+  if (rest >= 10) {
+    p -= 2;
+    std::memcpy(p, kPairs + 2 * rest, 2);
+  } else {
+    *--p = static_cast<char>('0' + rest);
+  }
   if (std::signbit(value)) *--p = '-';
-  out.append(p, static_cast<std::size_t>(end - p));
+  char* last = end;
+  if (fmt && decimals > 0) {
+    while (last[-1] == '0') --last;  // stops at the '.' at the latest
+    if (last[-1] == '.') --last;
+  }
+  if (fmt && last - p == 2 && p[0] == '-' && p[1] == '0') ++p;
+  out.append(p, static_cast<std::size_t>(last - p));
   return true;
 }
 
@@ -125,7 +152,7 @@ bool append_fix_fast(std::string& out, double value, int decimals) {
 
 void append_fix(std::string& out, double value, int decimals) {
   decimals = std::clamp(decimals, 0, kMaxDecimals);
-  if (append_fix_fast(out, value, decimals)) return;
+  if (append_fixed_fast(out, value, decimals, /*fmt=*/false)) return;
   // std::to_chars with a precision is specified "as if by printf" in the C locale, and is much
   // faster than glibc's printf; the large buffer only matters for values near 1e308.
   char small[64];
@@ -142,6 +169,7 @@ void append_fix(std::string& out, double value, int decimals) {
 }
 
 void append_fmt(std::string& out, double value, int decimals) {
+  if (append_fixed_fast(out, value, std::clamp(decimals, 0, kMaxDecimals), /*fmt=*/true)) return;
   const std::size_t at = out.size();
   append_fix(out, value, decimals);
   // FIX writes a '.' exactly when it has decimals (and the value is finite: "inf" and "nan"
@@ -287,48 +315,91 @@ std::optional<bool> parse_bool(std::string_view text) {
 KeyValueReader::KeyValueReader(std::string_view text, char separator, bool respect_braces)
     : text_(text), separator_(separator), respect_braces_(respect_braces) {}
 
+namespace {
+
+// Bytes that end a run of a piece's ordinary bytes: '=', '{' and, in the table for the usual
+// separator, ','. A table, so the scan costs a load and a test per byte.
+struct PieceStops {
+  bool stop[256];
+  constexpr explicit PieceStops(char separator) : stop() {
+    stop[static_cast<unsigned char>('=')] = true;
+    stop[static_cast<unsigned char>('{')] = true;
+    stop[static_cast<unsigned char>(separator)] = true;
+  }
+};
+constexpr PieceStops kCommaStops(',');
+constexpr PieceStops kStops('=');  // no separator in it: compared byte by byte
+
+// The end of the run of ordinary bytes from `i`: at a separator, '=', '{' or `n`.
+std::size_t run_end(const char* text, std::size_t i, std::size_t n, char separator) {
+  const auto stops = [](const PieceStops& table, char c) {
+    return table.stop[static_cast<unsigned char>(c)];
+  };
+  if (separator == ',') {
+    // Four bytes per bounds check: most runs are a key or a number of a few bytes.
+    for (; i + 4 <= n; i += 4) {
+      if (stops(kCommaStops, text[i])) return i;
+      if (stops(kCommaStops, text[i + 1])) return i + 1;
+      if (stops(kCommaStops, text[i + 2])) return i + 2;
+      if (stops(kCommaStops, text[i + 3])) return i + 3;
+    }
+    while (i < n && !stops(kCommaStops, text[i])) ++i;
+  } else {
+    while (i < n && text[i] != separator && !stops(kStops, text[i])) ++i;
+  }
+  return i;
+}
+
 // The end of the piece that starts at `start`: the next separator outside {...} (braces count
 // only when asked; an unmatched '}' is an ordinary byte, an unclosed '{' runs to the end).
 // Also the first '=' of the piece, wherever it is (npos if none), found in the same pass.
-std::size_t KeyValueReader::piece_end(std::size_t start, std::size_t& equals) const {
-  // Locals, not members, in the loop: the compiler keeps them in registers.
-  const char* const text = text_.data();
-  const std::size_t n = text_.size();
-  const char separator = separator_;
-  const bool braces = respect_braces_;
+// One call site: inlined into next(), which a NODE_REPORT calls nine times.
+std::size_t piece_end(std::string_view all, std::size_t start, char separator, bool braces,
+                      std::size_t& equals) {
+  const char* const text = all.data();
+  const std::size_t n = all.size();
   std::size_t first_equals = std::string_view::npos;
   std::size_t i = start;
-  for (; i < n; ++i) {
-    const char c = text[i];
-    if (c == separator) break;
-    if (c == '=' && first_equals == std::string_view::npos) first_equals = i;
-    if (c == '{' && braces) {
-      int depth = 1;
-      for (++i; i < n && depth > 0; ++i) {
-        if (text[i] == '=' && first_equals == std::string_view::npos) first_equals = i;
-        depth += text[i] == '{' ? 1 : text[i] == '}' ? -1 : 0;
-      }
-      if (i == n) break;
-      --i;  // the outer loop looks at the byte after the closing brace
+  while (true) {
+    i = run_end(text, i, n, separator);
+    if (i == n || text[i] == separator) break;
+    if (text[i] == '=') {
+      if (first_equals == std::string_view::npos) first_equals = i;
+      ++i;
+      continue;
+    }
+    if (!braces) {  // a '{' is an ordinary byte
+      ++i;
+      continue;
+    }
+    // A '{': on to the byte after its matching '}' (an '=' inside still counts as the first).
+    int depth = 1;
+    for (++i; i < n && depth > 0; ++i) {
+      if (text[i] == '=' && first_equals == std::string_view::npos) first_equals = i;
+      depth += text[i] == '{' ? 1 : text[i] == '}' ? -1 : 0;
     }
   }
   equals = first_equals;
   return i;
 }
 
+}  // namespace
+
 bool KeyValueReader::next(KeyValue& kv) {
+  const char* const text = text_.data();
   while (start_ <= text_.size()) {
     std::size_t equals = 0;
-    const std::size_t end = piece_end(start_, equals);
+    const std::size_t end = piece_end(text_, start_, separator_, respect_braces_, equals);
     const std::size_t start = start_;
     start_ = end + 1;
+    // Views built from positions known to be in range (no substr checks).
     if (equals == std::string_view::npos) {
-      const std::string_view piece = trim(text_.substr(start, end - start));
+      const std::string_view piece = trim(std::string_view(text + start, end - start));
       if (piece.empty()) continue;
       kv = KeyValue{piece, {}, false};
     } else {
-      kv = KeyValue{trim(text_.substr(start, equals - start)),
-                    trim(text_.substr(equals + 1, end - equals - 1)), true};
+      kv = KeyValue{trim(std::string_view(text + start, equals - start)),
+                    trim(std::string_view(text + equals + 1, end - equals - 1)), true};
     }
     return true;
   }

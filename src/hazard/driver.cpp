@@ -80,7 +80,10 @@ void Driver::dispatch(std::string_view variable, std::string_view value, double 
     }
   };
   if (variable == kNodeReport) {
-    route([&](std::string_view text) { return parse_node_report(text, &engine_.placement()); },
+    // The engine reads the name and the pose only (NodeReportKeep::kPose).
+    route([&](std::string_view text) {
+            return parse_node_report(text, &engine_.placement(), NodeReportKeep::kPose);
+          },
           [&](const NodeReport& r) { engine_.handle_node_report(r, now_s, out); });
   } else if (variable == kSensorRequest) {
     route(parse_sensor_request,

@@ -47,4 +47,13 @@ Effects choose_effects(const EngineConfig& config, const HazardField& field) {
   return e;
 }
 
+Effects for_readers(Effects effects, PostingReaders readers) {
+  if (readers == PostingReaders::kReportCounts) {
+    effects.swath_visuals = false;
+    effects.detection_visuals = false;
+    effects.hazard_markers = false;
+  }
+  return effects;
+}
+
 }  // namespace hazard

@@ -19,10 +19,11 @@ Engine::Engine(EngineSetup setup, SeedChoice seed)
   visuals_cursor_ = field_.size();
 }
 
-Engine Engine::with_seed(SeedChoice seed) const {
+Engine Engine::with_seed(SeedChoice seed, PostingReaders readers) const {
   Engine copy(*this);
   copy.seed_ = seed;
   copy.dice_ = Dice(seed.seed);
+  copy.effects_ = for_readers(effects_, readers);
   return copy;
 }
 
@@ -39,10 +40,22 @@ std::optional<VehicleId> Engine::find_vehicle(std::string_view name) const {
   return *pos;
 }
 
+std::optional<VehicleId> Engine::recent_vehicle(std::string_view name, std::size_t slot) const {
+  const VehicleId id = recent_ids_[slot];
+  if (id < vehicles_.size() && vehicles_[id].name == name) return id;
+  return std::nullopt;
+}
+
 std::optional<VehicleId> Engine::vehicle_id(std::string_view name, double now_s, Outputs& out) {
+  const std::size_t recent = hash_name(name) % kRecentIdSlots;
+  if (const auto id = recent_vehicle(name, recent)) {
+    vehicles_[*id].last_mail_s = now_s;
+    return id;
+  }
   const auto pos = name_position(name);
   if (pos != by_name_.end() && vehicles_[*pos].name == name) {
     vehicles_[*pos].last_mail_s = now_s;
+    recent_ids_[recent] = *pos;
     return *pos;
   }
   const auto slot = free_vehicle_slot(name, now_s, out);
@@ -59,6 +72,7 @@ std::optional<VehicleId> Engine::vehicle_id(std::string_view name, double now_s,
     vehicles_[*slot] = std::move(v);
   }
   by_name_.insert(name_position(name), *slot);
+  recent_ids_[recent] = *slot;
   return *slot;
 }
 

@@ -8,23 +8,36 @@
 namespace hazard {
 
 void HeadingHistory::add(double heading_deg, double time_s) {
-  if (!samples_.empty() && !(time_s > samples_.back().time_s)) return;
-  samples_.push_back({heading_deg, time_s});
+  const bool empty = size() == 0;
+  if (!empty && !(time_s > samples_.back().time_s)) return;
+  const double step_deg =
+      empty ? 0.0 : std::fabs(base::norm180(heading_deg - samples_.back().heading_deg));
+  samples_.push_back({heading_deg, time_s, step_deg});
   // Inside the window means newest - t < window (strict, spec 8.2), allowing for clock rounding
   // (time_rules.hpp), so the window holds the same number of samples all day at epoch times.
-  while (samples_.size() > kMaxSamples ||
-         elapsed_at_least(time_s, samples_.front().time_s, kTurnWindow_s)) {
-    samples_.pop_front();
+  while (size() > kMaxSamples ||
+         elapsed_at_least(time_s, samples_[first_].time_s, kTurnWindow_s)) {
+    pop_oldest();
+  }
+}
+
+void HeadingHistory::pop_oldest() {
+  ++first_;
+  // Reclaimed once the dropped samples outnumber the kept ones: amortised O(1) per sample, and
+  // the array never holds more than twice the samples in the window (plus a few).
+  constexpr std::size_t kReclaimAfter = 32;
+  if (first_ >= kReclaimAfter && first_ * 2 >= samples_.size()) {
+    samples_.erase(samples_.begin(), samples_.begin() + static_cast<std::ptrdiff_t>(first_));
+    first_ = 0;
   }
 }
 
 double HeadingHistory::turn_rate_dps() const {
-  if (samples_.size() < 2) return 0.0;
+  if (size() < 2) return 0.0;
+  // The first sample's step leads to one already dropped: the window's steps are the rest.
   double sum_deg = 0.0;
-  for (std::size_t i = 1; i < samples_.size(); ++i) {
-    sum_deg += std::fabs(base::norm180(samples_[i].heading_deg - samples_[i - 1].heading_deg));
-  }
-  const double span_s = samples_.back().time_s - samples_.front().time_s;
+  for (std::size_t i = first_ + 1; i < samples_.size(); ++i) sum_deg += samples_[i].step_deg;
+  const double span_s = samples_.back().time_s - samples_[first_].time_s;
   return span_s > 0.0 ? sum_deg / span_s : 0.0;
 }
 

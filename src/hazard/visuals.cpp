@@ -116,18 +116,23 @@ void Engine::post_object_visuals(ObjectId id, Outputs& out) const {
 
 void Engine::post_swath(const VehicleState& v, const Swath& swath, bool on, Outputs& out) const {
   const SensorSetting& s = *v.setting;
-  // Every vehicle's swath, every iteration: one polygon per thread is reused, so its points and
-  // label keep their storage (the text itself is built anew, as always).
+  // Every vehicle's swath, every iteration: one polygon per thread is reused, so its points,
+  // label and msg keep their storage (the text itself is built anew, as always).
   thread_local ViewPolygon p;
   const auto corners = swath.corners();
   p.points.assign(corners.begin(), corners.end());
   p.label.assign("sensor_swath_").append(v.name);
+  // Appended into the reused msg (no temporary strings).
+  p.msg.clear();
   if (config_.show_pd && config_.show_pfa) {
-    p.msg = base::fix(s.pd, 2) + "/" + base::fix(s.pfa, 2);
+    base::append_fix(p.msg, s.pd, 2);
+    p.msg += '/';
+    base::append_fix(p.msg, s.pfa, 2);
   } else if (config_.show_pd) {
-    p.msg = base::fix(s.pd, 2);
+    base::append_fix(p.msg, s.pd, 2);
   } else if (config_.show_pfa) {
-    p.msg = "pfa=" + base::fix(s.pfa, 2);
+    p.msg += "pfa=";
+    base::append_fix(p.msg, s.pfa, 2);
   } else {
     p.msg = "_null_";  // the original's "no label" word
   }

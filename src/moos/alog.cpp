@@ -113,22 +113,30 @@ void append_column(std::string& out, std::string_view text, std::size_t width) {
 
 }  // namespace
 
-void append_alog_line(std::string& out, const AlogEntryView& entry) {
+void append_alog_columns(std::string& out, double time_s, std::string_view variable,
+                         std::string_view source) {
   const std::size_t at = out.size();
-  base::append_fix(out, entry.time_s, 3);  // printf's "%.3f" (base::fix)
+  base::append_fix(out, time_s, 3);  // printf's "%.3f" (base::fix)
   pad_column(out, out.size() - at, 10);
-  append_column(out, entry.variable, 20);
-  append_column(out, entry.source, 16);
+  append_column(out, variable, 20);
+  append_column(out, source, 16);
+}
+
+void append_alog_value(std::string& out, std::string_view value) {
   const std::size_t value_at = out.size();
-  out.append(entry.value);
+  out.append(value);
   // Two vectorised searches find the rare line break; the byte loop runs only then.
-  const std::string_view v = entry.value;
-  if (!v.empty() && (std::memchr(v.data(), '\n', v.size()) != nullptr ||
-                     std::memchr(v.data(), '\r', v.size()) != nullptr)) {
+  if (!value.empty() && (std::memchr(value.data(), '\n', value.size()) != nullptr ||
+                         std::memchr(value.data(), '\r', value.size()) != nullptr)) {
     std::replace_if(out.begin() + static_cast<std::ptrdiff_t>(value_at), out.end(),
                     [](char c) { return c == '\n' || c == '\r'; }, ' ');
   }
   out.push_back('\n');
+}
+
+void append_alog_line(std::string& out, const AlogEntryView& entry) {
+  append_alog_columns(out, entry.time_s, entry.variable, entry.source);
+  append_alog_value(out, entry.value);
 }
 
 std::string format_alog_line(const AlogEntry& entry) {

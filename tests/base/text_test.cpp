@@ -2,7 +2,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <string>
+#include <vector>
 
 #include "base/text.hpp"
 
@@ -113,6 +115,58 @@ TEST(Text, KeyValueReaderGivesTheSplitPieces) {
     EXPECT_EQ(kv.has_equals, all[i].has_equals);
   }
   EXPECT_EQ(i, 5u);
+}
+
+// The pieces by the contract's words, one byte at a time: a piece ends at a separator outside
+// {...}; its key is before its first '=', wherever that is; both sides trimmed; blank pieces
+// without '=' skipped. The reader (a table-driven scan) must agree on every text.
+std::vector<KeyValue> pieces_by_contract(std::string_view text, char separator, bool braces) {
+  std::vector<KeyValue> out;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    std::size_t i = start;
+    int depth = 0;
+    for (; i < text.size(); ++i) {
+      if (braces && text[i] == '{') ++depth;
+      if (braces && text[i] == '}' && depth > 0) --depth;
+      if (text[i] == separator && depth == 0) break;
+    }
+    const std::string_view piece = text.substr(start, i - start);
+    start = i + 1;
+    const std::size_t equals = piece.find('=');
+    if (equals == std::string_view::npos) {
+      if (!trim(piece).empty()) out.push_back({trim(piece), {}, false});
+    } else {
+      out.push_back({trim(piece.substr(0, equals)), trim(piece.substr(equals + 1)), true});
+    }
+  }
+  return out;
+}
+
+TEST(Text, KeyValueReaderAgreesWithTheContractOnGeneratedTexts) {
+  constexpr std::string_view kBytes = "ab=,{} \t;";
+  std::uint64_t state = 12345;
+  for (int n = 0; n < 20000; ++n) {
+    std::string text;
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    const std::size_t length = (state >> 33) % 24;
+    for (std::size_t k = 0; k < length; ++k) {
+      state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+      text.push_back(kBytes[(state >> 33) % kBytes.size()]);
+    }
+    for (const char separator : {',', ';'}) {
+      for (const bool braces : {false, true}) {
+        const auto want = pieces_by_contract(text, separator, braces);
+        const auto got = split_key_values(text, separator, braces);
+        ASSERT_EQ(got.size(), want.size()) << "'" << text << "' " << separator << braces;
+        for (std::size_t i = 0; i < got.size(); ++i) {
+          EXPECT_EQ(got[i].key, want[i].key) << "'" << text << "'";
+          EXPECT_EQ(got[i].value, want[i].value) << "'" << text << "'";
+          EXPECT_EQ(got[i].has_equals, want[i].has_equals) << "'" << text << "'";
+        }
+      }
+    }
+  }
 }
 
 TEST(Text, CaseHelpers) {

@@ -35,10 +35,17 @@ struct NodeReport {
   bool placed_from_lat_lon = false;
 };
 
+/// What a parse keeps. kAll: every field above. kPose: what the sensor reads, the name and the
+/// placed pose; lat_deg, lon_deg, time_s and type stay empty (their text is not converted,
+/// which is a quarter of the parse of a typical report). Both accept and reject the same
+/// texts with the same errors, and give the same name and pose.
+enum class NodeReportKeep { kAll, kPose };
+
 /// Without geodesy: a LAT/LON-only report is rejected.
 Parsed<NodeReport> parse_node_report(std::string_view text);
 /// With `placement` (nullptr: none) for LAT/LON-only reports.
-Parsed<NodeReport> parse_node_report(std::string_view text, const GeoPlacement* placement);
+Parsed<NodeReport> parse_node_report(std::string_view text, const GeoPlacement* placement,
+                                     NodeReportKeep keep = NodeReportKeep::kAll);
 /// NAME=..,X=FMT(x,2),Y=FMT(y,2),SPD=FMT(s,2),HDG=FMT(h,2)
 ///   [,LAT=..,LON=..][,TIME=FMT(t,3)][,TYPE=..]
 std::string format_node_report(const NodeReport& report);

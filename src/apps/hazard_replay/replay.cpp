@@ -1,9 +1,11 @@
 #include "replay.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <memory>
 #include <ostream>
 
@@ -121,7 +123,8 @@ class Writer {
     const hazard::Outputs& o = timed.outputs;
     const double time_s = timed.time_s;
     for (const hazard::Posting& p : o.postings) {
-      moos::append_alog_line(buffer_, {time_s, p.variable, source_, p.value});
+      append_columns(time_s, p.variable);
+      moos::append_alog_value(buffer_, p.value);
     }
     if (buffer_.size() >= kFlushBytes) flush();
     if (o.config_warnings.empty() && o.run_warnings.empty() &&
@@ -135,6 +138,21 @@ class Writer {
     for (const auto& e : o.events) err_ << when << "event: " << e << "\n";
   }
 
+  // The TIME, VARIABLE and SOURCE columns; built once for a run of lines that share them (an
+  // iteration's swath polygons), then copied.
+  void append_columns(double time_s, std::string_view variable) {
+    const bool same = time_s == columns_time_s_ &&
+                      std::signbit(time_s) == std::signbit(columns_time_s_) &&  // "-0.000"
+                      variable == columns_variable_;
+    if (!same) {
+      columns_.clear();
+      moos::append_alog_columns(columns_, time_s, variable, source_);
+      columns_time_s_ = time_s;
+      columns_variable_.assign(variable.data(), variable.size());
+    }
+    buffer_.append(columns_);
+  }
+
   void flush() {
     out_.write(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
     buffer_.clear();
@@ -146,6 +164,9 @@ class Writer {
   std::ostream& err_;
   std::string source_;
   std::string buffer_;
+  std::string columns_;  // the columns of the last line written, for columns_time_s_ and ...
+  double columns_time_s_ = std::numeric_limits<double>::quiet_NaN();  // (never equal at first)
+  std::string columns_variable_;  // ... columns_variable_
 };
 
 // A guard against a mistyped --until (1e12 s at 4 Hz would never finish).
@@ -209,7 +230,7 @@ int run(const Options& options, std::ostream& out, std::ostream& err) {
     err << "hazard_replay: seeds " << options.seeds->first << ".." << options.seeds->last
         << ", AppTick " << base::fmt(tick_hz) << " Hz\n";
     for (std::uint64_t seed = options.seeds->first;; ++seed) {
-      hazard::Driver seeded(built.with_seed({seed, hazard::SeedSource::kCommandLine}));
+      hazard::Driver seeded(study_engine(built, seed));
       out << seed_summary_json(seed, count_reports(seeded, timeline), score) << "\n";
       if (seed == options.seeds->last) break;
     }

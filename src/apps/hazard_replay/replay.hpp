@@ -75,6 +75,11 @@ struct SeedCounts {
   std::uint64_t classifications = 0;
 };
 
+/// The engine one seed of a study runs: `built` with `seed`, building no posting text the JSON
+/// line does not read (hazard::PostingReaders::kReportCounts: no visuals); its reports, and so
+/// the line, are those of the same seed's .alog replay.
+hazard::Engine study_engine(const hazard::Engine& built, std::uint64_t seed);
+
 /// Replays `timeline` through `driver`, counting its reports (seeds.cpp).
 SeedCounts count_reports(hazard::Driver& driver, const Timeline& timeline);
 

@@ -13,6 +13,11 @@ constexpr const char* kHazardReport = "UHZ_HAZARD_REPORT";
 
 }  // namespace
 
+hazard::Engine study_engine(const hazard::Engine& built, std::uint64_t seed) {
+  return built.with_seed({seed, hazard::SeedSource::kCommandLine},
+                         hazard::PostingReaders::kReportCounts);
+}
+
 SeedCounts count_reports(hazard::Driver& driver, const Timeline& timeline) {
   SeedCounts counts;
   replay(driver, timeline, [&](const hazard::TimedOutputs& t) {

@@ -113,9 +113,12 @@ Parsed<NodeReport> parse_node_report(std::string_view text) {
   return parse_node_report(text, nullptr);
 }
 
-Parsed<NodeReport> parse_node_report(std::string_view text, const GeoPlacement* placement) {
+// The report is built in its place in the result (ten a second per vehicle: not moved out).
+Parsed<NodeReport> parse_node_report(std::string_view text, const GeoPlacement* placement,
+                                     NodeReportKeep keep) {
   const NodeFields f(text);
-  NodeReport r;
+  Parsed<NodeReport> result;
+  NodeReport& r = result.value.emplace();
   std::string error;
   if (!detail::valid_vehicle_name("NAME", f.name, error)) return Parsed<NodeReport>::fail(error);
   r.name.assign(f.name->data(), f.name->size());
@@ -153,11 +156,12 @@ Parsed<NodeReport> parse_node_report(std::string_view text, const GeoPlacement* 
   r.heading_deg = base::norm360(*hdg);
   const std::string why = out_of_range(f, {r.x_m, r.y_m}, r.speed_mps, spd_text.value_or(""));
   if (!why.empty()) return Parsed<NodeReport>::fail(why);
+  if (keep == NodeReportKeep::kPose) return result;  // nothing below can reject the report
   r.lat_deg = optional_number(f.lat);
   r.lon_deg = optional_number(f.lon);
   r.time_s = optional_number(f.time);
-  if (f.type && !f.type->empty()) r.type = std::string(*f.type);
-  return Parsed<NodeReport>::ok(std::move(r));
+  if (f.type && !f.type->empty()) r.type.emplace(f.type->data(), f.type->size());
+  return result;
 }
 
 std::string format_node_report(const NodeReport& r) {

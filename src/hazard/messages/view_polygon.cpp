@@ -34,10 +34,14 @@ std::string format_view_polygon(const ViewPolygon& p) {
   out.reserve(160 + 24 * p.points.size() + p.label.size() + p.msg.size());
   out += "pts=";
   detail::append_points(out, p.points, 1);
-  if (!p.label.empty()) detail::append_field(out, "label", p.label);
-  if (!p.msg.empty()) detail::append_field(out, "msg", p.msg);
-  if (!p.edge_color.empty()) detail::append_field(out, "edge_color", p.edge_color);
-  if (!p.fill_color.empty()) detail::append_field(out, "fill_color", p.fill_color);
+  // ",key=" as one literal: `out` is not empty here (detail::append_field's one question).
+  const auto field = [&out](const char* comma_key_equals, const std::string& value) {
+    if (!value.empty()) out.append(comma_key_equals).append(value);
+  };
+  field(",label=", p.label);
+  field(",msg=", p.msg);
+  field(",edge_color=", p.edge_color);
+  field(",fill_color=", p.fill_color);
   out += ",vertex_size=";
   base::append_fmt(out, p.vertex_size, 1);
   out += ",edge_size=";

@@ -7,7 +7,9 @@
 
 #include "base/text.hpp"
 #include "hazard/messages/node_report.hpp"
+#include "replay.hpp"
 #include "replay_support.hpp"
+#include "scenario/config_text.hpp"
 
 namespace hazard_replay {
 namespace {
@@ -147,6 +149,59 @@ TEST(ReplaySeeds, ScoreWithoutAReportOrAMetricBlock) {
   const auto no_seeds = testing::run(dir, {"m.moos", "in.alog", "--score"});
   EXPECT_EQ(no_seeds.exit_code, 2);
   EXPECT_NE(no_seeds.err.find("--score needs --seeds=A..B"), std::string::npos) << no_seeds.err;
+}
+
+// The study builds no posting text its line does not read: its engine posts no VIEW_* at all,
+// where the .alog replay's engine (the same mission and seed) draws swaths and circles, and it
+// posts the same reports.
+TEST(ReplaySeeds, StudyEngineBuildsNoVisualsAndTheSameReports) {
+  std::string block = "sensor_config = width=25, exp=4, pclass=0.7\nshow_detections = 30\n"
+                      "min_classify_interval = 0\n";
+  for (int i = 0; i < 20; ++i) {
+    block += "hazard = x=" + std::to_string(i * 10) + ",y=5,label=o" + std::to_string(i) +
+             (i % 2 ? ",type=hazard\n" : ",type=benign\n");
+  }
+  const hazard::Engine built(
+      hazard::load_configuration(hazard::config_entries(block, "m.moos"),
+                                 [](const std::string&) { return std::nullopt; }),
+      hazard::SeedChoice{});
+  std::vector<std::pair<std::string, std::string>> texts;  // the mail's storage
+  for (int k = 0; k <= 150; ++k) {
+    texts.push_back({"NODE_REPORT", "NAME=v,X=" + std::to_string(k * 1.5 - 10) +
+                                        ",Y=0,SPD=1.5,HDG=90"});
+    for (int i = 0; i < 20; ++i)
+      texts.push_back({"UHZ_CLASSIFY_REQUEST", "vname=v,label=o" + std::to_string(i)});
+  }
+  std::vector<hazard::Mail> mail = {{"UHZ_SENSOR_REQUEST", "vname=v", 0.0}};
+  for (std::size_t n = 0; n < texts.size(); ++n)
+    mail.push_back({texts[n].first, texts[n].second, static_cast<double>(n / 21)});
+  const Timeline timeline{&mail, 0.0, 160.0, 4.0};
+  struct Seen {
+    int visuals = 0;
+    std::string reports;
+  };
+  const auto play = [&](hazard::Engine engine) {
+    hazard::Driver driver(std::move(engine));
+    Seen seen;
+    replay(driver, timeline, [&](const hazard::TimedOutputs& t) {
+      for (const hazard::Posting& p : t.outputs.postings) {
+        if (base::starts_with(p.variable, "VIEW_")) {
+          ++seen.visuals;
+        } else {
+          seen.reports += p.variable + "=" + p.value + "\n";
+        }
+      }
+    });
+    return seen;
+  };
+  for (std::uint64_t seed = 3; seed <= 5; ++seed) {
+    const Seen alog = play(built.with_seed({seed, hazard::SeedSource::kCommandLine}));
+    const Seen study = play(study_engine(built, seed));
+    EXPECT_GT(alog.visuals, 600);  // a swath per iteration, circles per report
+    EXPECT_EQ(study.visuals, 0);
+    EXPECT_EQ(study.reports, alog.reports);
+    EXPECT_NE(alog.reports.find("UHZ_HAZARD_REPORT="), std::string::npos);
+  }
 }
 
 }  // namespace

@@ -46,6 +46,37 @@ TEST(NodeReportMessage, MalformedFieldsAreNamed) {
             "field 'SPD' value 'fast' is not a finite number");
 }
 
+// The engine's parse (kPose) keeps only the name and the pose, and decides every text as the
+// full parse does: the same acceptance, error, name and pose.
+TEST(NodeReportMessage, PoseOnlyParseDecidesAsTheFullParse) {
+  const GeoPlacement none;
+  for (const char* text :
+       {"NAME=archie,X=10,Y=-5,LAT=43.8,LON=-70.3,SPD=1.5,HDG=90,TIME=123,TYPE=kayak",
+        "NAME=v1,X=-9997.20,Y=-9900.0,SPD=1.5,HDG=90,TYPE=kayak,TIME=1700000000.100,LENGTH=4",
+        "NAME=a,X=1,Y=2,SPD=1,HDG=0,LAT=junk,TIME=soon,TYPE=", "name=b,x=1,y=2,speed=3,heading=-90",
+        "NAME=a,X=1,Y=2,HDG=0", "NAME=a,X=1,Y=2,SPD=fast,HDG=0", "NAME=a,X=1e9,Y=2,SPD=1,HDG=0",
+        "NAME=a,X=1,Y=2,SPD=-1,HDG=0", "NAME=archie,LAT=43.8,LON=-70.3,SPD=1.5,HDG=90", ""}) {
+    const auto all = parse_node_report(text, &none, NodeReportKeep::kAll);
+    const auto pose = parse_node_report(text, &none, NodeReportKeep::kPose);
+    EXPECT_EQ(all.error, pose.error) << text;
+    ASSERT_EQ(all.value.has_value(), pose.value.has_value()) << text;
+    if (!pose.value) continue;
+    EXPECT_EQ(pose.value->name, all.value->name);
+    EXPECT_EQ(pose.value->x_m, all.value->x_m);
+    EXPECT_EQ(pose.value->y_m, all.value->y_m);
+    EXPECT_EQ(pose.value->speed_mps, all.value->speed_mps);
+    EXPECT_EQ(pose.value->heading_deg, all.value->heading_deg);
+    EXPECT_FALSE(pose.value->lat_deg || pose.value->lon_deg || pose.value->time_s ||
+                 pose.value->type)
+        << text;
+  }
+  const auto kept = parse_node_report(
+      "NAME=archie,X=10,Y=-5,LAT=43.8,LON=-70.3,SPD=1.5,HDG=90,TIME=123,TYPE=kayak");
+  ASSERT_TRUE(kept) << kept.error;
+  EXPECT_EQ(kept.value->time_s, 123);  // the default keeps them all
+  EXPECT_EQ(kept.value->type, "kayak");
+}
+
 TEST(NodeReportMessage, RoundTrip) {
   NodeReport r;
   r.name = "betty";
