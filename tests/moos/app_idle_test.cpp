@@ -1,6 +1,8 @@
 // IdleAppTick (ours, opt-in; include/moos/app.hpp, src/moos/app_idle.cpp): a quiet app skips
 // AppTick slots, mail ends the skipping at the slot it would have had, every cycle stays on the
-// AppTick grid, and without the option every slot is a cycle.
+// AppTick grid, and without the option every slot is a cycle. After each cycle an app tells its
+// comms when it will fetch again (Comms::expect_fetch_within), so a TcpClient can leave reading
+// to it (issue 14); while it skips slots it promises nothing, so mail still wakes it.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -200,6 +202,64 @@ TEST(SystemClockSleep, MailEndsASleepUnlessWokenEarly) {
   poster.join();
   EXPECT_LT(slept_s, 15.0);  // woken by the mail, not by the 30-s deadline
   EXPECT_TRUE(wake.pending());
+}
+
+/// A connected Comms at warp 2 that takes every posting and records the promised fetches.
+class PromiseRecorder final : public Comms {
+ public:
+  static constexpr double kWarp = 2.0;
+  PromiseRecorder() : Comms("pQuiet") {}
+  bool is_connected() const override { return true; }
+  std::uint64_t connection_count() const override { return 1; }
+  std::string community() const override { return "alpha"; }
+  Clock& clock() const override { return clock_; }
+  double time_warp() const override { return kWarp; }
+  double skew_s() const override { return 0.0; }
+  std::vector<Message> fetch() override { return {}; }
+  void expect_fetch_within(double real_s) override { promises.push_back(real_s); }
+
+  std::vector<double> promises;
+
+ protected:
+  bool transmit(Message) override { return true; }
+
+ private:
+  mutable ManualClock clock_{kT0};
+};
+
+/// Runs `app` on a PromiseRecorder for `moos_s` and returns the promises it made.
+std::vector<double> promises_of(QuietApp& app, std::optional<double> idle_app_tick_hz,
+                                double moos_s) {
+  PromiseRecorder comms;
+  AppSettings s = quiet_settings(idle_app_tick_hz);
+  s.time_warp = PromiseRecorder::kWarp;
+  EXPECT_TRUE(app.start(comms, s));
+  app.run_for(moos_s);
+  return comms.promises;
+}
+
+constexpr double kPeriod_real_s = 1.0 / kAppTickHz / PromiseRecorder::kWarp;
+
+TEST(AppFetchPromise, EveryCyclePromisesTheNextSlotInRealSeconds_Issue14) {
+  QuietApp app;
+  const auto promises = promises_of(app, std::nullopt, 5.0);
+  ASSERT_EQ(promises.size(), 21u);  // one per cycle: 0, 0.25, ..., 5
+  for (double p : promises) EXPECT_NEAR(p, kPeriod_real_s, 1e-9);
+}
+
+TEST(AppFetchPromise, AnAppThatSkipsSlotsPromisesNothing_Issue14) {
+  QuietApp app;  // quiet for ever: cycles every 2 MOOS s
+  const auto promises = promises_of(app, 0.5, 5.0);
+  ASSERT_EQ(promises.size(), 3u);  // 0, 2, 4
+  for (double p : promises) EXPECT_EQ(p, 0.0);
+}
+
+TEST(AppFetchPromise, AnIdleTickAppThatIsNeverQuietStillPromises_Issue14) {
+  QuietApp app;
+  app.quiet_until = 0.0;  // quiet_until_moos_s returns now: never quiet
+  const auto promises = promises_of(app, 0.5, 1.0);
+  ASSERT_EQ(promises.size(), 5u);
+  for (double p : promises) EXPECT_NEAR(p, kPeriod_real_s, 1e-9);
 }
 
 }  // namespace

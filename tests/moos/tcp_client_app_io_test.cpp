@@ -45,6 +45,13 @@ class TcpClientAppIo : public TcpClientTest {
     ASSERT_NO_FATAL_FAILURE(connect(client));
     ASSERT_TRUE(server.read_packet().has_value());
   }
+  /// connect_and_settle, counting the comms thread's mail announcements in `announced`.
+  void connect_counting_mail(TcpClient& client) {
+    client.set_on_mail([this] { ++announced; });
+    ASSERT_NO_FATAL_FAILURE(connect_and_settle(client));
+  }
+  std::atomic<int> announced{0};
+
   /// A settling pause: long enough for the comms thread to act on a wake, far shorter than the
   /// TIMING interval.
   static void settle() { std::this_thread::sleep_for(std::chrono::milliseconds(100)); }
@@ -52,9 +59,7 @@ class TcpClientAppIo : public TcpClientTest {
 
 TEST_F(TcpClientAppIo, AfterAPromiseTheCommsThreadLeavesTheMailToFetch_Issue14) {
   TcpClient client(uncorrected());
-  std::atomic<int> announced{0};
-  client.set_on_mail([&] { ++announced; });
-  ASSERT_NO_FATAL_FAILURE(connect_and_settle(client));
+  ASSERT_NO_FATAL_FAILURE(connect_counting_mail(client));
   client.expect_fetch_within(30.0);
   settle();
   server.send({mail("A", 1.0)});
@@ -68,9 +73,7 @@ TEST_F(TcpClientAppIo, AfterAPromiseTheCommsThreadLeavesTheMailToFetch_Issue14) 
 
 TEST_F(TcpClientAppIo, WithoutAPromiseTheCommsThreadReadsAndAnnouncesMail_Issue14) {
   TcpClient client(uncorrected());
-  std::atomic<int> announced{0};
-  client.set_on_mail([&] { ++announced; });
-  ASSERT_NO_FATAL_FAILURE(connect_and_settle(client));
+  ASSERT_NO_FATAL_FAILURE(connect_counting_mail(client));
   client.expect_fetch_within(30.0);
   client.expect_fetch_within(0.0);  // withdrawn, e.g. before an idle sleep that mail must end
   settle();
@@ -83,9 +86,7 @@ TEST_F(TcpClientAppIo, WithoutAPromiseTheCommsThreadReadsAndAnnouncesMail_Issue1
 
 TEST_F(TcpClientAppIo, ABrokenPromiseEndsAfterTheGrace_Issue14) {
   TcpClient client(uncorrected());
-  std::atomic<int> announced{0};
-  client.set_on_mail([&] { ++announced; });
-  ASSERT_NO_FATAL_FAILURE(connect_and_settle(client));
+  ASSERT_NO_FATAL_FAILURE(connect_counting_mail(client));
   const double promised_at = steady_now_s();
   client.expect_fetch_within(0.01);  // and never fetches
   settle();
