@@ -188,41 +188,31 @@ Result measure(const Options& o, const std::string& db_program, const std::strin
   return r;
 }
 
+const moos::SwitchTable& switch_table() {
+  using moos::SwitchKind;
+  using moos::switch_rule;
+  static const moos::SwitchTable table = bench::bench_switch_table({
+      switch_rule("--moosdb", SwitchKind::kText, "a program"),
+      switch_rule("--reference", SwitchKind::kText, "a program"),
+      switch_rule("--messages", SwitchKind::kInteger, "a whole number in [1, 1e8]", {1, 1e8}),
+      switch_rule("--window", SwitchKind::kInteger, "a whole number in [1, 1e8]", {1, 1e8}),
+      switch_rule("--rate", SwitchKind::kNumber, "a number in (0, 1e6]", {0, 1e6, true, false}),
+      switch_rule("--seconds", SwitchKind::kNumber, "a number in (0, 3600]", {0, 3600, true, false}),
+      switch_rule("--work-dir", SwitchKind::kText, "a folder")});
+  return table;
+}
+
 std::optional<Options> parse(int argc, char** argv) {
+  const auto v = bench::read_switches("moosdb_bench", argc, argv, switch_table(), kHelp);
+  if (!v) return std::nullopt;
   Options o;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    const auto eq = arg.find('=');
-    const std::string name = arg.substr(0, eq);
-    const std::string value = eq == std::string::npos ? "" : arg.substr(eq + 1);
-    const auto number = base::parse_number(value);
-    const auto whole = base::parse_integer(value, 1, 100000000);
-    bool ok = true;
-    if (name == "--help" || name == "-h") {
-      std::cout << kHelp;
-      std::exit(0);
-    } else if (name == "--moosdb" && !value.empty()) {
-      o.moosdb = value;
-    } else if (name == "--reference" && !value.empty()) {
-      o.reference = value;
-    } else if (name == "--messages" && whole) {
-      o.messages = *whole;
-    } else if (name == "--window" && whole) {
-      o.window = *whole;
-    } else if (name == "--rate" && number && *number > 0 && *number <= 1e6) {
-      o.rate_hz = *number;
-    } else if (name == "--seconds" && number && *number > 0 && *number <= 3600) {
-      o.seconds = *number;
-    } else if (name == "--work-dir" && !value.empty()) {
-      o.work_dir = value;
-    } else {
-      ok = false;
-    }
-    if (!ok) {
-      std::cerr << "moosdb_bench: bad argument '" << base::excerpt(arg, 80) << "' (see --help)\n";
-      return std::nullopt;
-    }
-  }
+  if (const auto text = v->text("--moosdb")) o.moosdb = *text;
+  if (const auto text = v->text("--reference")) o.reference = *text;
+  if (const auto n = v->integer("--messages")) o.messages = *n;
+  if (const auto n = v->integer("--window")) o.window = *n;
+  if (const auto hz = v->number("--rate")) o.rate_hz = *hz;
+  if (const auto s = v->number("--seconds")) o.seconds = *s;
+  if (const auto text = v->text("--work-dir")) o.work_dir = *text;
   o.moosdb = bench::absolute_program(o.moosdb);
   o.reference = bench::absolute_program(o.reference);
   return o;

@@ -14,6 +14,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <iterator>
 #include <limits>
 #include <thread>
@@ -103,6 +104,36 @@ std::optional<ProcUsage> read_proc_usage(pid_t pid) {
   usage.rss_kb = *rss;
   usage.hwm_kb = *hwm;
   return usage;
+}
+
+moos::SwitchTable bench_switch_table(std::vector<moos::SwitchRule> rules) {
+  moos::SwitchTable t;
+  t.rules = std::move(rules);
+  t.rules.push_back(moos::help_switch_rule());
+  t.bad_value = [](const std::string& arg, const moos::SwitchRule& r) {
+    return r.name + " needs " + r.problem + ": '" + base::excerpt(arg, 80) + "'";
+  };
+  t.unknown = [](const std::string& arg) {
+    return "unknown argument '" + base::excerpt(arg, 80) + "'";
+  };
+  return t;
+}
+
+std::optional<moos::SwitchValues> read_switches(const char* program, int argc, char** argv,
+                                                const moos::SwitchTable& table,
+                                                const char* help) {
+  moos::SwitchValues v =
+      moos::parse_switches(std::vector<std::string>(argv + 1, argv + argc), table);
+  if (v.has("--help")) {
+    std::cout << help;
+    std::exit(0);
+  }
+  std::string problem = v.errors.empty() ? "" : v.errors.front();
+  if (problem.empty() && !v.free.empty())
+    problem = "unexpected argument '" + base::excerpt(v.free.front(), 80) + "'";
+  if (problem.empty()) return v;
+  std::cerr << program << ": " << problem << " (see --help)\n";
+  return std::nullopt;
 }
 
 double percentile(std::vector<double> values, double fraction) {

@@ -23,6 +23,8 @@
 #include <string_view>
 #include <vector>
 
+#include "moos/command_line.hpp"
+
 namespace bench {
 
 /// Seconds on a monotonic clock.
@@ -44,6 +46,14 @@ struct ProcUsage {
 };
 /// Reads /proc/<pid>; nullopt if the process is gone.
 std::optional<ProcUsage> read_proc_usage(pid_t pid);
+
+/// A benchmark's switch table: `rules` and --help, with one wording of refused arguments.
+moos::SwitchTable bench_switch_table(std::vector<moos::SwitchRule> rules);
+/// Reads argv with `table`. --help prints `help` and exits 0; the first refused argument (or a
+/// free one) is printed as "PROGRAM: problem (see --help)" and gives nullopt.
+std::optional<moos::SwitchValues> read_switches(const char* program, int argc, char** argv,
+                                                const moos::SwitchTable& table,
+                                                const char* help);
 
 /// Nearest-rank percentile of `values` (copied and sorted); NaN if empty.
 double percentile(std::vector<double> values, double fraction);

@@ -77,91 +77,71 @@ struct Options {
   std::string csv;
 };
 
-std::optional<double> positive(std::string_view text) {
-  const auto v = base::parse_number(text);
-  return v && *v > 0 ? v : std::nullopt;
+const moos::SwitchTable& switch_table() {
+  using moos::SwitchKind;
+  using moos::switch_rule;
+  static const moos::SwitchTable table = [] {
+    const std::string positive = "a number above 0";
+    return bench::bench_switch_table({
+        switch_rule("--objects", SwitchKind::kInteger, "a whole number in [1, 1000000]", {1, 1e6}),
+        switch_rule("--vehicles", SwitchKind::kInteger, "a whole number in [0, 1000]", {0, 1000}),
+        switch_rule("--warp", SwitchKind::kNumber, "a number in (0, 400]", {0, 400, true, false}),
+        switch_rule("--duration", SwitchKind::kNumber, positive, moos::kPositive),
+        switch_rule("--report-hz", SwitchKind::kNumber, positive, moos::kPositive),
+        switch_rule("--request-hz", SwitchKind::kNumber, positive, moos::kPositive),
+        switch_rule("--app-tick", SwitchKind::kNumber, positive, moos::kPositive),
+        switch_rule("--idle-app-tick", SwitchKind::kNumber, positive, moos::kPositive),
+        switch_rule("--area-per-object", SwitchKind::kNumber, positive, moos::kPositive),
+        switch_rule("--startup-timeout", SwitchKind::kNumber, positive, moos::kPositive),
+        switch_rule("--config-every", SwitchKind::kNumber, positive, moos::kPositive),
+        switch_rule("--classify-every", SwitchKind::kNumber, positive, moos::kPositive),
+        switch_rule("--drain", SwitchKind::kNumber, positive, moos::kPositive),
+        switch_rule("--sample-every", SwitchKind::kNumber, positive, moos::kPositive),
+        switch_rule("--markers", SwitchKind::kFlag, "no value"),
+        switch_rule("--moosdb-log", SwitchKind::kText, "a file name"),
+        switch_rule("--sensor", SwitchKind::kText, "a program"),
+        switch_rule("--moosdb", SwitchKind::kText, "a program"),
+        switch_rule("--original", SwitchKind::kText, "a program or none"),
+        switch_rule("--gen-hazards", SwitchKind::kText, "a program"),
+        switch_rule("--work-dir", SwitchKind::kText, "a folder"),
+        switch_rule("--csv", SwitchKind::kText, "a file name")});
+  }();
+  return table;
 }
 
 std::optional<Options> parse(int argc, char** argv) {
+  const auto switches = bench::read_switches("process_bench", argc, argv, switch_table(), kHelp);
+  if (!switches) return std::nullopt;
+  const moos::SwitchValues& v = *switches;
   Options o;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    const auto eq = arg.find('=');
-    const std::string name = arg.substr(0, eq);
-    const std::string value = eq == std::string::npos ? "" : arg.substr(eq + 1);
-    std::optional<double> number = positive(value);
-    bool ok = true;
-    if (name == "--help" || name == "-h") {
-      std::cout << kHelp;
-      std::exit(0);
-    } else if (name == "--objects") {
-      const auto n = base::parse_integer(value, 1, 1000000);
-      ok = n.has_value();
-      if (ok) o.objects = *n;
-    } else if (name == "--vehicles") {
-      const auto n = base::parse_integer(value, 0, 1000);
-      ok = n.has_value();
-      if (ok) o.spec.vehicles = static_cast<int>(*n);
-    } else if (name == "--warp") {
-      ok = number && *number <= 400;
-      if (ok) o.spec.time_warp = *number;
-    } else if (name == "--duration") {
-      ok = number.has_value();
-      if (ok) o.spec.duration_s = *number;
-    } else if (name == "--report-hz") {
-      ok = number.has_value();
-      if (ok) o.spec.report_hz = *number;
-    } else if (name == "--request-hz") {
-      ok = number.has_value();
-      if (ok) o.spec.request_hz = *number;
-    } else if (name == "--app-tick") {
-      ok = number.has_value();
-      if (ok) o.spec.app_tick_hz = *number;
-    } else if (name == "--idle-app-tick") {
-      ok = number.has_value();
-      if (ok) o.idle_app_tick_hz = *number;
-    } else if (name == "--area-per-object") {
-      ok = number.has_value();
-      if (ok) o.area_per_object_m2 = *number;
-    } else if (name == "--startup-timeout") {
-      ok = number.has_value();
-      if (ok) o.spec.startup_timeout_real_s = *number;
-    } else if (name == "--config-every") {
-      ok = number.has_value();
-      if (ok) o.spec.config_every_s = *number;
-    } else if (name == "--classify-every") {
-      ok = number.has_value();
-      if (ok) o.spec.classify_every_s = *number;
-    } else if (name == "--drain") {
-      ok = number.has_value();
-      if (ok) o.spec.drain_s = *number;
-    } else if (name == "--sample-every") {
-      ok = number.has_value();
-      if (ok) o.spec.sample_every_s = *number;
-    } else if (name == "--moosdb-log" && !value.empty()) {
-      o.spec.moosdb_log = value;
-    } else if (arg == "--markers") {
-      o.spec.show_hazards = true;
-    } else if (name == "--sensor" && !value.empty()) {
-      o.sensor = value;
-    } else if (name == "--moosdb" && !value.empty()) {
-      o.moosdb = value;
-    } else if (name == "--original" && !value.empty()) {
-      o.original = value;
-    } else if (name == "--gen-hazards" && !value.empty()) {
-      o.gen_hazards = value;
-    } else if (name == "--work-dir" && !value.empty()) {
-      o.work_dir = value;
-    } else if (name == "--csv" && !value.empty()) {
-      o.csv = value;
-    } else {
-      ok = false;
-    }
-    if (!ok) {
-      std::cerr << "process_bench: bad argument '" << base::excerpt(arg, 80) << "' (see --help)\n";
-      return std::nullopt;
-    }
-  }
+  auto set = [&](const char* name, auto& field) {
+    if (const auto value = v.number(name)) field = *value;
+  };
+  auto set_text = [&](const char* name, std::string& field) {
+    if (const auto value = v.text(name)) field = *value;
+  };
+  if (const auto n = v.integer("--objects")) o.objects = *n;
+  if (const auto n = v.integer("--vehicles")) o.spec.vehicles = static_cast<int>(*n);
+  set("--warp", o.spec.time_warp);
+  set("--duration", o.spec.duration_s);
+  set("--report-hz", o.spec.report_hz);
+  set("--request-hz", o.spec.request_hz);
+  set("--app-tick", o.spec.app_tick_hz);
+  if (const auto hz = v.number("--idle-app-tick")) o.idle_app_tick_hz = *hz;
+  set("--area-per-object", o.area_per_object_m2);
+  set("--startup-timeout", o.spec.startup_timeout_real_s);
+  set("--config-every", o.spec.config_every_s);
+  set("--classify-every", o.spec.classify_every_s);
+  set("--drain", o.spec.drain_s);
+  set("--sample-every", o.spec.sample_every_s);
+  o.spec.show_hazards = v.has("--markers");
+  set_text("--moosdb-log", o.spec.moosdb_log);
+  set_text("--sensor", o.sensor);
+  set_text("--moosdb", o.moosdb);
+  set_text("--original", o.original);
+  set_text("--gen-hazards", o.gen_hazards);
+  set_text("--work-dir", o.work_dir);
+  set_text("--csv", o.csv);
   // The processes run in their own folders: relative program paths would break there.
   for (std::string* program : {&o.sensor, &o.moosdb, &o.gen_hazards, &o.original})
     *program = bench::absolute_program(*program);

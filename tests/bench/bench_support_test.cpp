@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <sstream>
+#include <string>
 #include <vector>
 
 namespace {
@@ -74,6 +75,33 @@ TEST(NominalTickCost, LeavesAnAppThatKeepsItsTickOrIsNotCountedAsMeasured) {
   EXPECT_DOUBLE_EQ(bench::cpu_per_h_at_nominal_tick(2.5, 3.97, 4.0), 2.5);  // within 1 %
   EXPECT_DOUBLE_EQ(bench::cpu_per_h_at_nominal_tick(2.5, -1.0, 4.0), 2.5);  // unknown
   EXPECT_DOUBLE_EQ(bench::cpu_per_h_at_nominal_tick(2.5, 0.0, 4.0), 2.5);
+}
+
+/// read_switches over `args` (argv[0] added) with a two-switch benchmark table.
+std::optional<moos::SwitchValues> read(std::vector<std::string> args) {
+  static const moos::SwitchTable table = bench::bench_switch_table(
+      {moos::switch_rule("--count", moos::SwitchKind::kInteger, "a whole number in [1, 10]",
+                         {1, 10}),
+       moos::switch_rule("--name", moos::SwitchKind::kText, "a name")});
+  args.insert(args.begin(), "bench");
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  return bench::read_switches("bench", static_cast<int>(argv.size()), argv.data(), table, "");
+}
+
+TEST(BenchSwitches, ReadTypedValues) {
+  const auto v = read({"--count=3", "--name=x"});
+  ASSERT_TRUE(v.has_value());
+  EXPECT_EQ(v->integer("--count"), 3);
+  EXPECT_EQ(v->text("--name"), "x");
+}
+
+TEST(BenchSwitches, RefuseOutOfRangeUnknownAndFreeArguments) {
+  EXPECT_FALSE(read({"--count=0"}).has_value());
+  EXPECT_FALSE(read({"--count=3.5"}).has_value());
+  EXPECT_FALSE(read({"--name"}).has_value());
+  EXPECT_FALSE(read({"--other=1"}).has_value());
+  EXPECT_FALSE(read({"stray"}).has_value());
 }
 
 TEST(Percentile, IsNearestRank) {
