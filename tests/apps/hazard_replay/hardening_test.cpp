@@ -8,22 +8,18 @@
 #include <string>
 
 #include "replay_support.hpp"
+#include "text_count.hpp"
 
 namespace hazard_replay {
 namespace {
 
+using test_support::count_of;
 using test_support::ScratchDir;
 using test_support::write_file;
 using testing::alog;
 using testing::Line;
 using testing::mission;
 using testing::run;
-
-std::size_t count_of(const std::string& text, const std::string& needle) {
-  std::size_t n = 0;
-  for (auto at = text.find(needle); at != std::string::npos; at = text.find(needle, at + 1)) ++n;
-  return n;
-}
 
 void make_mission(const ScratchDir& dir, const std::string& block, const std::string& hazards,
                   const std::vector<Line>& input) {

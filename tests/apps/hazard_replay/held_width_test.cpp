@@ -8,7 +8,6 @@
 
 #include "hazard/engine.hpp"
 #include "hazard/messages/config_ack.hpp"
-#include "hazard/messages/node_report.hpp"
 #include "replay_support.hpp"
 
 namespace hazard_replay {
@@ -20,15 +19,8 @@ using test_support::write_file;
 using testing::alog;
 using testing::Line;
 using testing::mission;
+using testing::node_report;
 using testing::run;
-
-std::string pose(const std::string& name, double y) {
-  hazard::NodeReport r;
-  r.name = name;
-  r.y_m = y;
-  r.speed_mps = 1;
-  return hazard::format_node_report(r);
-}
 
 std::string width_request(const std::string& vname) {
   return "vname=" + vname + ",width=25,pd=0.9";
@@ -49,7 +41,8 @@ TEST(ReplayHeldWidth, AMaxWidthIsHeldFromItsGrantUntil600sWithoutARequest_Issue1
                           {1.0, "UHZ_CONFIG_REQUEST", width_request("b")},
                           {hold_s - 1.0, "UHZ_CONFIG_REQUEST", width_request("c")},
                           {hold_s, "UHZ_CONFIG_REQUEST", width_request("d")}};
-  for (double t = 0.5; t <= hold_s + 1.0; t += 1.0) in.push_back({t, "NODE_REPORT", pose("a", t)});
+  for (double t = 0.5; t <= hold_s + 1.0; t += 1.0)
+    in.push_back({t, "NODE_REPORT", node_report("a", 0, t)});
   write_file(dir / "in.alog", alog(in));
 
   const auto r = run(dir, {"m.moos", "in.alog", "--seed=1"});

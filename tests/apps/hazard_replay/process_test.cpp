@@ -3,7 +3,6 @@
 
 #include <set>
 
-#include "hazard/messages/node_report.hpp"
 #include "scenario/reference_scenario.hpp"
 #include "base/text.hpp"
 #include "replay_support.hpp"
@@ -18,17 +17,8 @@ using test_support::write_file;
 using testing::alog;
 using testing::Line;
 using testing::mission;
+using testing::node_report;
 using testing::run;
-
-std::string pose(const std::string& name, double x, double y, double heading = 0) {
-  hazard::NodeReport r;
-  r.name = name;
-  r.x_m = x;
-  r.y_m = y;
-  r.speed_mps = 1;
-  r.heading_deg = heading;
-  return hazard::format_node_report(r);
-}
 
 const char* kBlock =
     "  AppTick = 4\n"
@@ -45,11 +35,11 @@ const char* kHazards =
 
 std::vector<Line> small_input() {
   return {{0.0, "UHZ_SENSOR_REQUEST", "vname=v1"},
-          {0.5, "NODE_REPORT", pose("v1", 0, -100)},
-          {2.0, "NODE_REPORT", pose("v1", 0, 0)},
+          {0.5, "NODE_REPORT", node_report("v1", 0, -100)},
+          {2.0, "NODE_REPORT", node_report("v1", 0, 0)},
           {3.0, "UHZ_CLASSIFY_REQUEST", "vname=v1,label=a"},
           {3.0, "UHZ_CLASSIFY_REQUEST", "vname=v1,label=b"},
-          {9.0, "NODE_REPORT", pose("v1", 0, 100)}};
+          {9.0, "NODE_REPORT", node_report("v1", 0, 100)}};
 }
 
 // A mission folder: m.moos beside fields/hazards.txt, and in.alog.

@@ -7,7 +7,6 @@
 #include <map>
 
 #include "hazard/dice.hpp"
-#include "hazard/messages/node_report.hpp"
 #include "hazard/sensor_model.hpp"
 #include "base/text.hpp"
 #include "replay_support.hpp"
@@ -19,6 +18,7 @@ using test_support::ScratchDir;
 using test_support::write_file;
 using testing::Line;
 using testing::mission;
+using testing::node_report;
 using testing::run;
 
 double five_sigma(double p, double n) { return 5.0 * std::sqrt(p * (1.0 - p) / n); }
@@ -32,16 +32,6 @@ std::string objects(char letter, int count, const std::string& spec, int& n) {
            ",label=" + letter + std::to_string(i) + "," + spec + "\n";
   }
   return out;
-}
-
-std::string pose(const std::string& name, double x) {
-  hazard::NodeReport r;
-  r.name = name;
-  r.x_m = x;
-  r.y_m = 0;
-  r.speed_mps = 1.5;
-  r.heading_deg = 90;
-  return hazard::format_node_report(r);
 }
 
 // W 50 to each side, 100 m long: every object at |x|, |y| <= 40 is inside at the origin.
@@ -80,8 +70,8 @@ TEST(ReplayRates, DetectionRatesEndToEnd) {
   std::vector<Line> in = {{0, "UHZ_SENSOR_REQUEST", "vname=v1"},
                           {0, "UHZ_CONFIG_REQUEST", "vname=v1,width=50,pd=0.8"}};
   for (int pass = 0; pass < kPasses; ++pass) {  // straight passes east over the field
-    in.push_back({1.0 + pass, "NODE_REPORT", pose("v1", -500)});
-    in.push_back({1.5 + pass, "NODE_REPORT", pose("v1", 0)});
+    in.push_back({1.0 + pass, "NODE_REPORT", node_report("v1", -500, 0, 90, 1.5)});
+    in.push_back({1.5 + pass, "NODE_REPORT", node_report("v1", 0, 0, 90, 1.5)});
   }
   write_file(dir / "in.alog", testing::alog(in));
   const auto r = run(dir, {"m.moos", "in.alog", "--output=out.alog"}, false);
@@ -121,10 +111,10 @@ TEST(ReplayRates, ClassificationRatesEndToEnd) {
     in.push_back({0, "UHZ_SENSOR_REQUEST", "vname=" + name});
     in.push_back({0, "UHZ_CONFIG_REQUEST", "vname=" + name + ",width=50,pd=1"});
     for (int pass = 0; pass < kPasses; ++pass) {
-      in.push_back({1.0 + pass, "NODE_REPORT", pose(name, -500)});
-      in.push_back({1.5 + pass, "NODE_REPORT", pose(name, 0)});
+      in.push_back({1.0 + pass, "NODE_REPORT", node_report(name, -500, 0, 90, 1.5)});
+      in.push_back({1.5 + pass, "NODE_REPORT", node_report(name, 0, 0, 90, 1.5)});
     }
-    in.push_back({1.0 + kPasses, "NODE_REPORT", pose(name, 500)});  // and away
+    in.push_back({1.0 + kPasses, "NODE_REPORT", node_report(name, 500, 0, 90, 1.5)});  // and away
   }
   // Detected objects are known only to the replay; ask for every object once per pass: the
   // requests without a credit (undetected resemblance objects) are refused with a warning.

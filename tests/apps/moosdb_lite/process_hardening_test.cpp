@@ -19,6 +19,7 @@
 #include "moosdb_server.hpp"
 #include "raw_client.hpp"
 #include "scratch_files.hpp"
+#include "text_count.hpp"
 #include "wire_messages.hpp"
 
 namespace moosdb_lite::test {
@@ -28,6 +29,7 @@ namespace {
 
 using moos::Message;
 using test_support::Child;
+using test_support::count_of;
 using test_support::MoosdbServer;
 using test_support::ScratchDir;
 using test_support::steady_now_s;
@@ -53,13 +55,6 @@ std::vector<Message> non_matching_filters(int first, int count) {
 
 bool contains(const std::string& text, const std::string& fragment) {
   return text.find(fragment) != std::string::npos;
-}
-
-std::size_t count_of(const std::string& text, const std::string& fragment) {
-  std::size_t n = 0;
-  for (auto at = text.find(fragment); at != std::string::npos; at = text.find(fragment, at + 1))
-    ++n;
-  return n;
 }
 
 // A client that keeps talking (a TIMING every 100 ms, replies left unread) while the server
