@@ -15,6 +15,7 @@
 #include "hazard/engine.hpp"
 #include "hazard/messages/node_report.hpp"
 #include "scenario/config_text.hpp"
+#include "scenario/node_report_text.hpp"
 #include "base/text.hpp"
 
 namespace hazard::testing {
@@ -48,17 +49,6 @@ inline std::string quiet_block(std::string_view extra = {}) {
          "show_hazards = false\n"
          "show_detections = 0\n" +
          std::string(extra);
-}
-
-inline std::string node_report(std::string name, double x, double y, double heading_deg = 0.0,
-                               double speed_mps = 1.0) {
-  NodeReport r;
-  r.name = std::move(name);
-  r.x_m = x;
-  r.y_m = y;
-  r.heading_deg = heading_deg;
-  r.speed_mps = speed_mps;
-  return format_node_report(r);
 }
 
 inline std::vector<std::string> values_of(const Outputs& out, std::string_view variable) {

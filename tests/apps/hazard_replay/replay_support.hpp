@@ -8,11 +8,13 @@
 
 #include "alog_files.hpp"
 #include "child_process.hpp"
-#include "hazard/messages/node_report.hpp"
 #include "moos/alog.hpp"
+#include "scenario/node_report_text.hpp"
 #include "scratch_files.hpp"
 
 namespace hazard_replay::testing {
+
+using hazard::testing::node_report;
 
 /// Bound on one run: far above the few seconds the largest statistical run takes, only to stop
 /// a hang.
@@ -27,18 +29,6 @@ inline test_support::RunResult run(const test_support::ScratchDir& dir,
   options.working_dir = dir.path().string();
   options.keep_output = keep_streams;
   return test_support::run_program(HAZARD_REPLAY_PATH, args, kRunDeadline_s, options);
-}
-
-/// A NODE_REPORT's text for a vehicle at (x, y).
-inline std::string node_report(const std::string& name, double x_m, double y_m,
-                               double heading_deg = 0, double speed_mps = 1) {
-  hazard::NodeReport r;
-  r.name = name;
-  r.x_m = x_m;
-  r.y_m = y_m;
-  r.speed_mps = speed_mps;
-  r.heading_deg = heading_deg;
-  return hazard::format_node_report(r);
 }
 
 /// A ProcessConfig block.
