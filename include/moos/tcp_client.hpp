@@ -16,7 +16,9 @@
 //   max(server delay from the last TIMING echo, warp x tw_delay_factor ms) since the previous
 //   send (4.3 step 4). A TIMING message (own local time, spec 2.6) leads the next packet when
 //   kTimingInterval_real_s has passed since the last one, and is sent alone while idle, so an
-//   idle client sends one at least once per second (4.6). Packets are never empty.
+//   idle client sends one at least once per second (4.6); while the app's thread sends packets
+//   itself, the comms thread waits kAppTimingSlack_real_s longer, so the TIMING rides in the
+//   app's next packet. Packets are never empty.
 // - Receiving: a TIMING at the head of a packet is consumed and refines the skew (4.4); TIMING
 //   messages elsewhere and NULL messages anywhere are dropped; everything else, `~` data types
 //   included, goes to the inbox in arrival order. A framing or decoding error closes the
@@ -27,7 +29,8 @@
 //   kAppReadGrace_real_s (except while a TIMING echo is awaited, so the skew stays exact), so an
 //   app cycling with steady mail wakes one thread per cycle, not two per packet. The comms
 //   thread still does everything when the app does not cycle, and is the only one that drops a
-//   connection: a failure the app's thread meets is handed to it.
+//   connection: a failure the app's thread meets is handed to it. Mail left unread when the
+//   app stops makes the close a reset, which the server may log as one.
 // - Deviations from libMOOS, deliberate: the inbox is kept across a reconnect (libMOOS clears it,
 //   losing mail that had arrived); the inbox is bounded by max_inbox_messages and
 //   max_inbox_bytes and, when either is reached, the OLDEST unread mail is dropped and counted
