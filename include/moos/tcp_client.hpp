@@ -168,6 +168,7 @@ class TcpClient final : public Comms {
     double wait_real_s = 0;
   };
   PollPlan plan_poll(double now);
+  /// True while the input is left to the promised fetch (io_mutex_ held).
   bool app_reads(double now) const;
   void drop_connection(const std::string& why);
   /// A socket failure: dropped at once on the comms thread; from the app's thread handed to the
@@ -215,7 +216,9 @@ class TcpClient final : public Comms {
   std::optional<double> last_app_send_;     // steady seconds of the app thread's last packet
   bool awaiting_timing_echo_ = false;  // a TIMING went out and its echo has not come back
   bool time_correction_ = true;
-  std::string app_io_failure_;  // a failure met on the app's thread, for the comms thread to drop
+  // A failure met on the app's thread, for the comms thread to drop. The app's thread reads it
+  // only once it saw the client connected: a failed handshake clears it without io_mutex_.
+  std::string app_io_failure_;
   bool new_mail_ = false;  // the inbox grew under this hold of io_mutex_: announce it after
   std::atomic<double> app_reads_until_{0};  // steady s: reading left to fetch() until then
 

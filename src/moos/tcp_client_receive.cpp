@@ -39,7 +39,7 @@ void TcpClient::read_for_app() {
   // Without a promise the comms thread reads everything as it arrives: nothing is left here.
   if (steady_now_s() >= app_reads_until_.load()) return;
   std::unique_lock<std::mutex> io(io_mutex_, std::try_to_lock);
-  if (!io.owns_lock() || !app_io_failure_.empty() || !is_connected()) return;
+  if (!io.owns_lock() || !is_connected() || !app_io_failure_.empty()) return;
   read_available();  // a failure is handed to the comms thread
   new_mail_ = false;  // the caller is fetching it now: nothing to announce
 }

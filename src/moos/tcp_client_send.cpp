@@ -48,7 +48,7 @@ void TcpClient::release_sends() {
 
 bool TcpClient::send_for_app() {
   std::unique_lock<std::mutex> io(io_mutex_, std::try_to_lock);
-  if (!io.owns_lock() || !app_io_failure_.empty() || !is_connected()) return false;
+  if (!io.owns_lock() || !is_connected() || !app_io_failure_.empty()) return false;
   const double now = steady_now_s();
   if (!start_packet_if_due(now)) return false;
   last_app_send_ = now;
