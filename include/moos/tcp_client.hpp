@@ -182,6 +182,12 @@ class TcpClient final : public Comms {
   /// The app's thread reads / sends for itself when the comms thread is not busy doing it.
   void read_for_app();
   bool send_for_app();
+  /// io_mutex_ for the app's thread: owned only when it was free and the connection is usable
+  /// (connected, no failure handed over yet).
+  std::unique_lock<std::mutex> lock_io_for_app();
+  /// The comms thread's reading: `read` (process_buffered or read_available) under io_mutex_,
+  /// then, with the lock released, the on-mail callback if the inbox grew. `read`'s result.
+  bool read_and_announce(bool (TcpClient::*read)());
   /// Drops the oldest unread mail until the inbox is within 3/4 of its bounds (mutex held); a
   /// bulk drop keeps the cost of a flood linear.
   void enforce_inbox_bounds();
@@ -217,7 +223,8 @@ class TcpClient final : public Comms {
   bool awaiting_timing_echo_ = false;  // a TIMING went out and its echo has not come back
   bool time_correction_ = true;
   // A failure met on the app's thread, for the comms thread to drop. The app's thread reads it
-  // only once it saw the client connected: a failed handshake clears it without io_mutex_.
+  // only once it saw the client connected (lock_io_for_app): a failed handshake clears it
+  // without io_mutex_.
   std::string app_io_failure_;
   bool new_mail_ = false;  // the inbox grew under this hold of io_mutex_: announce it after
   std::atomic<double> app_reads_until_{0};  // steady s: reading left to fetch() until then

@@ -47,14 +47,14 @@ std::optional<std::size_t> clipped_count(const ConfigLine& line, long long lo, l
   const auto n = base::parse_integer(line.value, std::numeric_limits<long long>::min(),
                                      std::numeric_limits<long long>::max());
   if (!n) {
-    s.config_warnings.push_back("Invalid " + base::to_upper(line.key) + ": " + base::log_excerpt(line.value) +
-                                place(line));
+    s.config_warnings.push_back("Invalid " + base::to_upper(line.key) + ": " +
+                                base::log_excerpt(line.value) + place(line));
     return std::nullopt;
   }
   const long long clipped = std::clamp(*n, lo, hi);
   if (clipped != *n)
-    s.config_warnings.push_back(base::to_upper(line.key) + " " + base::log_excerpt(line.value) + " clipped to " +
-                                std::to_string(clipped) + place(line));
+    s.config_warnings.push_back(base::to_upper(line.key) + " " + base::log_excerpt(line.value) +
+                                " clipped to " + std::to_string(clipped) + place(line));
   return static_cast<std::size_t>(clipped);
 }
 
@@ -130,7 +130,8 @@ void apply_block(const ProcessBlock& block, const AppTraits& traits, AppSettings
       chosen.push_back(&line);
     } else if (traits.repeated_parameters == RepeatedParameter::kLastWinsWithWarning) {
       s.config_warnings.push_back(base::log_excerpt(line.key) + " repeated" + place(line) +
-                                  ": the last value, " + base::log_excerpt(line.value) + ", is used");
+                                  ": the last value, " + base::log_excerpt(line.value) +
+                                  ", is used");
       *same = &line;
     }
   }
@@ -147,20 +148,22 @@ void apply_globals(const MissionFile& mission, AppSettings& s) {
     if (auto p = base::parse_integer(base::remove_blanks(port->value), 1, kMaxPort))
       s.server_port = static_cast<int>(*p);
     else
-      s.config_warnings.push_back("Invalid ServerPort: " + base::log_excerpt(port->value) + place(*port));
+      s.config_warnings.push_back("Invalid ServerPort: " + base::log_excerpt(port->value) +
+                                  place(*port));
   }
   if (const ConfigLine* warp = mission.global_line("MOOSTimeWarp")) {
     if (const auto w = parse_time_warp(base::remove_blanks(warp->value)))
       s.time_warp = *w;
     else
-      s.config_warnings.push_back("Invalid MOOSTimeWarp: " + base::log_excerpt(warp->value) + place(*warp));
+      s.config_warnings.push_back("Invalid MOOSTimeWarp: " + base::log_excerpt(warp->value) +
+                                  place(*warp));
   }
   if (const ConfigLine* term = mission.global_line("TERM_REPORTING")) {
     if (auto b = base::parse_bool(term->value))
       s.term_reporting = *b;
     else
-      s.config_warnings.push_back("Invalid value for TERM_REPORTING: " + base::log_excerpt(term->value) +
-                                  place(*term));
+      s.config_warnings.push_back("Invalid value for TERM_REPORTING: " +
+                                  base::log_excerpt(term->value) + place(*term));
   }
 }
 
@@ -479,7 +482,8 @@ void MoosApp::report_config_warning(const std::string& text) {
 }
 
 void MoosApp::report_unhandled_config_line(const ConfigLine& line) {
-  report_config_warning("Unhandled config line: " + base::log_excerpt(line.key) + "=" + base::log_excerpt(line.value));
+  report_config_warning("Unhandled config line: " + base::log_excerpt(line.key) + "=" +
+                        base::log_excerpt(line.value));
 }
 
 void MoosApp::report_run_warning(const std::string& text) {

@@ -480,15 +480,8 @@ TcpClient::PollPlan TcpClient::plan_poll(double now) {
 }
 
 void TcpClient::serve() {
-  bool ok = true;
-  bool mail = false;
-  {
-    // Bytes that followed WELCOME in the same segment belong to normal traffic (spec 5.1a).
-    std::lock_guard<std::mutex> io(io_mutex_);
-    ok = process_buffered();
-    mail = std::exchange(new_mail_, false);
-  }
-  if (mail) fire_on_mail();
+  // Bytes that followed WELCOME in the same segment belong to normal traffic (spec 5.1a).
+  bool ok = read_and_announce(&TcpClient::process_buffered);
   while (ok && !stopping_) {
     pollfd p[2] = {{-1, 0, 0}, {wake_read_, POLLIN, 0}};
     double wait = 0;
@@ -512,14 +505,8 @@ void TcpClient::serve() {
       return;
     }
     if (p[1].revents & POLLIN) drain_wake_pipe(wake_read_);
-    if (p[0].revents & (POLLIN | POLLERR | POLLHUP)) {
-      {
-        std::lock_guard<std::mutex> io(io_mutex_);
-        ok = read_available();
-        mail = std::exchange(new_mail_, false);
-      }
-      if (mail) fire_on_mail();
-    }
+    if (p[0].revents & (POLLIN | POLLERR | POLLHUP))
+      ok = read_and_announce(&TcpClient::read_available);
   }
 }
 

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <utility>
 
 #include "moos/tcp_client.hpp"
 
@@ -38,8 +39,8 @@ std::vector<Message> TcpClient::fetch() {
 void TcpClient::read_for_app() {
   // Without a promise the comms thread reads everything as it arrives: nothing is left here.
   if (steady_now_s() >= app_reads_until_.load()) return;
-  std::unique_lock<std::mutex> io(io_mutex_, std::try_to_lock);
-  if (!io.owns_lock() || !is_connected() || !app_io_failure_.empty()) return;
+  const std::unique_lock<std::mutex> io = lock_io_for_app();
+  if (!io.owns_lock()) return;
   read_available();  // a failure is handed to the comms thread
   new_mail_ = false;  // the caller is fetching it now: nothing to announce
 }
@@ -70,6 +71,18 @@ bool TcpClient::read_available() {
     return false;
   }
   return true;
+}
+
+bool TcpClient::read_and_announce(bool (TcpClient::*read)()) {
+  bool ok = false;
+  bool mail = false;
+  {
+    std::lock_guard<std::mutex> io(io_mutex_);
+    ok = (this->*read)();
+    mail = std::exchange(new_mail_, false);
+  }
+  if (mail) fire_on_mail();
+  return ok;
 }
 
 bool TcpClient::process_buffered() {

@@ -2,7 +2,6 @@
 // and leave as one packet per send slot, a TIMING at its head when one is due (spec 4.3). The
 // comms thread sends, or the app's own thread when it releases a batch and the slot is open.
 
-#include <poll.h>
 #include <sys/socket.h>
 
 #include <algorithm>
@@ -47,13 +46,20 @@ void TcpClient::release_sends() {
 }
 
 bool TcpClient::send_for_app() {
-  std::unique_lock<std::mutex> io(io_mutex_, std::try_to_lock);
-  if (!io.owns_lock() || !is_connected() || !app_io_failure_.empty()) return false;
+  const std::unique_lock<std::mutex> io = lock_io_for_app();
+  if (!io.owns_lock()) return false;
   const double now = steady_now_s();
   if (!start_packet_if_due(now)) return false;
   last_app_send_ = now;
   write_pending();  // a failure is handed to the comms thread
   return write_buffer_.empty();  // the rest of a partial write is the comms thread's
+}
+
+std::unique_lock<std::mutex> TcpClient::lock_io_for_app() {
+  std::unique_lock<std::mutex> io(io_mutex_, std::try_to_lock);
+  // Connected first: app_io_failure_ is the lock's only while connected.
+  if (io.owns_lock() && (!is_connected() || !app_io_failure_.empty())) io.unlock();
+  return io;
 }
 
 Message TcpClient::timing_message() const {

@@ -99,6 +99,7 @@ TEST_F(TcpClientAppIo, ABrokenPromiseEndsAfterTheGrace_Issue14) {
 TEST_F(TcpClientAppIo, AReleasedBatchIsWrittenByTheAppsOwnThread_Issue14) {
   TcpClient client(uncorrected());
   ASSERT_NO_FATAL_FAILURE(connect_and_settle(client));
+  settle();  // the comms thread may still be finishing the loop that sent that TIMING
   // The comms thread sleeps until its next TIMING: only the releasing thread can have written
   // the batch by the time release_sends() returns.
   client.hold_sends();
