@@ -197,7 +197,8 @@ const moos::SwitchTable& switch_table() {
       switch_rule("--messages", SwitchKind::kInteger, "a whole number in [1, 1e8]", {1, 1e8}),
       switch_rule("--window", SwitchKind::kInteger, "a whole number in [1, 1e8]", {1, 1e8}),
       switch_rule("--rate", SwitchKind::kNumber, "a number in (0, 1e6]", {0, 1e6, true, false}),
-      switch_rule("--seconds", SwitchKind::kNumber, "a number in (0, 3600]", {0, 3600, true, false}),
+      switch_rule("--seconds", SwitchKind::kNumber, "a number in (0, 3600]",
+                  {0, 3600, true, false}),
       switch_rule("--work-dir", SwitchKind::kText, "a folder")});
   return table;
 }

@@ -48,7 +48,8 @@ void Engine::handle_classify_request(const ClassifyRequest& r, double now_s, Out
   if (v.queue.size() >= kMaxClassifyQueue) return refuse_queue_full(v, r.label, out);
   const auto object = field_.find(r.label);
   if (!object) {
-    out.run_warnings.push_back(v.name + " classify request for unknown label: " + base::log_excerpt(r.label));
+    out.run_warnings.push_back(v.name + " classify request for unknown label: " +
+                               base::log_excerpt(r.label));
     return;
   }
   if (!v.setting) {
