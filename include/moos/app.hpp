@@ -198,7 +198,7 @@ class MoosApp {
   double seconds_since_start() const;
 
   bool notify(const std::string& var, double value);
-  bool notify(const std::string& var, const std::string& value);
+  bool notify(std::string var, std::string value);  ///< moved on, uncopied
   bool notify_binary(const std::string& var, const std::string& bytes);
   bool register_variable(const std::string& var, double interval_s = 0.0);
   bool unregister_variable(const std::string& var);
@@ -257,6 +257,8 @@ class MoosApp {
   const AppTraits traits_;
   Comms* comms_ = nullptr;
   AppSettings settings_;
+  // The framework's own variable names, built once at start() (posted every cycle).
+  std::string iter_gap_var_, iter_len_var_, status_var_;
   AppCast appcast_;
   std::function<void(const std::string&)> terminal_output_;
   std::atomic<bool> stop_{false};

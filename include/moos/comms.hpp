@@ -69,8 +69,9 @@ class Comms {
   /// NOTIFY a double / string / binary value. `time_s` defaults to the MOOS time now.
   bool notify(const std::string& var, double value, std::optional<double> time_s = std::nullopt,
               const std::string& source_aux = {});
-  bool notify(const std::string& var, const std::string& value,
-              std::optional<double> time_s = std::nullopt, const std::string& source_aux = {});
+  /// The strings are taken by value: a caller done with its text moves it in, uncopied.
+  bool notify(std::string var, std::string value, std::optional<double> time_s = std::nullopt,
+              const std::string& source_aux = {});
   bool notify_binary(const std::string& var, const std::string& bytes,
                      std::optional<double> time_s = std::nullopt,
                      const std::string& source_aux = {});

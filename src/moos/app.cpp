@@ -247,6 +247,9 @@ bool MoosApp::start(Comms& comms, AppSettings settings) {
     settings_.time_warp = comms.time_warp();
   }
   if (!(settings_.app_tick_hz > 0)) settings_.app_tick_hz = traits_.default_app_tick_hz;
+  iter_gap_var_ = base::to_upper(settings_.moos_name) + "_ITER_GAP";
+  iter_len_var_ = base::to_upper(settings_.moos_name) + "_ITER_LEN";
+  status_var_ = base::to_upper(settings_.app_name) + "_STATUS";
   appcast_.set_proc(settings_.app_name);
   appcast_.set_node(community());
   appcast_.set_max_events(settings_.max_appcast_events);
@@ -345,8 +348,7 @@ void MoosApp::cycle() {
   post_status_if_due();
   ++iteration_;
   if (traits_.post_iteration_timing && last_iterate_start_moos_s_)
-    comms_->notify(base::to_upper(settings_.moos_name) + "_ITER_GAP",
-                   (now - *last_iterate_start_moos_s_) * settings_.app_tick_hz);
+    comms_->notify(iter_gap_var_, (now - *last_iterate_start_moos_s_) * settings_.app_tick_hz);
   last_iterate_start_moos_s_ = now;
   iterate();
   post_report(now);
@@ -409,7 +411,7 @@ std::string MoosApp::status_string() const {
 
 void MoosApp::post_status_if_due() {
   if (last_status_moos_s_ && curr_time_ - *last_status_moos_s_ < kStatusPeriod_s) return;
-  comms_->notify(base::to_upper(settings_.app_name) + "_STATUS", status_string());
+  comms_->notify(status_var_, status_string());
   last_status_moos_s_ = curr_time_;
 }
 
@@ -419,8 +421,7 @@ bool MoosApp::term_reporting_enabled() const {
 
 void MoosApp::post_report(double iterate_start) {
   if (traits_.post_iteration_timing)
-    comms_->notify(base::to_upper(settings_.moos_name) + "_ITER_LEN",
-                   (moos_time() - iterate_start) * settings_.app_tick_hz);
+    comms_->notify(iter_len_var_, (moos_time() - iterate_start) * settings_.app_tick_hz);
   appcast_.set_iteration(iteration_);
   appcast_.set_node(community());
 
@@ -461,8 +462,8 @@ std::string MoosApp::terminal_report() {
 }
 
 bool MoosApp::notify(const std::string& var, double value) { return comms_->notify(var, value); }
-bool MoosApp::notify(const std::string& var, const std::string& value) {
-  return comms_->notify(var, value);
+bool MoosApp::notify(std::string var, std::string value) {
+  return comms_->notify(std::move(var), std::move(value));
 }
 bool MoosApp::notify_binary(const std::string& var, const std::string& bytes) {
   return comms_->notify_binary(var, bytes);

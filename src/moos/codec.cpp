@@ -103,9 +103,10 @@ class FieldReader {
   std::size_t pos_ = 0;
 };
 
-std::optional<Message> decode_message_at(std::string_view bytes, std::size_t base_offset,
-                                         DecodeError* error) {
-  Message m;
+// Decodes into `m` in its final place (a packet's messages are not moved around); false and
+// `error` set when the bytes are not one whole message.
+bool decode_message_into(Message& m, std::string_view bytes, std::size_t base_offset,
+                         DecodeError* error) {
   FieldReader r(bytes, base_offset);
   std::int32_t length = 0;
   const bool ok = r.int32(length, "length", error) && r.int32(m.id, "id", error) &&
@@ -116,15 +117,15 @@ std::optional<Message> decode_message_at(std::string_view bytes, std::size_t bas
                   r.string(m.community, "community", error) && r.string(m.key, "key", error) &&
                   r.float64(m.time, "time", error) && r.float64(m.dval, "dval", error) &&
                   r.float64(m.dval2, "dval2", error) && r.string(m.sval, "string value", error);
-  if (!ok) return std::nullopt;
+  if (!ok) return false;
   if (static_cast<std::size_t>(length) != r.position() || r.position() != bytes.size()) {
     if (error)
       *error = DecodeError{"length field " + std::to_string(length) + " but message holds " +
                                std::to_string(r.position()) + " bytes",
                            base_offset};
-    return std::nullopt;
+    return false;
   }
-  return m;
+  return true;
 }
 
 std::optional<std::vector<Message>> decode_packet_at(std::string_view packet, DecodeError* error) {
@@ -163,9 +164,9 @@ std::optional<std::vector<Message>> decode_packet_at(std::string_view packet, De
                       " runs past the end of the packet",
                   pos);
     DecodeError inner;
-    auto msg = decode_message_at(packet.substr(pos, static_cast<std::size_t>(length)), pos, &inner);
-    if (!msg) return fail("message " + std::to_string(i) + ": " + inner.reason, inner.offset);
-    out.push_back(std::move(*msg));
+    if (!decode_message_into(out.emplace_back(),
+                             packet.substr(pos, static_cast<std::size_t>(length)), pos, &inner))
+      return fail("message " + std::to_string(i) + ": " + inner.reason, inner.offset);
     pos += static_cast<std::size_t>(length);
   }
   if (pos != packet.size())
@@ -226,7 +227,9 @@ std::optional<Message> decode_message(std::string_view bytes, DecodeError* error
     if (error) *error = DecodeError{"message shorter than the minimum of 54 bytes", 0};
     return std::nullopt;
   }
-  return decode_message_at(bytes, 0, error);
+  Message m;
+  if (!decode_message_into(m, bytes, 0, error)) return std::nullopt;
+  return m;
 }
 
 std::optional<std::vector<Message>> decode_packet(std::string_view packet, DecodeError* error) {

@@ -115,10 +115,16 @@ bool Comms::unregister_wildcard(const std::string& var_pattern, const std::strin
 
 bool Comms::post_and_record(Message msg) {
   if (msg.key.empty()) return false;
-  const std::string key = msg.key;
+  // An app posts the same few names every cycle: the name is copied only the first time.
+  std::string new_key;
+  {
+    std::lock_guard<std::mutex> lock(book_mutex_);
+    if (published_.count(msg.key) == 0) new_key = msg.key;
+  }
   if (!transmit(std::move(msg))) return false;
+  if (new_key.empty()) return true;
   std::lock_guard<std::mutex> lock(book_mutex_);
-  published_.insert(key);
+  published_.insert(std::move(new_key));
   return true;
 }
 
@@ -129,9 +135,10 @@ bool Comms::notify(const std::string& var, double value, std::optional<double> t
   return post_and_record(std::move(m));
 }
 
-bool Comms::notify(const std::string& var, const std::string& value, std::optional<double> time_s,
+bool Comms::notify(std::string var, std::string value, std::optional<double> time_s,
                    const std::string& source_aux) {
-  Message m = make_string_notify(var, value, name_, time_s ? *time_s : moos_time());
+  Message m = make_string_notify(std::move(var), std::move(value), name_,
+                                 time_s ? *time_s : moos_time());
   m.source_aux = source_aux;
   return post_and_record(std::move(m));
 }

@@ -1,6 +1,8 @@
 #include "HazardSensor.hpp"
 
 #include <ostream>
+#include <string_view>
+#include <utility>
 
 #include "HazardSensor_Info.hpp"
 #include "app_support.hpp"
@@ -12,10 +14,13 @@ namespace ufld_hazard_sensor {
 
 namespace {
 
-/// The engine reads text: strings and binary values as they are, doubles in their shortest
-/// exact form (a NODE_REPORT posted as a double then fails to parse, with a warning).
-std::string mail_text(const moos::Message& m) {
-  return m.is_double() ? base::format_shortest(m.dval) : m.sval;
+/// The engine reads text: strings and binary values as they are (a view, no copy), doubles in
+/// their shortest exact form, kept in `formatted` (a NODE_REPORT posted as a double then fails
+/// to parse, with a warning).
+std::string_view mail_text(const moos::Message& m, std::string& formatted) {
+  if (!m.is_double()) return m.sval;
+  formatted = base::format_shortest(m.dval);
+  return formatted;
 }
 
 }  // namespace
@@ -56,8 +61,9 @@ void HazardSensor::on_connect_to_server() {
 
 void HazardSensor::on_new_mail(const std::vector<moos::Message>& mail) {
   const double cycle_s = cycle_time();
+  std::string formatted;
   for (const moos::Message& m : mail) {
-    const std::string text = mail_text(m);
+    const std::string_view text = mail_text(m, formatted);
     publish(driver_->deliver(hazard::Mail{m.key, text, m.time}, cycle_s));
   }
 }
@@ -75,12 +81,12 @@ std::string HazardSensor::build_report() {
   return hazard::format_report(hazard::collect_report_data(driver_->engine()));
 }
 
-void HazardSensor::publish(const hazard::TimedOutputs& timed) {
-  const hazard::Outputs& out = timed.outputs;
+void HazardSensor::publish(hazard::TimedOutputs timed) {
+  hazard::Outputs& out = timed.outputs;
   const double now_s = timed.time_s;
-  for (const hazard::Posting& p : out.postings) {
-    notify(p.variable, p.value);
+  for (hazard::Posting& p : out.postings) {
     write_verbose(now_s, p.variable, p.value);
+    notify(std::move(p.variable), std::move(p.value));
   }
   using Report = void (HazardSensor::*)(const std::string&);
   const auto report = [&](const std::vector<std::string>& texts, Report to_appcast,

@@ -83,7 +83,8 @@ class HazardSensor final : public moos::MoosApp {
   double quiet_until_moos_s(double now_moos_s) const override;
 
  private:
-  void publish(const hazard::TimedOutputs& out);
+  /// Posts, reports and logs what the engine produced; the posted texts are moved, not copied.
+  void publish(hazard::TimedOutputs timed);
   void write_verbose(double now_s, const std::string& variable, const std::string& value) const;
 
   HazardSensorOptions options_;
