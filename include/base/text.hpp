@@ -91,6 +91,12 @@ std::string fix(double value, int decimals);
 void append_fix(std::string& out, double value, int decimals);
 /// FMT(v, d) appended to `out`.
 void append_fmt(std::string& out, double value, int decimals = 5);
+/// The room write_fmt_fast() may fill (its longest text: 16 digits, a point and a sign).
+inline constexpr std::size_t kFastFmtMaxChars = 24;
+/// FMT(v, d) written at `dest`, which has room for kFastFmtMaxChars bytes, when the common case
+/// covers it (|v| * 10^d below 2^53, at most 9 decimals): the end of the text, else nullptr and
+/// nothing written (append_fmt covers every value). For writers that fill a buffer.
+char* write_fmt_fast(char* dest, double value, int decimals);
 /// FMT(v, d): FIX(v, d), then (only if the text has a '.') trailing '0's and then a trailing '.'
 /// removed, and finally "-0" mapped to "0" (spec section 0). FMT(0.6561, 3) == "0.656".
 std::string fmt(double value, int decimals = 5);

@@ -90,16 +90,19 @@ DecimalScan scan_decimal(std::string_view s) {
 // tie goes to the even neighbour, as printf does. Every other case returns false: the caller
 // uses std::to_chars, which rounds the exact binary value as printf does. Same text as printf
 // (tests/base/number_differential_test.cpp).
-// With `fmt` the text is FMT's (trailing zeros and then a trailing '.' removed, "-0" as "0"),
-// trimmed before it is appended: one append per number (the swath polygon writes eleven).
+// With `fmt` the text is FMT's (trailing zeros and then a trailing '.' removed, "-0" as "0").
+// The text is written from the right into `text`; its start is returned and its end put in
+// `last`, or nullptr is returned outside the fast path.
 constexpr int kMaxFastDecimals = 9;
-bool append_fixed_fast(std::string& out, double value, int decimals, bool fmt) {
+constexpr std::size_t kFastTextBuffer = 48;
+const char* fixed_fast_text(char (&text)[kFastTextBuffer], double value, int decimals, bool fmt,
+                            const char*& last_out) {
   static constexpr double kPow10[kMaxFastDecimals + 1] = {1e0, 1e1, 1e2, 1e3, 1e4,
                                                          1e5, 1e6, 1e7, 1e8, 1e9};
-  if (decimals > kMaxFastDecimals) return false;
+  if (decimals > kMaxFastDecimals) return nullptr;
   const double magnitude = std::fabs(value);
   const double scaled = magnitude * kPow10[decimals];
-  if (!(scaled < 0x1p53)) return false;  // also NaN and infinities
+  if (!(scaled < 0x1p53)) return nullptr;  // also NaN and infinities
   // Truncation is floor here (0 <= scaled < 2^53), without a library call.
   const auto whole_units = static_cast<std::uint64_t>(scaled);
   const auto whole = static_cast<double>(whole_units);
@@ -116,8 +119,7 @@ bool append_fixed_fast(std::string& out, double value, int decimals, bool fmt) {
   }
   const std::uint64_t units = whole_units + (round_up ? 1 : 0);
   // Written from the right: the decimals, the point, the whole part (at least "0"), the sign.
-  char text[48];
-  char* const end = text + sizeof text;
+  char* const end = text + kFastTextBuffer;
   char* p = end;
   std::uint64_t rest = units;
   for (int i = 0; i < decimals; ++i, rest /= 10) *--p = static_cast<char>('0' + rest % 10);
@@ -144,7 +146,17 @@ bool append_fixed_fast(std::string& out, double value, int decimals, bool fmt) {
     if (last[-1] == '.') --last;
   }
   if (fmt && last - p == 2 && p[0] == '-' && p[1] == '0') ++p;
-  out.append(p, static_cast<std::size_t>(last - p));
+  last_out = last;
+  return p;
+}
+
+// The fast path's text appended to `out` in one append; false outside the fast path.
+bool append_fixed_fast(std::string& out, double value, int decimals, bool fmt) {
+  char text[kFastTextBuffer];
+  const char* last = nullptr;
+  const char* const first = fixed_fast_text(text, value, decimals, fmt, last);
+  if (!first) return false;
+  out.append(first, static_cast<std::size_t>(last - first));
   return true;
 }
 
@@ -181,6 +193,17 @@ void append_fmt(std::string& out, double value, int decimals) {
     out.resize(end);
   }
   if (out.size() == at + 2 && out.compare(at, 2, "-0") == 0) out.erase(at, 1);
+}
+
+char* write_fmt_fast(char* dest, double value, int decimals) {
+  char text[kFastTextBuffer];
+  const char* last = nullptr;
+  const char* const first =
+      fixed_fast_text(text, value, std::clamp(decimals, 0, kMaxDecimals), /*fmt=*/true, last);
+  if (!first) return nullptr;
+  const auto n = static_cast<std::size_t>(last - first);
+  std::memcpy(dest, first, n);
+  return dest + n;
 }
 
 std::string fix(double value, int decimals) {

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -133,6 +134,42 @@ TEST(NumberDifferential, FixAndFmtWriteWhatPrintfWrites) {
       EXPECT_EQ(fmt(v, decimals), printf_fmt(v, decimals)) << v << " " << decimals;
     }
   }
+}
+
+// write_fmt_fast writes fmt()'s text within its stated room, or nothing at all; and it takes
+// every value a swath or a marker has (below 2^53 / 10^d, at most 9 decimals).
+TEST(NumberDifferential, WriteFmtFastWritesFmtsTextOrNothing) {
+  std::mt19937_64 rng(2027);
+  int written = 0;
+  for (int i = 0; i < 300000; ++i) {
+    const double v = value_like(rng);
+    const int decimals = static_cast<int>(rng() % 13);
+    char room[kFastFmtMaxChars + 8];
+    std::memset(room, '#', sizeof room);
+    const char* const end = write_fmt_fast(room, v, decimals);
+    const bool common = decimals <= 9 && std::fabs(v) * std::pow(10.0, decimals) < 0x1p52;
+    if (common) {
+      ASSERT_NE(end, nullptr) << v << " " << decimals;
+    }
+    if (!end) {
+      ASSERT_EQ(room[0], '#') << v << " " << decimals;
+      continue;
+    }
+    ++written;
+    ASSERT_LE(end - room, static_cast<std::ptrdiff_t>(kFastFmtMaxChars)) << v;
+    ASSERT_EQ(std::string(static_cast<const char*>(room), end), fmt(v, decimals))
+        << v << " " << decimals;
+    for (const char* rest = end; rest < room + sizeof room; ++rest) ASSERT_EQ(*rest, '#') << v;
+  }
+  EXPECT_GT(written, 150000);  // the generator reaches the fast path, not only its refusals
+  char room[kFastFmtMaxChars];
+  const double longest = -9007199254740991.0 / 10.0;  // 16 digits, a point and a sign
+  const char* const end = write_fmt_fast(room, longest, 1);
+  ASSERT_NE(end, nullptr);
+  EXPECT_EQ(std::string(static_cast<const char*>(room), end), "-900719925474099.1");
+  for (const double refused : {1e300, std::nan(""), HUGE_VAL, -HUGE_VAL})
+    EXPECT_EQ(write_fmt_fast(room, refused, 2), nullptr) << refused;
+  EXPECT_EQ(write_fmt_fast(room, 1.5, 10), nullptr);
 }
 
 TEST(NumberDifferential, AppendedFormsEqualTheReturnedOnes) {

@@ -84,15 +84,20 @@ void append_field(std::string& out, std::string_view key, std::string_view value
   out.append(value);
 }
 
-void append_points(std::string& out, const std::vector<glm::dvec2>& points, int decimals) {
-  out.push_back('{');
+void append_points(base::TextAppender& out, const std::vector<glm::dvec2>& points, int decimals) {
+  out.put('{');
   for (std::size_t i = 0; i < points.size(); ++i) {
-    if (i > 0) out.push_back(':');
-    base::append_fmt(out, points[i].x, decimals);
-    out.push_back(',');
-    base::append_fmt(out, points[i].y, decimals);
+    if (i > 0) out.put(':');
+    out.put_fmt(points[i].x, decimals);
+    out.put(',');
+    out.put_fmt(points[i].y, decimals);
   }
-  out.push_back('}');
+  out.put('}');
+}
+
+void append_points(std::string& out, const std::vector<glm::dvec2>& points, int decimals) {
+  base::TextAppender appender(out);
+  append_points(appender, points, decimals);
 }
 
 std::string format_points(const std::vector<glm::dvec2>& points, int decimals) {

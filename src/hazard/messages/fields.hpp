@@ -10,6 +10,7 @@
 #include <glm/vec2.hpp>
 
 #include "base/text.hpp"
+#include "base/text_appender.hpp"
 
 namespace hazard::detail {
 
@@ -56,6 +57,8 @@ void append_field(std::string& out, std::string_view key, std::string_view value
 std::string format_points(const std::vector<glm::dvec2>& points, int decimals);
 /// The same appended to `out`.
 void append_points(std::string& out, const std::vector<glm::dvec2>& points, int decimals);
+/// The same put through `out` (a caller that writes more around it).
+void append_points(base::TextAppender& out, const std::vector<glm::dvec2>& points, int decimals);
 /// Parses "{x1,y1:x2,y2:...}" (braces optional); nullopt if any coordinate is bad.
 std::optional<std::vector<glm::dvec2>> parse_points(std::string_view text);
 

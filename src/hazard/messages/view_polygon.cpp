@@ -28,26 +28,32 @@ Result parse_view_polygon(std::string_view text) {
   return Result::ok(std::move(p));
 }
 
-// Appended in place (one string, no temporaries): every vehicle's swath is posted each iteration.
+// Written through one TextAppender into a string reserved once: every vehicle's swath is
+// posted each iteration.
 std::string format_view_polygon(const ViewPolygon& p) {
   std::string out;
   out.reserve(160 + 24 * p.points.size() + p.label.size() + p.msg.size());
-  out += "pts=";
-  detail::append_points(out, p.points, 1);
-  // ",key=" as one literal: `out` is not empty here (detail::append_field's one question).
-  const auto field = [&out](const char* comma_key_equals, const std::string& value) {
-    if (!value.empty()) out.append(comma_key_equals).append(value);
-  };
-  field(",label=", p.label);
-  field(",msg=", p.msg);
-  field(",edge_color=", p.edge_color);
-  field(",fill_color=", p.fill_color);
-  out += ",vertex_size=";
-  base::append_fmt(out, p.vertex_size, 1);
-  out += ",edge_size=";
-  base::append_fmt(out, p.edge_size, 1);
-  out += ",fill_transparency=";
-  base::append_fmt(out, std::clamp(p.fill_transparency, 0.0, 1.0), 2);
+  {
+    base::TextAppender text(out);
+    text.put("pts=");
+    detail::append_points(text, p.points, 1);
+    // ",key=" as one piece: the text is not empty here (detail::append_field's one question).
+    const auto field = [&text](std::string_view comma_key_equals, const std::string& value) {
+      if (value.empty()) return;
+      text.put(comma_key_equals);
+      text.put(value);
+    };
+    field(",label=", p.label);
+    field(",msg=", p.msg);
+    field(",edge_color=", p.edge_color);
+    field(",fill_color=", p.fill_color);
+    text.put(",vertex_size=");
+    text.put_fmt(p.vertex_size, 1);
+    text.put(",edge_size=");
+    text.put_fmt(p.edge_size, 1);
+    text.put(",fill_transparency=");
+    text.put_fmt(std::clamp(p.fill_transparency, 0.0, 1.0), 2);
+  }  // flushed here
   return out;
 }
 
