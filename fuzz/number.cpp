@@ -1,8 +1,8 @@
 // Fuzz target: the fast paths of the text grammar against their references (issue 14).
 // parse_number (the exact short-decimal path, std::from_chars, strtod) must give bit for bit
 // what the rulings' grammar, checked by a regular expression, and strtod give; fix and fmt
-// (integer arithmetic, exact ties to even, std::to_chars) must write what C printf writes for a
-// double taken from the input's bytes. Any difference aborts.
+// (integer arithmetic, exact ties to even, std::to_chars) and write_fmt_fast must write what C
+// printf writes for a double taken from the input's bytes. Any difference aborts.
 
 #include <cmath>
 #include <cstdio>
@@ -52,6 +52,10 @@ void check_format(const std::uint8_t* data, std::size_t size) {
   }
   if (trimmed == "-0") trimmed = "0";
   if (base::fmt(v, decimals) != trimmed) std::abort();
+  // The buffer-writing form: the same text within its stated room, or nothing.
+  char room[base::kFastFmtMaxChars];
+  if (const char* const end = base::write_fmt_fast(room, v, decimals))
+    if (std::string(static_cast<const char*>(room), end) != trimmed) std::abort();
 }
 
 }  // namespace
