@@ -147,7 +147,8 @@ double percentile(std::vector<double> values, double fraction) {
 double cpu_per_h_at_nominal_tick(double cpu_per_h, double iterations_per_s, double app_tick_hz) {
   // Within 1 % counts as kept: the two APPCASTs that count iterations are not whole periods apart.
   constexpr double kKeptFraction = 0.99;
-  if (!(iterations_per_s > 0) || iterations_per_s >= kKeptFraction * app_tick_hz) return cpu_per_h;
+  if (!(iterations_per_s > 0)) return std::numeric_limits<double>::quiet_NaN();
+  if (iterations_per_s >= kKeptFraction * app_tick_hz) return cpu_per_h;
   return cpu_per_h * app_tick_hz / iterations_per_s;
 }
 

@@ -61,7 +61,8 @@ double percentile(std::vector<double> values, double fraction);
 /// CPU seconds per simulated hour had the app kept its nominal tick: `cpu_per_h` scaled by
 /// AppTick / achieved iterations per MOOS second (CPU per iteration x nominal iterations). An app
 /// that saturates a core cannot show its cost per simulated hour, only this; for one that keeps
-/// its tick (within 1 %) it is `cpu_per_h`, as it is when the iterations are unknown (<= 0).
+/// its tick (within 1 %) it is `cpu_per_h`. NaN when the iterations are unknown (<= 0): an app
+/// too slow to answer both AppCast requests has no figure, not its measured (capped) one.
 double cpu_per_h_at_nominal_tick(double cpu_per_h, double iterations_per_s, double app_tick_hz);
 
 /// A TCP port on 127.0.0.1 that was free a moment ago (bound to port 0, then released).

@@ -4,10 +4,11 @@
     plot_performance.py SWEEP.csv OUT.svg
 
 Two panels, field size on the x axis, one line per fleet size: the sensor's CPU seconds per
-simulated hour, and its resident memory. The original's figures quoted in issue 14 (warp 10,
-reference MOOSDB, another machine) are drawn as hollow marks, labelled as quoted; they are not
-measured by this script's input unless the CSV holds "original" rows, which are drawn as lines.
-The SVG helpers are those of bench/accuracy/plot_accuracy.py.
+simulated hour, and its resident memory. When the CSV holds "original" rows (process_bench
+--original=PATH), the original's CPU at its nominal tick (the measured CPU scaled by nominal /
+achieved iterations, the CSV's last column) is drawn as dashed lines; without them, the
+figures quoted in issue 14 (warp 10, reference MOOSDB, another machine) are drawn as hollow
+marks, labelled as quoted. The SVG helpers are those of bench/accuracy/plot_accuracy.py.
 """
 import csv
 import math
@@ -29,15 +30,25 @@ def log_ticks(lo, hi):
 
 
 def series(rows, program, value):
-    """{vehicles: [(objects, value), ...]} of the completed runs of one program."""
+    """{vehicles: [(objects, value), ...]} of the completed runs of one program (a value of None,
+    or one that is not a positive finite number, leaves the run out)."""
     out = {}
     for r in rows:
-        if r["program"] == program and r["ok"] == "1":
-            out.setdefault(int(r["vehicles"]), []).append((int(r["objects"]), value(r)))
+        if r["program"] != program or r["ok"] != "1":
+            continue
+        y = value(r)
+        if y is not None and math.isfinite(y) and y > 0:
+            out.setdefault(int(r["vehicles"]), []).append((int(r["objects"]), y))
     return {v: sorted(p) for v, p in sorted(out.items())}
 
 
-def legend(x, y, fleets, with_quoted):
+def at_nominal_tick(row):
+    """The CPU per simulated hour at the nominal tick; older CSVs have only the measured one."""
+    text = row.get("sensor_cpu_s_per_h_nominal_tick") or row["sensor_cpu_s_per_h"]
+    return float(text) if text not in ("", "inf", "nan") else None
+
+
+def legend(x, y, fleets, with_quoted, with_measured_original=False):
     out = []
     for i, v in enumerate(fleets):
         yy = y + 16 * i
@@ -49,6 +60,11 @@ def legend(x, y, fleets, with_quoted):
         yy = y + 16 * len(fleets)
         out.append(f'<circle cx="{x + 12}" cy="{yy}" r="4" fill="none" stroke="#444"/>')
         out.append(text(x + 30, yy + 4, "original, quoted from issue 14", 11, "start"))
+    if with_measured_original:
+        yy = y + 16 * len(fleets)
+        out.append(f'<line x1="{x}" y1="{yy}" x2="{x + 24}" y2="{yy}" stroke="#444" '
+                   'stroke-width="2" stroke-dasharray="6,3"/>')
+        out.append(text(x + 30, yy + 4, "original at its nominal tick (measured)", 11, "start"))
     return out
 
 
@@ -59,7 +75,8 @@ def main():
         rows = list(csv.DictReader(f))
     cpu = series(rows, "ours", lambda r: float(r["sensor_cpu_s_per_h"]))
     rss = series(rows, "ours", lambda r: int(r["sensor_rss_kb"]) / 1024.0)
-    theirs = series(rows, "original", lambda r: float(r["sensor_cpu_s_per_h"]))
+    theirs = series(rows, "original", at_nominal_tick)
+    quoted = [] if theirs else QUOTED_ORIGINAL
     if not cpu:
         sys.exit("plot_performance.py: no completed runs of ours in " + sys.argv[1])
     objects = sorted({o for pts in cpu.values() for o, _ in pts})
@@ -69,8 +86,10 @@ def main():
            f'viewBox="0 0 {WIDTH} {HEIGHT}">', '<rect width="100%" height="100%" fill="white"/>']
 
     values = [y for pts in list(cpu.values()) + list(theirs.values()) for _, y in pts]
-    values += [q[3] for q in QUOTED_ORIGINAL]
-    y_range = (10 ** math.floor(math.log10(min(values))), 10 ** math.ceil(math.log10(max(values))))
+    values += [q[3] for q in quoted]
+    # A decade of headroom above the highest point, where the legend goes.
+    y_range = (10 ** math.floor(math.log10(min(values))),
+               10 ** (math.ceil(math.log10(max(values))) + 1))
     ax = Axes(LEFT0, x_range, y_range, True)
     svg += frame(ax, f"Sensor CPU per simulated hour (warp {warp})", "objects in the field",
                  "CPU seconds", objects, log_ticks(*y_range), lambda t: f"{t:g}")
@@ -78,14 +97,14 @@ def main():
         svg += polyline(ax, pts, FLEET_COLOURS.get(v, "#444"))
     for v, pts in theirs.items():
         svg += polyline(ax, pts, FLEET_COLOURS.get(v, "#444"), "6,3")
-    for o, v, lo, hi in QUOTED_ORIGINAL:
+    for o, v, lo, hi in quoted:
         colour = FLEET_COLOURS.get(v, "#444")
         svg.append(f'<line x1="{ax.x(o):.1f}" y1="{ax.y(lo):.1f}" x2="{ax.x(o):.1f}" '
                    f'y2="{ax.y(hi):.1f}" stroke="{colour}"/>')
         for y in {lo, hi}:
             svg.append(f'<circle cx="{ax.x(o):.1f}" cy="{ax.y(y):.1f}" r="4" fill="none" '
                        f'stroke="{colour}"/>')
-    svg += legend(LEFT0 + 12, TOP + 16, list(cpu), True)
+    svg += legend(LEFT0 + 12, TOP + 16, list(cpu), bool(quoted), bool(theirs))
 
     values = [y for pts in rss.values() for _, y in pts]
     y_range = (10 ** math.floor(math.log10(min(values))), 10 ** math.ceil(math.log10(max(values))))
