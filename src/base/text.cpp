@@ -87,12 +87,12 @@ DecimalScan scan_decimal(std::string_view s) {
 // FIX for the common case, with integer arithmetic: |value| * 10^decimals below 2^53 and at
 // most kMaxFastDecimals decimals. The product is off by at most half an ulp, which matters only
 // when it lies that close to a rounding tie (x.5); the exact error settles those, and an exact
-// tie goes to the even neighbour, as printf does. Every other case returns false: the caller
-// uses std::to_chars, which rounds the exact binary value as printf does. Same text as printf
+// tie goes to the even neighbour, as printf does. Same text as printf
 // (tests/base/number_differential_test.cpp).
 // With `fmt` the text is FMT's (trailing zeros and then a trailing '.' removed, "-0" as "0").
 // The text is written from the right into `text`; its start is returned and its end put in
-// `last`, or nullptr is returned outside the fast path.
+// `last_out`. Every other case returns nullptr: the caller uses std::to_chars, which rounds
+// the exact binary value as printf does.
 constexpr int kMaxFastDecimals = 9;
 constexpr std::size_t kFastTextBuffer = 48;
 const char* fixed_fast_text(char (&text)[kFastTextBuffer], double value, int decimals, bool fmt,
