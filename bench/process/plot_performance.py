@@ -43,9 +43,9 @@ def series(rows, program, value):
 
 
 def at_nominal_tick(row):
-    """The CPU per simulated hour at the nominal tick; older CSVs have only the measured one."""
-    text = row.get("sensor_cpu_s_per_h_nominal_tick") or row["sensor_cpu_s_per_h"]
-    return float(text) if text not in ("", "inf", "nan") else None
+    """The CPU per simulated hour at the nominal tick ("nan" when unknown, which series() leaves
+    out); older CSVs have only the measured one."""
+    return float(row.get("sensor_cpu_s_per_h_nominal_tick") or row["sensor_cpu_s_per_h"])
 
 
 def legend(x, y, fleets, with_quoted, with_measured_original=False):
