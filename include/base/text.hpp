@@ -51,26 +51,10 @@ struct KeyValue {
 
 /// Splits "a=1, b=2" on `separator` (no quoting), each piece at its first '=', both sides trimmed.
 /// With `respect_braces`, separators inside {...} do not split (NODE_REPORT, pts={...}).
-/// Empty pieces (",,") are skipped.
+/// Empty pieces (",,") are skipped. The same pieces one at a time: KeyValueReader
+/// (key_value_reader.hpp).
 std::vector<KeyValue> split_key_values(std::string_view text, char separator = ',',
                                        bool respect_braces = false);
-
-/// The pieces split_key_values returns, one at a time and without a vector (hot parsers:
-/// NODE_REPORT). `text` must outlive the reader and the views it hands out; `separator` is
-/// none of `{`, `}` and `=`.
-class KeyValueReader {
- public:
-  explicit KeyValueReader(std::string_view text, char separator = ',',
-                          bool respect_braces = false);
-  /// The next piece into `kv`; false when none is left.
-  bool next(KeyValue& kv);
-
- private:
-  std::string_view text_;
-  char separator_;
-  bool respect_braces_;
-  std::size_t start_ = 0;
-};
 
 // ---- numbers and booleans ---------------------------------------------------------------------
 

@@ -7,6 +7,8 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "base/key_value_reader.hpp"
+
 namespace base {
 
 namespace {
@@ -25,9 +27,12 @@ char upper_ascii(char c) { return c >= 'a' && c <= 'z' ? static_cast<char>(c - (
 // whole number m <= 2^53, and a decimal exponent e (the written one minus the digits after the
 // point) in [-22, 22]. Then m and 10^|e| are exact doubles and one multiplication or division rounds
 // correctly (Clinger's fast path), which is the value strtod gives.
+// Plain members, not a std::optional<double>: an optional built in memory and then read back
+// whole stalls that load (a store forwarded to a wider load), on every number of every message.
 struct DecimalScan {
   bool valid = false;
-  std::optional<double> exact;
+  bool exact = false;  ///< `value` is the number
+  double value = 0.0;
 };
 
 constexpr int kMaxExactDigits = 19;          // a uint64 holds any 19 digits
@@ -46,19 +51,20 @@ DecimalScan scan_decimal(std::string_view s) {
   std::uint64_t mantissa = 0;
   int digits = 0;
   int exponent = 0;
-  // The digits before and after the point, each compared once (unsigned: below '0' wraps).
-  const auto take_digits = [&](bool after_point) {
-    for (; i < s.size(); ++i, ++digits) {
-      const unsigned digit = static_cast<unsigned>(static_cast<unsigned char>(s[i])) - '0';
-      if (digit > 9) return;
-      if (digits < kMaxExactDigits) mantissa = mantissa * 10 + digit;
-      if (after_point) --exponent;
-    }
-  };
-  take_digits(false);
-  if (i < s.size() && s[i] == '.') {
-    ++i;
-    take_digits(true);
+  // The digits and at most one point, in one loop whose only exit inside is for a byte that is
+  // neither (an exponent or a bad byte): the digits and the point are selected, not branched
+  // on, so the end of the whole part costs no mispredicted branch.
+  bool after_point = false;
+  for (; i < s.size(); ++i) {
+    const unsigned digit = static_cast<unsigned>(static_cast<unsigned char>(s[i])) - '0';
+    const bool is_digit = digit <= 9;  // unsigned: below '0' wraps
+    const bool is_point = s[i] == '.';
+    if (!is_digit && !(is_point && !after_point)) break;
+    const std::uint64_t appended = mantissa * 10 + digit;
+    mantissa = is_digit && digits < kMaxExactDigits ? appended : mantissa;
+    digits += is_digit ? 1 : 0;
+    exponent -= is_digit && after_point ? 1 : 0;
+    after_point = after_point || is_point;
   }
   if (digits == 0) return scan;
   if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
@@ -79,7 +85,8 @@ DecimalScan scan_decimal(std::string_view s) {
       exponent >= -kMaxExactPow10 && exponent <= kMaxExactPow10) {
     const auto m = static_cast<double>(mantissa);
     const double v = exponent >= 0 ? m * kPow10[exponent] : m / kPow10[-exponent];
-    scan.exact = negative ? -v : v;
+    scan.exact = true;
+    scan.value = negative ? -v : v;
   }
   return scan;
 }
@@ -90,19 +97,54 @@ DecimalScan scan_decimal(std::string_view s) {
 // tie goes to the even neighbour, as printf does. Same text as printf
 // (tests/base/number_differential_test.cpp).
 // With `fmt` the text is FMT's (trailing zeros and then a trailing '.' removed, "-0" as "0").
-// The text is written from the right into `text`; its start is returned and its end put in
-// `last_out`. Every other case returns nullptr: the caller uses std::to_chars, which rounds
-// the exact binary value as printf does.
+// Every other case has no FixedText: the caller uses std::to_chars, which rounds the exact
+// binary value as printf does.
 constexpr int kMaxFastDecimals = 9;
-constexpr std::size_t kFastTextBuffer = 48;
-const char* fixed_fast_text(char (&text)[kFastTextBuffer], double value, int decimals, bool fmt,
-                            const char*& last_out) {
+
+// The pieces of the text: [-]whole[.decimals], the decimals `shown` digits of `fraction`
+// (leading zeros included). Measured first, then written in place: no buffer and no copy.
+struct FixedText {
+  bool negative = false;
+  std::uint64_t whole = 0;
+  std::uint64_t fraction = 0;
+  int shown = 0;
+  std::size_t length = 0;
+};
+
+// 10^0 .. 10^16: every power a value below 2^53 (16 digits) is compared with or scaled by.
+constexpr std::uint64_t kPow10Int[17] = {1,
+                                         10,
+                                         100,
+                                         1000,
+                                         10000,
+                                         100000,
+                                         1000000,
+                                         10000000,
+                                         100000000,
+                                         1000000000,
+                                         10000000000,
+                                         100000000000,
+                                         1000000000000,
+                                         10000000000000,
+                                         100000000000000,
+                                         1000000000000000,
+                                         10000000000000000};
+
+// Decimal digits of v (at least 1): from its bit width (1233 / 4096 is just above log10(2)),
+// corrected by one comparison.
+int decimal_digits(std::uint64_t v) {
+  const int bits = 64 - __builtin_clzll(v | 1);
+  const int guess = (bits * 1233) >> 12;
+  return guess + ((v | 1) >= kPow10Int[guess] ? 1 : 0);  // 0 has one digit too
+}
+
+std::optional<FixedText> fixed_fast_text(double value, int decimals, bool fmt) {
   static constexpr double kPow10[kMaxFastDecimals + 1] = {1e0, 1e1, 1e2, 1e3, 1e4,
                                                          1e5, 1e6, 1e7, 1e8, 1e9};
-  if (decimals > kMaxFastDecimals) return nullptr;
+  if (decimals > kMaxFastDecimals) return std::nullopt;
   const double magnitude = std::fabs(value);
   const double scaled = magnitude * kPow10[decimals];
-  if (!(scaled < 0x1p53)) return nullptr;  // also NaN and infinities
+  if (!(scaled < 0x1p53)) return std::nullopt;  // also NaN and infinities
   // Truncation is floor here (0 <= scaled < 2^53), without a library call.
   const auto whole_units = static_cast<std::uint64_t>(scaled);
   const auto whole = static_cast<double>(whole_units);
@@ -118,18 +160,45 @@ const char* fixed_fast_text(char (&text)[kFastTextBuffer], double value, int dec
     round_up = above_tie > 0.0 || (above_tie == 0.0 && odd);
   }
   const std::uint64_t units = whole_units + (round_up ? 1 : 0);
-  // Written from the right: the decimals, the point, the whole part (at least "0"), the sign.
-  char* const end = text + kFastTextBuffer;
-  char* p = end;
-  std::uint64_t rest = units;
-  for (int i = 0; i < decimals; ++i, rest /= 10) *--p = static_cast<char>('0' + rest % 10);
-  if (decimals > 0) *--p = '.';
-  // The whole part two digits per division.
+  // The whole part without a division: floor(|value|) * 10^decimals <= units (both sides
+  // round monotonically), and rounding up carries at most once into the whole part.
+  FixedText t;
+  const std::uint64_t scale = kPow10Int[decimals];
+  t.whole = static_cast<std::uint64_t>(magnitude);
+  t.fraction = units - t.whole * scale;
+  if (t.fraction >= scale) {
+    ++t.whole;
+    t.fraction -= scale;
+  }
+  t.shown = decimals;
+  if (fmt) {  // FMT drops trailing zeros, then the point
+    if (t.fraction == 0) t.shown = 0;
+    for (; t.shown > 0 && t.fraction % 10 == 0; --t.shown) t.fraction /= 10;
+  }
+  t.negative = std::signbit(value) && !(fmt && t.whole == 0 && t.shown == 0);  // "-0" as "0"
+  const int length = (t.negative ? 1 : 0) + decimal_digits(t.whole) +
+                     (t.shown > 0 ? 1 + t.shown : 0);
+  t.length = static_cast<std::size_t>(length);
+  return t;
+}
+
+// Writes the text so that it ends at `end` (t.length bytes before it), from the right, two
+// digits per division.
+void write_fixed_text(const FixedText& t, char* end) {
   static constexpr char kPairs[] =
       "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
       "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
       "8081828384858687888990919293949596979899";
-  for (; rest >= 100; rest /= 100) {
+  char* p = end;
+  std::uint64_t rest = t.fraction;
+  int digits = t.shown;
+  for (; digits >= 2; digits -= 2, rest /= 100) {
+    p -= 2;
+    std::memcpy(p, kPairs + 2 * (rest % 100), 2);
+  }
+  if (digits == 1) *--p = static_cast<char>('0' + rest);
+  if (t.shown > 0) *--p = '.';
+  for (rest = t.whole; rest >= 100; rest /= 100) {
     p -= 2;
     std::memcpy(p, kPairs + 2 * (rest % 100), 2);
   }
@@ -139,24 +208,16 @@ const char* fixed_fast_text(char (&text)[kFastTextBuffer], double value, int dec
   } else {
     *--p = static_cast<char>('0' + rest);
   }
-  if (std::signbit(value)) *--p = '-';
-  char* last = end;
-  if (fmt && decimals > 0) {
-    while (last[-1] == '0') --last;  // stops at the '.' at the latest
-    if (last[-1] == '.') --last;
-  }
-  if (fmt && last - p == 2 && p[0] == '-' && p[1] == '0') ++p;
-  last_out = last;
-  return p;
+  if (t.negative) *--p = '-';
 }
 
-// The fast path's text appended to `out` in one append; false outside the fast path.
+// The fast path's text appended to `out` in place; false outside the fast path.
 bool append_fixed_fast(std::string& out, double value, int decimals, bool fmt) {
-  char text[kFastTextBuffer];
-  const char* last = nullptr;
-  const char* const first = fixed_fast_text(text, value, decimals, fmt, last);
-  if (!first) return false;
-  out.append(first, static_cast<std::size_t>(last - first));
+  const std::optional<FixedText> t = fixed_fast_text(value, decimals, fmt);
+  if (!t) return false;
+  const std::size_t at = out.size();
+  out.resize(at + t->length);
+  write_fixed_text(*t, out.data() + at + t->length);
   return true;
 }
 
@@ -196,14 +257,11 @@ void append_fmt(std::string& out, double value, int decimals) {
 }
 
 char* write_fmt_fast(char* dest, double value, int decimals) {
-  char text[kFastTextBuffer];
-  const char* last = nullptr;
-  const char* const first =
-      fixed_fast_text(text, value, std::clamp(decimals, 0, kMaxDecimals), /*fmt=*/true, last);
-  if (!first) return nullptr;
-  const auto n = static_cast<std::size_t>(last - first);
-  std::memcpy(dest, first, n);
-  return dest + n;
+  const std::optional<FixedText> t =
+      fixed_fast_text(value, std::clamp(decimals, 0, kMaxDecimals), /*fmt=*/true);
+  if (!t) return nullptr;
+  write_fixed_text(*t, dest + t->length);
+  return dest + t->length;
 }
 
 std::string fix(double value, int decimals) {
@@ -298,7 +356,7 @@ std::optional<double> parse_number(std::string_view text) {
   text = trim(text);
   const DecimalScan scan = scan_decimal(text);
   if (!scan.valid) return std::nullopt;
-  if (scan.exact) return scan.exact;
+  if (scan.exact) return scan.value;
   const std::string_view unsigned_or_minus =
       text.front() == '+' ? text.substr(1) : text;
   const char* const end = unsigned_or_minus.data() + unsigned_or_minus.size();
@@ -333,100 +391,6 @@ std::optional<bool> parse_bool(std::string_view text) {
   if (iequals(text, "true") || iequals(text, "yes") || iequals(text, "on")) return true;
   if (iequals(text, "false") || iequals(text, "no") || iequals(text, "off")) return false;
   return std::nullopt;
-}
-
-KeyValueReader::KeyValueReader(std::string_view text, char separator, bool respect_braces)
-    : text_(text), separator_(separator), respect_braces_(respect_braces) {}
-
-namespace {
-
-// Bytes that end a run of a piece's ordinary bytes: '=', '{' and, in the table for the usual
-// separator, ','. A table, so the scan costs a load and a test per byte.
-struct PieceStops {
-  bool stop[256];
-  constexpr explicit PieceStops(char separator) : stop() {
-    stop[static_cast<unsigned char>('=')] = true;
-    stop[static_cast<unsigned char>('{')] = true;
-    stop[static_cast<unsigned char>(separator)] = true;
-  }
-};
-constexpr PieceStops kCommaStops(',');
-constexpr PieceStops kStops('=');  // no separator in it: compared byte by byte
-
-// The end of the run of ordinary bytes from `i`: at a separator, '=', '{' or `n`.
-std::size_t run_end(const char* text, std::size_t i, std::size_t n, char separator) {
-  const auto stops = [](const PieceStops& table, char c) {
-    return table.stop[static_cast<unsigned char>(c)];
-  };
-  if (separator == ',') {
-    // Four bytes per bounds check: most runs are a key or a number of a few bytes.
-    for (; i + 4 <= n; i += 4) {
-      if (stops(kCommaStops, text[i])) return i;
-      if (stops(kCommaStops, text[i + 1])) return i + 1;
-      if (stops(kCommaStops, text[i + 2])) return i + 2;
-      if (stops(kCommaStops, text[i + 3])) return i + 3;
-    }
-    while (i < n && !stops(kCommaStops, text[i])) ++i;
-  } else {
-    while (i < n && text[i] != separator && !stops(kStops, text[i])) ++i;
-  }
-  return i;
-}
-
-// The end of the piece that starts at `start`: the next separator outside {...} (braces count
-// only when asked; an unmatched '}' is an ordinary byte, an unclosed '{' runs to the end).
-// Also the first '=' of the piece, wherever it is (npos if none), found in the same pass.
-// One call site: inlined into next(), which a NODE_REPORT calls nine times.
-std::size_t piece_end(std::string_view all, std::size_t start, char separator, bool braces,
-                      std::size_t& equals) {
-  const char* const text = all.data();
-  const std::size_t n = all.size();
-  std::size_t first_equals = std::string_view::npos;
-  std::size_t i = start;
-  while (true) {
-    i = run_end(text, i, n, separator);
-    if (i == n || text[i] == separator) break;
-    if (text[i] == '=') {
-      if (first_equals == std::string_view::npos) first_equals = i;
-      ++i;
-      continue;
-    }
-    if (!braces) {  // a '{' is an ordinary byte
-      ++i;
-      continue;
-    }
-    // A '{': on to the byte after its matching '}' (an '=' inside still counts as the first).
-    int depth = 1;
-    for (++i; i < n && depth > 0; ++i) {
-      if (text[i] == '=' && first_equals == std::string_view::npos) first_equals = i;
-      depth += text[i] == '{' ? 1 : text[i] == '}' ? -1 : 0;
-    }
-  }
-  equals = first_equals;
-  return i;
-}
-
-}  // namespace
-
-bool KeyValueReader::next(KeyValue& kv) {
-  const char* const text = text_.data();
-  while (start_ <= text_.size()) {
-    std::size_t equals = 0;
-    const std::size_t end = piece_end(text_, start_, separator_, respect_braces_, equals);
-    const std::size_t start = start_;
-    start_ = end + 1;
-    // Views built from positions known to be in range (no substr checks).
-    if (equals == std::string_view::npos) {
-      const std::string_view piece = trim(std::string_view(text + start, end - start));
-      if (piece.empty()) continue;
-      kv = KeyValue{piece, {}, false};
-    } else {
-      kv = KeyValue{trim(std::string_view(text + start, equals - start)),
-                    trim(std::string_view(text + equals + 1, end - equals - 1)), true};
-    }
-    return true;
-  }
-  return false;
 }
 
 std::vector<KeyValue> split_key_values(std::string_view text, char separator, bool respect_braces) {

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "base/key_value_reader.hpp"
 #include "base/text.hpp"
 
 namespace base {
