@@ -70,7 +70,8 @@ void Driver::dispatch(std::string_view variable, std::string_view value, double 
     return;
   }
   // Each message: its module's parser, then its handler; a parse failure is one warning.
-  auto route = [&](auto parse, auto handle) {
+  // (The parser and handler by reference: a closure passed by value went through memory.)
+  auto route = [&](const auto& parse, const auto& handle) {
     const auto parsed = parse(value);
     if (parsed) {
       handle(*parsed.value);

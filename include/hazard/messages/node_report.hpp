@@ -22,6 +22,10 @@
 namespace hazard {
 
 struct NodeReport {
+  // User-provided, so that value-initialisation (optional::emplace()) does not first zero the
+  // whole object and then set every member again: a parse per node report.
+  NodeReport() {}  // NOLINT(modernize-use-equals-default)
+
   std::string name;          ///< vehicle name, case-sensitive
   double x_m = 0.0;          ///< local east
   double y_m = 0.0;          ///< local north

@@ -21,8 +21,12 @@ std::optional<double> number_field(std::string_view key, std::optional<std::stri
                                    std::string& error) {
   if (!text) return std::nullopt;
   const auto v = base::parse_number(*text);
-  if (!v && error.empty()) error = field_value(key, *text) + " is not a finite number";
+  if (!v && error.empty()) error = not_a_number(key, *text);
   return v;
+}
+
+std::string not_a_number(std::string_view key, std::string_view value) {
+  return field_value(key, value) + " is not a finite number";
 }
 
 std::vector<std::string_view> Fields::unknown_keys(

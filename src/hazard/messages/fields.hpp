@@ -34,6 +34,9 @@ class Fields {
 /// Fields::number's rule for a value found some other way (a one-pass parser: node_report.cpp).
 std::optional<double> number_field(std::string_view key, std::optional<std::string_view> text,
                                    std::string& error);
+/// The error of a field whose value is no finite number: "field 'X' value 'abc' is not a
+/// finite number".
+std::string not_a_number(std::string_view key, std::string_view value);
 
 /// Whether `text` holds a control byte (below 0x20, or 0x7F): names and labels must not, since
 /// they reach variable names, postings and log lines.

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "base/key_value_reader.hpp"
 #include "fields.hpp"
 #include "hazard/ranges.hpp"
 
@@ -65,6 +66,17 @@ std::optional<double> optional_number(Field text) {
   return text ? base::parse_number(*text) : std::nullopt;
 }
 
+// A required number's text read into a plain double: ten reports a second per vehicle, and a
+// std::optional<double> built in memory and then copied whole costs a stalled load each.
+enum class NumberText { kAbsent, kNumber, kNotANumber };
+NumberText read_number(Field text, double& out) {
+  if (!text) return NumberText::kAbsent;
+  const std::optional<double> v = base::parse_number(*text);
+  if (!v) return NumberText::kNotANumber;
+  out = *v;
+  return NumberText::kNumber;
+}
+
 // A LAT/LON-only position through the placement, or the reason it cannot be placed.
 std::optional<glm::dvec2> place_lat_lon(const NodeFields& f, const GeoPlacement* placement,
                                         std::string& error) {
@@ -120,42 +132,40 @@ Parsed<NodeReport> parse_node_report(std::string_view text, const GeoPlacement* 
   Parsed<NodeReport> result;
   NodeReport& r = result.value.emplace();
   std::string error;
-  if (!detail::valid_vehicle_name("NAME", f.name, error)) return Parsed<NodeReport>::fail(error);
+  const auto fail = [](std::string why) { return Parsed<NodeReport>::fail(std::move(why)); };
+  if (!detail::valid_vehicle_name("NAME", f.name, error)) return fail(error);
   r.name.assign(f.name->data(), f.name->size());
 
-  const auto x = number_field("X", f.x, error);
-  const auto y = number_field("Y", f.y, error);
+  double x = 0.0, y = 0.0, spd = 0.0, hdg = 0.0;
+  const NumberText x_text = read_number(f.x, x);
+  const NumberText y_text = read_number(f.y, y);
   const Field spd_text = f.spd ? f.spd : f.speed;
   const Field hdg_text = f.hdg ? f.hdg : f.heading;
-  const auto spd = optional_number(spd_text);
-  const auto hdg = optional_number(hdg_text);
-  if (!error.empty()) return Parsed<NodeReport>::fail(error);
-  if (spd_text && !spd) {
-    return Parsed<NodeReport>::fail(detail::field_value("SPD", *spd_text) +
-                                    " is not a finite number");
-  }
-  if (hdg_text && !hdg) {
-    return Parsed<NodeReport>::fail(detail::field_value("HDG", *hdg_text) +
-                                    " is not a finite number");
-  }
-  std::optional<glm::dvec2> position;
-  if (x && y) {
-    position = glm::dvec2{*x, *y};
+  const NumberText spd_read = read_number(spd_text, spd);
+  const NumberText hdg_read = read_number(hdg_text, hdg);
+  // The first field at fault names the error: X, Y, SPD, HDG, then what is missing.
+  if (x_text == NumberText::kNotANumber) return fail(detail::not_a_number("X", *f.x));
+  if (y_text == NumberText::kNotANumber) return fail(detail::not_a_number("Y", *f.y));
+  if (spd_read == NumberText::kNotANumber) return fail(detail::not_a_number("SPD", *spd_text));
+  if (hdg_read == NumberText::kNotANumber) return fail(detail::not_a_number("HDG", *hdg_text));
+  if (x_text == NumberText::kNumber && y_text == NumberText::kNumber) {
+    r.x_m = x;
+    r.y_m = y;
   } else if (f.lat && f.lon) {
-    position = place_lat_lon(f, placement, error);
-    if (!position) return Parsed<NodeReport>::fail(error);
+    const std::optional<glm::dvec2> placed = place_lat_lon(f, placement, error);
+    if (!placed) return fail(error);
+    r.x_m = placed->x;
+    r.y_m = placed->y;
     r.placed_from_lat_lon = true;
   } else {
-    return Parsed<NodeReport>::fail(missing_field(!x ? "X" : "Y"));
+    return fail(missing_field(x_text == NumberText::kAbsent ? "X" : "Y"));
   }
-  if (!spd) return Parsed<NodeReport>::fail(missing_field("SPD"));
-  if (!hdg) return Parsed<NodeReport>::fail(missing_field("HDG"));
-  r.x_m = position->x;
-  r.y_m = position->y;
-  r.speed_mps = *spd;
-  r.heading_deg = base::norm360(*hdg);
+  if (spd_read == NumberText::kAbsent) return fail(missing_field("SPD"));
+  if (hdg_read == NumberText::kAbsent) return fail(missing_field("HDG"));
+  r.speed_mps = spd;
+  r.heading_deg = base::norm360(hdg);
   const std::string why = out_of_range(f, {r.x_m, r.y_m}, r.speed_mps, spd_text.value_or(""));
-  if (!why.empty()) return Parsed<NodeReport>::fail(why);
+  if (!why.empty()) return fail(why);
   if (keep == NodeReportKeep::kPose) return result;  // nothing below can reject the report
   r.lat_deg = optional_number(f.lat);
   r.lon_deg = optional_number(f.lon);

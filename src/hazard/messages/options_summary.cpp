@@ -24,7 +24,7 @@ Result parse_options_summary(std::string_view text) {
     for (auto [key, value] : {std::pair{"width", *width}, std::pair{"exp", *exp},
                               std::pair{"pclass", *pclass}}) {
       if (!base::parse_number(value)) {
-        return Result::fail(detail::field_value(key, value) + " is not a finite number");
+        return Result::fail(detail::not_a_number(key, value));
       }
     }
     if (const auto max = f.get("max")) {
