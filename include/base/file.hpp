@@ -12,6 +12,8 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <string_view>
+#include <vector>
 
 namespace base {
 
@@ -25,5 +27,39 @@ struct FileText {
 };
 
 FileText read_regular_file(const std::string& path, std::size_t max_bytes = kMaxInputFileBytes);
+
+/// The whole of a file for a reader that takes every byte at once and may be given large ones
+/// (hazard_replay's logs, hundreds of MB). A regular file is mapped read-only: no copy and no
+/// memory of our own beyond the page cache's. A FIFO (a pipe, e.g. `<(zcat run.alog.gz)`), or
+/// a regular file that cannot be mapped (those of /proc, which say they are empty), is read to
+/// its end. A directory, socket or device is refused with a reason, as is more than
+/// `max_bytes`. A mapped file cut short by another process while it is read faults (SIGBUS),
+/// as in any program that maps its input: read a copy of a file that is still being written.
+class WholeFile {
+ public:
+  /// The file's bytes, or nullopt with `problem` set (as read_regular_file's reasons).
+  static std::optional<WholeFile> open(const std::string& path, std::size_t max_bytes,
+                                       std::string& problem);
+  WholeFile(WholeFile&& other) noexcept;
+  WholeFile& operator=(WholeFile&& other) noexcept;
+  WholeFile(const WholeFile&) = delete;
+  WholeFile& operator=(const WholeFile&) = delete;
+  ~WholeFile();
+
+  /// Valid while this object lives, and across moves (the bytes never move).
+  std::string_view text() const {
+    return mapped_ ? std::string_view(static_cast<const char*>(mapped_), mapped_bytes_)
+                   : std::string_view(read_.data(), read_.size());
+  }
+  bool mapped() const { return mapped_ != nullptr; }
+
+ private:
+  WholeFile() = default;
+  void unmap();
+
+  void* mapped_ = nullptr;
+  std::size_t mapped_bytes_ = 0;
+  std::vector<char> read_;  // when not mapped (a vector's bytes stay put when it is moved)
+};
 
 }  // namespace base

@@ -1,6 +1,7 @@
 #include "base/file.hpp"
 
 #include <fcntl.h>
+#include <sys/mman.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -31,15 +32,43 @@ struct Descriptor {
   }
 };
 
+/// `what` followed by the reason errno gives.
+std::string cannot(const char* what) { return std::string(what) + std::strerror(errno); }
+
+// Reads `fd` to its end into `bytes`, a block at a time; false with `problem` set on an error
+// or past `max_bytes`.
+bool read_to_end(int fd, std::size_t max_bytes, std::vector<char>& bytes, std::string& problem) {
+  constexpr std::size_t kBlockBytes = std::size_t{1} << 20;
+  std::size_t used = 0;
+  while (true) {
+    if (bytes.size() - used < kBlockBytes) bytes.resize(used + kBlockBytes);
+    const ssize_t got = ::read(fd, bytes.data() + used, bytes.size() - used);
+    if (got < 0) {
+      if (errno == EINTR) continue;
+      problem = cannot("cannot be read: ");
+      return false;
+    }
+    if (got == 0) break;
+    used += static_cast<std::size_t>(got);
+    if (used > max_bytes) {
+      problem = too_large(max_bytes);
+      return false;
+    }
+  }
+  bytes.resize(used);
+  bytes.shrink_to_fit();
+  return true;
+}
+
 }  // namespace
 
 FileText read_regular_file(const std::string& path, std::size_t max_bytes) {
   // O_NONBLOCK: opening a FIFO without a writer returns at once instead of waiting for one.
   const Descriptor file{::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC)};
-  if (file.fd < 0) return {std::nullopt, std::string("cannot be opened: ") + std::strerror(errno)};
+  if (file.fd < 0) return {std::nullopt, cannot("cannot be opened: ")};
   struct stat info {};
   if (::fstat(file.fd, &info) != 0)
-    return {std::nullopt, std::string("cannot be examined: ") + std::strerror(errno)};
+    return {std::nullopt, cannot("cannot be examined: ")};
   if (!S_ISREG(info.st_mode)) return {std::nullopt, kind_of(info.st_mode)};
   if (static_cast<unsigned long long>(info.st_size) > max_bytes) return {std::nullopt, too_large(max_bytes)};
 
@@ -54,7 +83,7 @@ FileText read_regular_file(const std::string& path, std::size_t max_bytes) {
     const ssize_t got = ::read(file.fd, into, want);
     if (got < 0) {
       if (errno == EINTR) continue;
-      return {std::nullopt, std::string("cannot be read: ") + std::strerror(errno)};
+      return {std::nullopt, cannot("cannot be read: ")};
     }
     if (got == 0) break;
     if (!room) {
@@ -65,6 +94,72 @@ FileText read_regular_file(const std::string& path, std::size_t max_bytes) {
   }
   text.resize(used);
   return {std::move(text), {}};
+}
+
+std::optional<WholeFile> WholeFile::open(const std::string& path, std::size_t max_bytes,
+                                         std::string& problem) {
+  // Blocking: a FIFO waits for its writer, as a reader of a pipe should.
+  const Descriptor file{::open(path.c_str(), O_RDONLY | O_CLOEXEC)};
+  if (file.fd < 0) {
+    problem = cannot("cannot be opened: ");
+    return std::nullopt;
+  }
+  struct stat info {};
+  if (::fstat(file.fd, &info) != 0) {
+    problem = cannot("cannot be examined: ");
+    return std::nullopt;
+  }
+  if (!S_ISREG(info.st_mode) && !S_ISFIFO(info.st_mode)) {
+    problem = kind_of(info.st_mode);
+    return std::nullopt;
+  }
+  WholeFile whole;
+  if (S_ISREG(info.st_mode) && info.st_size > 0) {
+    const auto size = static_cast<unsigned long long>(info.st_size);
+    if (size > max_bytes) {
+      problem = too_large(max_bytes);
+      return std::nullopt;
+    }
+    int flags = MAP_PRIVATE;
+#ifdef MAP_POPULATE
+    flags |= MAP_POPULATE;  // the page tables filled in one call, not one fault per page
+#endif
+    void* const mapped = ::mmap(nullptr, static_cast<std::size_t>(size), PROT_READ, flags,
+                                file.fd, 0);
+    if (mapped != MAP_FAILED) {
+      whole.mapped_ = mapped;
+      whole.mapped_bytes_ = static_cast<std::size_t>(size);
+      return whole;
+    }
+  }
+  if (!read_to_end(file.fd, max_bytes, whole.read_, problem)) return std::nullopt;
+  return whole;
+}
+
+WholeFile::WholeFile(WholeFile&& other) noexcept
+    : mapped_(other.mapped_), mapped_bytes_(other.mapped_bytes_), read_(std::move(other.read_)) {
+  other.mapped_ = nullptr;
+  other.mapped_bytes_ = 0;
+}
+
+WholeFile& WholeFile::operator=(WholeFile&& other) noexcept {
+  if (this != &other) {
+    unmap();
+    mapped_ = other.mapped_;
+    mapped_bytes_ = other.mapped_bytes_;
+    read_ = std::move(other.read_);
+    other.mapped_ = nullptr;
+    other.mapped_bytes_ = 0;
+  }
+  return *this;
+}
+
+WholeFile::~WholeFile() { unmap(); }
+
+void WholeFile::unmap() {
+  if (mapped_) ::munmap(mapped_, mapped_bytes_);
+  mapped_ = nullptr;
+  mapped_bytes_ = 0;
 }
 
 }  // namespace base

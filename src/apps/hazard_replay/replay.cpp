@@ -2,17 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <limits>
-#include <memory>
 #include <ostream>
 
 #include "app_support.hpp"
 #include "hazard/config.hpp"
 #include "hazard/driver.hpp"
 #include "hazard/engine.hpp"
+#include "base/file.hpp"
 #include "base/text.hpp"
 #include "moos/alog.hpp"
 #include "moos/mission.hpp"
@@ -25,60 +23,22 @@ namespace {
 namespace fs = std::filesystem;
 using base::fix;
 
-// A growable byte buffer that, unlike std::vector<char>, does not zero what read() will fill.
-class TextBuffer {
- public:
-  char* data() { return data_.get(); }
-  const char* data() const { return data_.get(); }
-  std::size_t size() const { return size_; }
-  /// Room for `more` bytes after size(); returns where they go (commit them with grow()).
-  char* reserve_more(std::size_t more) {
-    if (capacity_ - size_ < more) {
-      const std::size_t capacity = std::max(size_ + more, capacity_ * 2);
-      std::unique_ptr<char[]> bigger(new char[capacity]);  // default-initialised: not zeroed
-      if (size_ > 0) std::memcpy(bigger.get(), data_.get(), size_);
-      data_ = std::move(bigger);
-      capacity_ = capacity;
-    }
-    return data_.get() + size_;
-  }
-  void grow(std::size_t bytes) { size_ += bytes; }
-
- private:
-  std::unique_ptr<char[]> data_;
-  std::size_t size_ = 0;
-  std::size_t capacity_ = 0;
-};
-
+// The bytes of the input log and its entries, which are views into them.
 struct Input {
-  TextBuffer text;                    // the whole file (moving it keeps the views valid)
-  std::vector<hazard::Mail> entries;  // views into `text`, in time order
+  base::WholeFile file;               // (moving it keeps the views valid)
+  std::vector<hazard::Mail> entries;  // in time order
   double logstart_s = 0.0;
 };
 
-// Reads in large blocks: the whole log is held, as its entries always were, but as one buffer.
-constexpr std::size_t kReadBlockBytes = std::size_t{1} << 20;
 // Bytes of an input line, about (a NODE_REPORT line is about 110): a first guess of the entries.
 constexpr std::size_t kTypicalLineBytes = 96;
 
-bool read_whole_file(const std::string& path, TextBuffer& text) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return false;
-  std::error_code size_unknown;  // a pipe, say: the blocks below still read it
-  const auto size = fs::file_size(path, size_unknown);
-  if (!size_unknown) text.reserve_more(static_cast<std::size_t>(size) + 1);
-  while (in) {
-    const std::size_t room = std::max(kReadBlockBytes, size_unknown ? 0 : std::size_t(size) + 1);
-    in.read(text.reserve_more(room), static_cast<std::streamsize>(room));
-    text.grow(static_cast<std::size_t>(in.gcount()));
-  }
-  return !in.bad();
-}
-
-std::optional<Input> read_input(const std::string& path, std::ostream& err) {
-  Input input;
-  if (!read_whole_file(path, input.text)) return std::nullopt;
-  const std::string_view all(input.text.data(), input.text.size());
+std::optional<Input> read_input(const std::string& path, std::string& problem,
+                                std::ostream& err) {
+  std::optional<base::WholeFile> file = base::WholeFile::open(path, kMaxInputLogBytes, problem);
+  if (!file) return std::nullopt;
+  Input input{std::move(*file), {}, 0.0};
+  const std::string_view all = input.file.text();
   input.entries.reserve(all.size() / kTypicalLineBytes);
   int number = 0;
   // Lines as std::getline gives them: split at '\n', a last line without one still counts.
@@ -190,9 +150,11 @@ int run(const Options& options, std::ostream& out, std::ostream& err) {
         << options.config_path << "'\n";
     return 1;
   }
-  const auto input = read_input(options.input_path, err);
+  std::string problem;
+  const auto input = read_input(options.input_path, problem, err);
   if (!input) {
-    err << "hazard_replay: cannot read input log '" << options.input_path << "'\n";
+    err << "hazard_replay: cannot read input log '" << options.input_path << "': " << problem
+        << "\n";
     return 1;
   }
 

@@ -18,6 +18,7 @@
 // warnings, events and the seed go to the error stream. Nothing depends on the wall clock except an operating-system seed when neither
 // --seed, random_seed nor seed_random = false fixes one.
 
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <iosfwd>
@@ -31,6 +32,10 @@
 namespace hazard_replay {
 
 inline constexpr const char* kDefaultAppName = "uFldHazardSensor";
+
+/// The largest input log, in bytes. A regular file is mapped (base::WholeFile), which costs no
+/// memory of ours, but its entries take about 40 bytes per line: about 1.5 GB at this bound.
+inline constexpr std::size_t kMaxInputLogBytes = std::size_t{4} << 30;
 
 /// Seeds first..last, both included.
 struct SeedRange {

@@ -1,10 +1,14 @@
 // The hazard_replay binary: bad input, reproducibility, seeds, --until, --alias, --output.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
+#include <fstream>
 #include <set>
+#include <thread>
 
 #include "scenario/reference_scenario.hpp"
 #include "base/text.hpp"
+#include "fifo_writer.hpp"
 #include "replay_support.hpp"
 
 namespace hazard_replay {
@@ -82,6 +86,40 @@ TEST(ReplayProcess, MissingFilesAndBlockExitOneNamingThem) {
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("cannot write --output file 'no/such/folder/out.alog'"),
             std::string::npos);
+}
+
+TEST(ReplayProcess, ALogThatIsNoFileOrPipeIsRefusedWithTheReason_Issue14) {
+  ScratchDir dir;
+  make_mission(dir);
+  auto r = run(dir, {"m.moos", "/dev/zero"});  // would be read until memory ran out
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("cannot read input log '/dev/zero': is a device, not a regular file"),
+            std::string::npos)
+      << r.err;
+  r = run(dir, {"m.moos", "fields"});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("cannot read input log 'fields': is a directory"), std::string::npos)
+      << r.err;
+}
+
+// A regular log is mapped, a pipe is read to its end: the same replay either way.
+TEST(ReplayProcess, ALogFromAPipeReplaysAsTheFileDoes_Issue14) {
+  ScratchDir dir;
+  make_mission(dir);
+  const std::string fifo = (dir / "pipe.alog").string();
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const std::string log = alog(small_input());
+  bool fed = false;
+  std::thread writer([&] { fed = test_support::write_fifo(fifo, log); });
+  const auto piped = run(dir, {"m.moos", "pipe.alog", "--seed=3"});
+  writer.join();
+  EXPECT_TRUE(fed);
+  const auto mapped = run(dir, {"m.moos", "in.alog", "--seed=3"});
+  ASSERT_EQ(piped.exit_code, 0) << piped.err;
+  ASSERT_EQ(mapped.exit_code, 0) << mapped.err;
+  const auto body = [](const std::string& out) { return out.substr(out.find("%% LOGSTART")); };
+  ASSERT_NE(mapped.out.find("VIEW_POLYGON"), std::string::npos);
+  EXPECT_EQ(body(piped.out), body(mapped.out));  // (the header names the input file)
 }
 
 TEST(ReplayProcess, ReplaysMailAndIterationsInTimeOrder) {
