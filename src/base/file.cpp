@@ -55,8 +55,7 @@ bool read_to_end(int fd, std::size_t max_bytes, std::vector<char>& bytes, std::s
       return false;
     }
   }
-  bytes.resize(used);
-  bytes.shrink_to_fit();
+  bytes.resize(used);  // (the capacity past it was never written: no resident memory)
   return true;
 }
 

@@ -276,10 +276,20 @@ std::string fmt(double value, int decimals) {
   return s;
 }
 
+// std::to_chars with a precision is specified "as if by printf" ("%.*g" here) in the C locale,
+// without printf's format parsing and locale lookups (an app's _STATUS carries one each cycle).
 std::string format_g(double value, int significant) {
   char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*g", significant, value);
-  return buf;
+  if (significant >= 0) {  // (a negative precision is printf's "none given": 6)
+    const auto r =
+        std::to_chars(buf, buf + sizeof buf, value, std::chars_format::general, significant);
+    if (r.ec == std::errc()) return std::string(buf, r.ptr);
+  }
+  const int length = std::snprintf(nullptr, 0, "%.*g", significant, value);
+  std::string out(static_cast<std::size_t>(std::max(length, 0)) + 1, '\0');
+  std::snprintf(out.data(), out.size(), "%.*g", significant, value);
+  out.pop_back();
+  return out;
 }
 
 std::string format_shortest(double value) {

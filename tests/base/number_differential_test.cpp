@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <optional>
 #include <random>
 #include <regex>
@@ -133,6 +134,33 @@ TEST(NumberDifferential, FixAndFmtWriteWhatPrintfWrites) {
       EXPECT_EQ(fix(v, decimals), printf_fixed(v, decimals)) << v << " " << decimals;
       EXPECT_EQ(fmt(v, decimals), printf_fmt(v, decimals)) << v << " " << decimals;
     }
+  }
+}
+
+TEST(NumberDifferential, FormatGWritesWhatPrintfWrites) {
+  const auto printf_g = [](double v, int significant) {
+    char buf[512];
+    std::snprintf(buf, sizeof buf, "%.*g", significant, v);
+    return std::string(buf);
+  };
+  std::mt19937_64 rng(2028);
+  for (int i = 0; i < 200000; ++i) {
+    const double v = value_like(rng);
+    const int significant = static_cast<int>(rng() % 18);
+    ASSERT_EQ(format_g(v, significant), printf_g(v, significant)) << v << " " << significant;
+  }
+  for (const double v : {0.0, -0.0, 0.5, 1e-5, 1e-4, 123456.0, 1234567.0, 1e300, -1e-300, 5e-324,
+                         std::numeric_limits<double>::infinity(),
+                         -std::numeric_limits<double>::infinity(),
+                         std::numeric_limits<double>::quiet_NaN(),
+                         -std::numeric_limits<double>::quiet_NaN()}) {
+    for (int significant = 0; significant <= 17; ++significant) {
+      EXPECT_EQ(format_g(v, significant), printf_g(v, significant)) << v << " " << significant;
+    }
+  }
+  for (const int significant : {-1, 40, 60}) {  // none given (6), and past 64 characters
+    EXPECT_EQ(format_g(0.1, significant), printf_g(0.1, significant)) << significant;
+    EXPECT_EQ(format_g(-1e300, significant), printf_g(-1e300, significant)) << significant;
   }
 }
 
