@@ -1,7 +1,7 @@
 #pragma once
 // Reading a whole input file, bounded and without surprises (issue 12, "Special files").
 //
-// Contract:
+// Contract (read_regular_file; WholeFile below also reads a pipe, for hazard_replay's logs):
 // - Only a regular file is read. A directory, FIFO, socket or device (/dev/zero) is refused with
 //   a reason, never read: the file is opened non-blocking, so a FIFO with no writer cannot hang
 //   the caller, and its type is checked on the open descriptor before any byte is read.

@@ -163,7 +163,7 @@ AlogViewParse parse_alog_view(std::string_view line) {
   const auto t = base::parse_number(time);
   if (!t) {
     result.kind = AlogLineKind::kMalformed;
-    result.error = "time '" + std::string(time) + "' is not a finite number";
+    result.error = "time '" + base::log_excerpt(time) + "' is not a finite number";
     return result;
   }
   if (variable.empty() || source.empty()) {

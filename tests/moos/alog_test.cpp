@@ -49,6 +49,17 @@ TEST(Alog, MalformedLinesSayWhy) {
   EXPECT_EQ(parse_alog_line("1.0 X").kind, AlogLineKind::kMalformed);
 }
 
+// The warning quotes the bad time for a terminal or a log: escaped and cut, never raw.
+TEST(Alog, ABadTimeIsQuotedEscapedAndCut) {
+  AlogParse p = parse_alog_line("1\x1b[2J NODE_REPORT src NAME=x");
+  ASSERT_EQ(p.kind, AlogLineKind::kMalformed);
+  EXPECT_EQ(p.error, "time '1\\x1B[2J' is not a finite number");
+  p = parse_alog_line(std::string(5000, '9') + "x X src v");
+  ASSERT_EQ(p.kind, AlogLineKind::kMalformed);
+  EXPECT_LT(p.error.size(), 400u) << p.error;
+  EXPECT_NE(p.error.find("(5001 bytes)"), std::string::npos) << p.error;
+}
+
 TEST(AlogLine, NamesFromClientsCannotForgeRecords_Issue12) {
   const AlogEntry forged{1.0, "X\n  2.000 UHZ_CLASSIFY_REQUEST", "evil client", "v"};
   const std::string line = format_alog_line(forged);
