@@ -137,18 +137,18 @@ Parsed<NodeReport> parse_node_report(std::string_view text, const GeoPlacement* 
   r.name.assign(f.name->data(), f.name->size());
 
   double x = 0.0, y = 0.0, spd = 0.0, hdg = 0.0;
-  const NumberText x_text = read_number(f.x, x);
-  const NumberText y_text = read_number(f.y, y);
+  const NumberText x_read = read_number(f.x, x);
+  const NumberText y_read = read_number(f.y, y);
   const Field spd_text = f.spd ? f.spd : f.speed;
   const Field hdg_text = f.hdg ? f.hdg : f.heading;
   const NumberText spd_read = read_number(spd_text, spd);
   const NumberText hdg_read = read_number(hdg_text, hdg);
   // The first field at fault names the error: X, Y, SPD, HDG, then what is missing.
-  if (x_text == NumberText::kNotANumber) return fail(detail::not_a_number("X", *f.x));
-  if (y_text == NumberText::kNotANumber) return fail(detail::not_a_number("Y", *f.y));
+  if (x_read == NumberText::kNotANumber) return fail(detail::not_a_number("X", *f.x));
+  if (y_read == NumberText::kNotANumber) return fail(detail::not_a_number("Y", *f.y));
   if (spd_read == NumberText::kNotANumber) return fail(detail::not_a_number("SPD", *spd_text));
   if (hdg_read == NumberText::kNotANumber) return fail(detail::not_a_number("HDG", *hdg_text));
-  if (x_text == NumberText::kNumber && y_text == NumberText::kNumber) {
+  if (x_read == NumberText::kNumber && y_read == NumberText::kNumber) {
     r.x_m = x;
     r.y_m = y;
   } else if (f.lat && f.lon) {
@@ -158,7 +158,7 @@ Parsed<NodeReport> parse_node_report(std::string_view text, const GeoPlacement* 
     r.y_m = placed->y;
     r.placed_from_lat_lon = true;
   } else {
-    return fail(missing_field(x_text == NumberText::kAbsent ? "X" : "Y"));
+    return fail(missing_field(x_read == NumberText::kAbsent ? "X" : "Y"));
   }
   if (spd_read == NumberText::kAbsent) return fail(missing_field("SPD"));
   if (hdg_read == NumberText::kAbsent) return fail(missing_field("HDG"));
