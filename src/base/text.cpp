@@ -130,7 +130,7 @@ constexpr std::uint64_t kPow10Int[17] = {1,
                                          1000000000000000,
                                          10000000000000000};
 
-// Decimal digits of v (at least 1): from its bit width (1233 / 4096 is just above log10(2)),
+// Decimal digits of v (at least 1): from its bit width (1233 / 4096 is just below log10(2)),
 // corrected by one comparison.
 int decimal_digits(std::uint64_t v) {
   const int bits = 64 - __builtin_clzll(v | 1);
