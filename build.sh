@@ -11,8 +11,15 @@
 #                       HAZARD_TEST_PHASES="release sanitize" runs only the phases named
 #   ./build.sh test-release | test-sanitize | test-fuzz   one phase
 #   ./build.sh build    install dependencies and build only
+#   ./build.sh install [PREFIX]
+#                       build, then install the programs, man pages, engine libraries and
+#                       headers, CMake and pkg-config files, docs and demo missions under PREFIX
+#                       (default ~/.local; no root needed)
+#   ./build.sh package  build, then the Debian package build/package/hazardsensor_<version>_<arch>.deb
 #   ./build.sh deps     install dependencies only
 #   ./build.sh packages print the Debian packages it needs, one a line (for .ci/run)
+#
+# build, demo and test also link every program into bin/ at the top of the tree (put it on PATH).
 #
 # Dependencies are Debian packages (apt-get, as root or through sudo) and, for the
 # wire-compatibility tests and pWebViewer's browser tests only, pymoos2 and playwright from PyPI
@@ -34,6 +41,7 @@ DEBIAN_PACKAGES=(
   librsvg2-bin
   libcpp-httplib-dev chromium
   clang libclang-rt-14-dev
+  help2man dpkg-dev file lintian
 )
 # playwright drives Debian's chromium in pWebViewer's browser tests (no browser download).
 PYPI_PACKAGES=(pymoos2==0.1.0 playwright==1.65.2)
@@ -90,6 +98,44 @@ configure_and_build() {
   configure
   say "building with $JOBS jobs"
   cmake --build --preset "$PRESET" -j "$JOBS" "$@"
+  if [ "$PRESET" = release ]; then link_programs_into_bin; fi
+}
+
+# bin/ at the top of the tree: a link to every program built (the build's programs.txt lists
+# "name path" per program), as MOOS-IvP trees have, so that pAntler finds them by name.
+link_programs_into_bin() {
+  local name path
+  mkdir -p "$HERE/bin"
+  find "$HERE/bin" -maxdepth 1 -type l -delete
+  while read -r name path; do
+    [ -x "$path" ] || continue
+    case "$path" in
+      "$HERE"/*) ln -s "../${path#"$HERE"/}" "$HERE/bin/$name" ;;
+      *) ln -s "$path" "$HERE/bin/$name" ;;
+    esac
+  done <"$BUILD_DIR/programs.txt"
+  say "the programs are in $HERE/bin; to run them by name: export PATH=\"$HERE/bin:\$PATH\""
+}
+
+run_install() {
+  local prefix="${1:-$HOME/.local}"
+  install_debian_packages
+  configure_and_build
+  say "installing into $prefix"
+  cmake --install "$BUILD_DIR" --prefix "$prefix"
+  say "installed; to run the programs by name: export PATH=\"$prefix/bin:\$PATH\""
+  say "the demo: $prefix/share/hazardsensor/missions/jake/launch.sh"
+}
+
+run_package() {
+  install_debian_packages
+  configure_and_build
+  say "building the Debian package in $HERE/build/package"
+  (cd "$BUILD_DIR" && cpack -B "$HERE/build/package") >&2
+  local deb
+  deb="$(ls -t "$HERE"/build/package/hazardsensor_*.deb | head -n 1)"
+  say "package: $deb (install it with: sudo apt install $deb)"
+  printf '%s\n' "$deb"
 }
 
 run_demo() {
@@ -172,9 +218,11 @@ case "${1:-build}" in
   deps)  install_dependencies ;;
   packages) printf '%s\n' "${DEBIAN_PACKAGES[@]}" ;;
   build) install_dependencies; configure_and_build ;;
+  install) shift; run_install "$@" ;;
+  package) run_package ;;
   test)  install_dependencies; run_test_phases ;;
   test-release|test-sanitize|test-fuzz)
          install_dependencies; HAZARD_TEST_PHASES="${1#test-}" run_test_phases ;;
-  -h|--help|help) sed -n '2,17p' "$0" ;;
-  *) say "unknown job '$1' (try: demo, test, test-release, test-sanitize, test-fuzz, build, deps, packages)"; exit 2 ;;
+  -h|--help|help) sed -n '2,26p' "$0" ;;
+  *) say "unknown job '$1' (try: demo, test, test-release, test-sanitize, test-fuzz, build, install, package, deps, packages)"; exit 2 ;;
 esac

@@ -72,6 +72,9 @@ SwitchRule switch_rule(std::string name, SwitchKind kind, std::string problem,
 /// `--help` and `-h`, a flag: every program's help switch.
 SwitchRule help_switch_rule();
 
+/// `--version`, `-v` and `-version`, a flag: every program's version switch.
+SwitchRule version_switch_rule();
+
 /// A program's switches and its wording of the three errors.
 struct SwitchTable {
   std::vector<SwitchRule> rules;

@@ -2,10 +2,17 @@
 # The mission launcher shared by missions/*/launch.sh (sourced, not run). A mission's launch.sh
 # sets the variables below and calls ml_main "$@". See docs/missions.md.
 #
+# It runs from the source tree (missions/ beside CMakeLists.txt) or installed
+# (PREFIX/share/hazardsensor/missions, by cmake --install or the Debian package).
+#
 # What it does, in order:
-#   1. reads the command line (ml_usage), finds the binaries (build/release/src/apps/<app>/ or
-#      --bin-dir=), and with --moosdb=real checks that MOOSDB is on the PATH;
-#   2. makes the run folder (runs/<mission>-<timestamp>/), copies the mission's files into it,
+#   1. reads the command line (ml_usage) and the mission's processes from the `Run =` lines of
+#      its `ProcessConfig = ANTLER` block, as pAntler does (ml_antler_processes); finds the
+#      binaries by name: in --bin-dir=DIR, else in the source tree's build/release/src/apps, else
+#      (installed) on the PATH, as pAntler finds them; with --moosdb=real checks that MOOSDB is
+#      on the PATH;
+#   2. makes the run folder (runs/<mission>-<timestamp>/ in the source tree, or in the current
+#      folder when installed), copies the mission's files into it,
 #      runs the mission's prepare hook (ml_prepare, optional), starts the MOOSDB (moosdb-lite on
 #      a port the OS chooses, logging every posting to <mission>.alog; or MOOS-IvP's MOOSDB on a
 #      free port, with pLogLite writing the same .alog), and writes targ_<mission>.moos, the
@@ -26,7 +33,8 @@
 # session (setsid) with SIGKILL as its parent-death signal (setpriv --pdeathsig), so that even
 # a launcher killed with SIGKILL takes its processes with it; the stop sends SIGTERM to each
 # process group, waits, then SIGKILL. run folder/pids.txt lists "name pid" for the launcher
-# itself (first line, name "launcher") and each process it started; exits.txt "name status" for
+# itself (first line, name "launcher") and each process it started; programs.txt "name binary"
+# for each process (the binary as found, e.g. on the PATH); exits.txt "name status" for
 # each process once it has ended (0: a clean exit after SIGTERM; 128 + N: killed by signal N).
 #
 # Exit status: 0 the mission ended and was graded; 1 the mission failed (a process died, the
@@ -40,7 +48,9 @@
 #   ML_TEMPLATE         the mission file with $(PORT), $(WARP), $(SEED) (and ML_EXTRA_KEYS)
 #   ML_FILES            files copied into the run folder (array)
 #   ML_HAZARD_FILE      the ground truth, in the run folder (for the summary and the picture)
-#   ML_PROCESSES        "binary alias" per process, in start order (array; no MOOSDB, no logger)
+#   ML_PROCESSES        optional: "binary alias" per process, in start order (array); by default
+#                       the ANTLER block's Run lines but MOOSDB, pLogLite and pWebViewer, which
+#                       the launcher starts itself
 #   ML_FINAL_VEHICLES   vehicles whose graded report ends the mission (array)
 #   ML_DEFAULT_WARP     time warp when none is given
 #   ML_DEFAULT_SEED     the sensor's random_seed when --seed is not given
@@ -54,7 +64,11 @@
 # ML_BIN_<name> hold the binaries' paths), ml_extra_usage (more --help text) and
 # ml_extra_option ARG (true when it took a command-line option of its own).
 
+# The folder that holds missions/ and tools/: the source tree, or PREFIX/share/hazardsensor.
 ML_REPO="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
+if [ -f "$ML_REPO/CMakeLists.txt" ]; then ML_INSTALLED=""; else ML_INSTALLED=1; fi
+# Started by the launcher itself, whatever the ANTLER block says.
+ML_INFRASTRUCTURE=(MOOSDB pLogLite pWebViewer)
 ML_MAX_WARP=400               # the MOOS limit on MOOSTimeWarp
 ML_CONNECT_TIMEOUT_S=30       # real seconds for every process to connect
 ML_STOP_WAIT_S=5              # real seconds a process has to exit after SIGTERM
@@ -82,8 +96,8 @@ Runs the whole mission headless and ends with a score table and a picture.
   --moosdb=lite      run on moosdb-lite, which also writes the log (default)
   --moosdb=real      run on MOOS-IvP's MOOSDB (must be on the PATH); pLogLite writes the log
   --bin-dir=DIR      where the binaries are: DIR/<app>/<app> or DIR/<app>
-                     (default: build/release/src/apps of this repository)
-  --runs-dir=DIR     parent of the run folder (default: runs/ in this repository)
+                     (default: $(ml_default_bin_text))
+  --runs-dir=DIR     parent of the run folder (default: $(ml_default_runs_dir))
   --run-dir=DIR      the run folder itself (created; must not exist or be empty)
   --timeout=S        give up after S real seconds (default: $ML_MAX_SIM_S simulated seconds
                      at the warp, plus $ML_TIME_LIMIT_SLACK_S s)
@@ -109,6 +123,48 @@ Exit status: 0 graded; 1 the mission failed; 2 bad usage; 130 interrupted.
 EOF
 }
 
+ml_default_runs_dir() {
+  if [ -n "$ML_INSTALLED" ]; then printf '%s/runs' "$PWD"; else printf '%s/runs' "$ML_REPO"; fi
+}
+
+ml_default_bin_text() {
+  if [ -n "$ML_INSTALLED" ]; then printf 'the PATH'; else printf 'build/release/src/apps of the source tree'; fi
+}
+
+# ml_antler_processes FILE: "binary alias" for every `Run = binary @ ... ~ alias` line of the
+# file's `ProcessConfig = ANTLER` block (the alias defaults to the binary), in order, but the
+# processes the launcher starts itself (ML_INFRASTRUCTURE).
+ml_antler_processes() {
+  awk -v skip=" ${ML_INFRASTRUCTURE[*]} " '
+    { sub(/\/\/.*/, "") }
+    /^[ \t]*ProcessConfig[ \t]*=[ \t]*ANTLER[ \t]*$/ { in_block = 1; next }
+    in_block && /^[ \t]*}/ { in_block = 0 }
+    in_block && /^[ \t]*[Rr][Uu][Nn][ \t]*=/ {
+      line = $0
+      sub(/^[^=]*=[ \t]*/, "", line)
+      alias = ""
+      if (index(line, "~") > 0) {
+        alias = substr(line, index(line, "~") + 1)
+        gsub(/[ \t]/, "", alias)
+        line = substr(line, 1, index(line, "~") - 1)
+      }
+      sub(/@.*/, "", line)
+      gsub(/[ \t]/, "", line)
+      if (line == "" || index(skip, " " line " ") > 0) next
+      print line, (alias == "" ? line : alias)
+    }' "$1"
+}
+
+# ML_PROCESSES from the mission file's ANTLER block unless the mission lists them itself.
+ml_read_processes() {
+  declare -p ML_PROCESSES >/dev/null 2>&1 && [ "${#ML_PROCESSES[@]}" -gt 0 ] && return 0
+  local line
+  ML_PROCESSES=()
+  while IFS= read -r line; do ML_PROCESSES+=("$line"); done < <(ml_antler_processes "$ML_TEMPLATE")
+  [ "${#ML_PROCESSES[@]}" -gt 0 ] ||
+    { ml_say "$ML_TEMPLATE: no process to run (no Run line in its ProcessConfig = ANTLER block)"; exit 2; }
+}
+
 ml_is_number() { [[ "$1" =~ ^[0-9]+([.][0-9]*)?$|^[.][0-9]+$ ]]; }
 
 ml_parse_args() {
@@ -116,7 +172,7 @@ ml_parse_args() {
   ML_SEED="$ML_DEFAULT_SEED"
   ML_MOOSDB=lite
   ML_BIN_DIR=""
-  ML_RUNS_DIR="$ML_REPO/runs"
+  ML_RUNS_DIR="$(ml_default_runs_dir)"
   ML_RUN_DIR=""
   ML_TIMEOUT_S=""
   ML_PICTURE=1
@@ -161,9 +217,15 @@ ml_parse_args() {
   fi
 }
 
-# ml_find_binary APP DIR: sets ML_BIN_<app> to DIR/APP/APP or DIR/APP; false when neither is there.
+# ml_find_binary APP DIR: sets ML_BIN_<app> to DIR/APP/APP or DIR/APP (DIR empty: APP on the
+# PATH, as pAntler finds it); false when there is none.
 ml_find_binary() {
   local app="$1" dir="$2" candidate
+  if [ -z "$dir" ]; then
+    candidate="$(command -v -- "$app")" || return 1
+    printf -v "ML_BIN_${app//-/_}" '%s' "$candidate"
+    return 0
+  fi
   for candidate in "$dir/$app/$app" "$dir/$app"; do
     if [ -f "$candidate" ] && [ -x "$candidate" ]; then
       printf -v "ML_BIN_${app//-/_}" '%s' "$(cd "$(dirname "$candidate")" && pwd)/$app"
@@ -173,10 +235,13 @@ ml_find_binary() {
   return 1
 }
 
-# ML_BIN_<app> = the binary of <app>, from --bin-dir or the release build.
+# ML_BIN_<app> = the binary of <app>, from --bin-dir, the release build or (installed) the PATH.
 ml_find_binaries() {
   local dir app missing=()
-  if [ -n "$ML_BIN_DIR" ]; then dir="$ML_BIN_DIR"; else dir="$ML_REPO/build/release/src/apps"; fi
+  if [ -n "$ML_BIN_DIR" ]; then dir="$ML_BIN_DIR"
+  elif [ -z "$ML_INSTALLED" ]; then dir="$ML_REPO/build/release/src/apps"
+  else dir=""
+  fi
   local apps=(moosdb-lite moos-cli)
   for arg in "${ML_PROCESSES[@]}"; do apps+=("${arg%% *}"); done
   [ "$ML_MOOSDB" = real ] && apps+=(pLogLite)
@@ -190,8 +255,12 @@ ml_find_binaries() {
     ML_VIEW=""
   fi
   if [ "${#missing[@]}" -gt 0 ]; then
-    ml_say "missing programs: ${missing[*]} (looked in $dir)"
-    ml_say "build them first (./build.sh build), or give --bin-dir=DIR"
+    ml_say "missing programs: ${missing[*]} (looked in ${dir:-the PATH: $PATH})"
+    if [ -n "$ML_INSTALLED" ]; then
+      ml_say "put the folder that holds them on the PATH, or give --bin-dir=DIR"
+    else
+      ml_say "build them first (./build.sh build), or give --bin-dir=DIR"
+    fi
     exit 2
   fi
   if [ "$ML_MOOSDB" = real ]; then
@@ -257,6 +326,7 @@ ml_spawn() {
   ML_NAMES+=("$name")
   ML_PIDS+=("$pid")
   printf '%s %s\n' "$name" "$pid" >>"$ML_RUN_DIR/pids.txt"
+  printf '%s %s\n' "$name" "$1" >>"$ML_RUN_DIR/programs.txt"
 }
 
 ml_alive() { kill -0 "$1" 2>/dev/null; }
@@ -540,6 +610,7 @@ ml_finish() {
 
 ml_main() {
   ml_parse_args "$@"
+  ml_read_processes
   ml_find_binaries
   ml_make_run_dir
   cd "$ML_RUN_DIR" || exit 1

@@ -16,18 +16,7 @@ ML_TITLE="Large hazard field: 10,000 objects, 3 km x 3 km, four vehicles"
 ML_TEMPLATE="$ML_DIR/hazard_field_large.moos"
 ML_FILES=()
 ML_HAZARD_FILE=hazards.txt
-ML_PROCESSES=(
-  "uFldHazardSensor uFldHazardSensor"
-  "uFldHazardMetric uFldHazardMetric"
-  "pHazardMgr pHazardMgr_abe"
-  "pHazardMgr pHazardMgr_ben"
-  "pHazardMgr pHazardMgr_cal"
-  "pHazardMgr pHazardMgr_deb"
-  "uSimSurveyVehicle uSimSurveyVehicle_abe"
-  "uSimSurveyVehicle uSimSurveyVehicle_ben"
-  "uSimSurveyVehicle uSimSurveyVehicle_cal"
-  "uSimSurveyVehicle uSimSurveyVehicle_deb"
-)
+# The processes: the Run lines of the mission file's ProcessConfig = ANTLER block.
 ML_FINAL_VEHICLES=(deb)
 ML_DEFAULT_WARP=400
 ML_DEFAULT_SEED=1

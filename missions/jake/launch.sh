@@ -17,14 +17,7 @@ ML_TITLE="Jake mission (manual 13): archie searches, betty reacquires"
 ML_TEMPLATE="$ML_DIR/jake.moos"
 ML_FILES=("$ML_DIR/hazards.txt")
 ML_HAZARD_FILE=hazards.txt
-ML_PROCESSES=(
-  "uFldHazardSensor uFldHazardSensor"
-  "uFldHazardMetric uFldHazardMetric"
-  "pHazardMgr pHazardMgr_archie"
-  "pHazardMgr pHazardMgr_betty"
-  "uSimSurveyVehicle uSimSurveyVehicle_archie"
-  "uSimSurveyVehicle uSimSurveyVehicle_betty"
-)
+# The processes: the Run lines of the mission file's ProcessConfig = ANTLER block.
 ML_FINAL_VEHICLES=(betty)
 ML_DEFAULT_WARP=400
 ML_DEFAULT_SEED=3

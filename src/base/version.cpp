@@ -1,5 +1,16 @@
 #include "base/version.hpp"
 
 namespace base {
-std::string_view release_version() { return "1.0.0"; }
+
+// HAZARD_RELEASE_VERSION comes from project(... VERSION ...) in the top CMakeLists.txt.
+std::string_view release_version() { return HAZARD_RELEASE_VERSION; }
+
+std::string version_line(std::string_view program) {
+  std::string line(program);
+  line += ' ';
+  line += release_version();
+  line += " (HazardSensor)\n";
+  return line;
+}
+
 }  // namespace base

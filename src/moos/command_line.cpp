@@ -84,6 +84,12 @@ SwitchRule help_switch_rule() {
   return r;
 }
 
+SwitchRule version_switch_rule() {
+  SwitchRule r = switch_rule("--version", SwitchKind::kFlag, "");
+  r.aliases = {"-v", "-version"};
+  return r;
+}
+
 bool accepts(const SwitchRule& rule, const std::string& value) {
   switch (rule.kind) {
     case SwitchKind::kFlag: return value.empty();

@@ -115,7 +115,7 @@ std::vector<InterfaceVariable> framework_publications(const std::string& app_nam
 }
 
 std::string version_text(const std::string& app_name) {
-  return app_name + " " + std::string(base::release_version()) + " (HazardSensor)\n";
+  return base::version_line(app_name);
 }
 
 // ---- the application base ----------------------------------------------------------------

@@ -74,7 +74,7 @@ std::string help_text() {
 }
 
 std::string version_text() {
-  return "gen_hazards " + std::string(base::release_version()) + " (HazardSensor)\n";
+  return base::version_line("gen_hazards");
 }
 
 }  // namespace gen_hazards

@@ -32,6 +32,7 @@ std::string help_text() {
          "  --until=T          stop at time T (input time base) instead of the last input\n"
          "  --output=OUT.alog  write the postings to OUT.alog instead of standard output\n"
          "  --help, -h         this text\n"
+         "  --version, -v      the release, then exit\n"
          "\n"
          "Same inputs and seed give the same output, byte for byte. Warnings, events and the\n"
          "seed in use go to standard error. Exit status: 0 done, 1 a file or block problem,\n"

@@ -16,7 +16,7 @@ const moos::SwitchTable& switch_table() {
                moos::switch_rule("--score", SwitchKind::kFlag, "no value"),
                moos::switch_rule("--until", SwitchKind::kNumber, "a finite number of seconds"),
                moos::switch_rule("--output", SwitchKind::kText, "a file name"),
-               moos::help_switch_rule()};
+               moos::help_switch_rule(), moos::version_switch_rule()};
     t.bad_value = [](const std::string& arg, const moos::SwitchRule& r) {
       return r.name + " needs " + r.problem + ": '" + arg + "'";
     };
@@ -39,8 +39,9 @@ ParsedArgs parse_args(const std::vector<std::string>& args) {
   const moos::SwitchValues v = moos::parse_switches(args, switch_table());
   auto fail = [](std::string why) { return ParsedArgs{std::nullopt, std::move(why)}; };
   Options o;
-  if (v.has("--help")) {
-    o.help = true;
+  if (v.has("--help") || v.has("--version")) {
+    o.help = v.has("--help");
+    o.version = !o.help;
     return ParsedArgs{o, {}};
   }
   if (!v.errors.empty()) return fail(v.errors.front());

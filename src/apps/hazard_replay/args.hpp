@@ -2,7 +2,8 @@
 // hazard_replay's command line, read with libmoos's switch table (moos::parse_switches).
 //
 // Contract: `CONFIG.moos INPUT.alog` and the switches of switch_table(); --help or -h anywhere
-// wins over every problem beside it (as in moosdb-lite, moos-cli and gen_hazards). Otherwise the
+// wins over every problem beside it (as in moosdb-lite, moos-cli and gen_hazards), then
+// --version (-v, -version). Otherwise the
 // first problem in argument order is the error, naming the argument: a refused value
 // ("--seed needs a whole number in [0, 2^64): '--seed=x'"), an unknown switch or one without
 // its value ("unknown option '--seed'"), then missing or extra files.

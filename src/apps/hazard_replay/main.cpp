@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "HazardReplay_Info.hpp"
+#include "base/version.hpp"
 #include "args.hpp"
 #include "replay.hpp"
 
@@ -19,6 +20,10 @@ int main(int argc, char** argv) {
   const hazard_replay::Options& options = *parsed.options;
   if (options.help) {
     std::cout << hazard_replay::help_text();
+    return 0;
+  }
+  if (options.version) {
+    std::cout << base::version_line("hazard_replay");
     return 0;
   }
   if (!options.output_path) return hazard_replay::run(options, std::cout, std::cerr);

@@ -58,6 +58,7 @@ struct Options {
   std::optional<double> until_s;
   std::optional<std::string> output_path;
   bool help = false;
+  bool version = false;  ///< --version: print the release and exit
 };
 
 /// The input mail in time order and the iteration times: t0 + k / tick_hz up to end_s.

@@ -7,6 +7,7 @@ std::string help_text() {
   moos-cli poke  [OPTIONS] VAR=value ...
   moos-cli watch [OPTIONS] VAR|PATTERN ...
   moos-cli --help
+  moos-cli --version
 
 A small MOOS client for machines without MOOS. It connects to a MOOSDB (or moosdb-lite) as an
 asynchronous client.

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "MoosCli_Info.hpp"
+#include "base/version.hpp"
 #include "moos_cli.hpp"
 
 int main(int argc, char** argv) {
@@ -18,6 +19,9 @@ int main(int argc, char** argv) {
   switch (options->command) {
     case moos_cli::Command::kHelp:
       std::cout << moos_cli::help_text();
+      return moos_cli::kExitOk;
+    case moos_cli::Command::kVersion:
+      std::cout << base::version_line("moos-cli");
       return moos_cli::kExitOk;
     case moos_cli::Command::kPoke:
       return moos_cli::run_poke(*options, std::cout, std::cerr);

@@ -102,6 +102,10 @@ std::optional<Options> parse_options(const std::vector<std::string>& args, std::
   if (args.empty()) return fail("no command given");
   const std::string& command = args[0];
   if (command == "--help" || command == "-h" || command == "help") return o;
+  if (command == "--version" || command == "-v" || command == "-version") {
+    o.command = Command::kVersion;
+    return o;
+  }
   if (command == "poke") o.command = Command::kPoke;
   else if (command == "watch") o.command = Command::kWatch;
   else return fail("unknown command: " + command);

@@ -22,7 +22,7 @@ enum ExitCode {
   kExitNotWritten = 5,
 };
 
-enum class Command { kHelp, kPoke, kWatch };
+enum class Command { kHelp, kVersion, kPoke, kWatch };
 
 struct Options {
   Command command = Command::kHelp;

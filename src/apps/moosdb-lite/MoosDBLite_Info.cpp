@@ -49,7 +49,7 @@ std::string help_text() {
 }
 
 std::string version_text() {
-  return "moosdb-lite " + std::string(base::release_version()) + " (MOOS v10 protocol)\n";
+  return base::version_line("moosdb-lite");
 }
 
 }  // namespace moosdb_lite

@@ -8,7 +8,7 @@ namespace moosdb_lite {
 
 /// Full --help text, generated from the option table in options.cpp.
 std::string help_text();
-/// One line: "moosdb-lite <release> (MOOS v10 protocol)".
+/// base::version_line("moosdb-lite").
 std::string version_text();
 
 }  // namespace moosdb_lite

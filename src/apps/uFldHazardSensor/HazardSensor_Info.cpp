@@ -221,7 +221,7 @@ std::string interface_text() {
 }
 
 std::string version_text() {
-  return std::string(kAppName) + " " + std::string(base::release_version()) + " (HazardSensor)\n";
+  return base::version_line(kAppName);
 }
 
 }  // namespace ufld_hazard_sensor

@@ -70,6 +70,20 @@ TEST(ReplayArgs, HelpNeedsNoFiles) {
   EXPECT_NE(help_text().find("--until=T"), std::string::npos);
 }
 
+TEST(ReplayArgs, VersionNeedsNoFilesAndHelpWinsOverIt) {
+  for (const char* v : {"--version", "-v", "-version"}) {
+    const ParsedArgs p = parse_args({v});
+    ASSERT_TRUE(p.options) << v << ": " << p.error;
+    EXPECT_TRUE(p.options->version) << v;
+    EXPECT_FALSE(p.options->help) << v;
+  }
+  const ParsedArgs both = parse_args({"--version", "--help"});
+  ASSERT_TRUE(both.options);
+  EXPECT_TRUE(both.options->help);
+  EXPECT_FALSE(both.options->version);
+  EXPECT_NE(help_text().find("--version"), std::string::npos);
+}
+
 TEST(ReplayArgs, TheDocsSwitchTableIsTheSwitchTable) {
   const auto rows = test_support::doc_table(
       std::string(HAZARD_SOURCE_DIR) + "/docs/configuration.md", "Running offline: hazard_replay");

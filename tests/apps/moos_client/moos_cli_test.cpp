@@ -57,6 +57,16 @@ TEST(MoosCliOptions, UsageErrorsNameTheProblem) {
   EXPECT_EQ(help->command, Command::kHelp);
 }
 
+TEST(MoosCliOptions, VersionIsACommandOfItsOwn) {
+  std::string error;
+  for (const char* v : {"--version", "-v", "-version"}) {
+    const auto version = parse_options({v}, &error);
+    ASSERT_TRUE(version.has_value()) << v << ": " << error;
+    EXPECT_EQ(version->command, Command::kVersion) << v;
+  }
+  EXPECT_NE(help_text().find("moos-cli --version"), std::string::npos);
+}
+
 TEST(MoosCliOptions, EachSwitchProblemNamesSwitchAndValue) {
   std::string error;
   EXPECT_FALSE(parse_options({"poke", "--host=", "A=1"}, &error));

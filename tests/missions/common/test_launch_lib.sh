@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# The launcher's end-of-mission rule (launch_lib.sh header, step "waits"): the mission ends once
+# The launcher's rules on synthetic input. The end of a mission (launch_lib.sh header, step
+# "waits"): the mission ends once
 # the grader has evaluated every final vehicle's report; a vehicle whose last report names no
 # object is done after ML_EMPTY_REPORT_GRACE_S, and only that vehicle's own grace counts.
 # Usage: test_launch_lib.sh path/to/launch_lib.sh
@@ -55,6 +56,45 @@ ML_EMPTY_SINCE[abe]=$(( $(date +%s) - 10 ))
 check "one vehicle's grace does not end another's" 1 ml_mission_done
 ML_EMPTY_SINCE[deb]=$(( $(date +%s) - 10 ))
 check "both graces over: done" 0 ml_mission_done
+
+# The processes come from the ANTLER block's Run lines, as pAntler reads them: the alias after
+# '~' (else the binary's name), comments dropped, the launcher's own processes left out, and Run
+# lines outside the block ignored.
+cat > "$scratch/m.moos" <<'MOOS'
+ServerPort = 9000
+// Run = commented_out
+ProcessConfig = ANTLER
+{
+  MSBetweenLaunches = 100
+  Run = MOOSDB @ NewConsole = false
+  Run = pLogLite @ NewConsole = false
+  Run = pWebViewer @ NewConsole = false
+  Run = uFldHazardSensor  @ NewConsole = false   // the sensor
+  run = pHazardMgr @ NewConsole = false ~ pHazardMgr_abe
+  Run=uSimSurveyVehicle~uSimSurveyVehicle_abe
+  // Run = pNotMe @ NewConsole = false
+}
+ProcessConfig = uFldHazardSensor
+{
+  Run = not_a_process
+}
+MOOS
+antler_expected="uFldHazardSensor uFldHazardSensor
+pHazardMgr pHazardMgr_abe
+uSimSurveyVehicle uSimSurveyVehicle_abe"
+same_processes() { [ "$(ml_antler_processes "$scratch/m.moos")" = "$antler_expected" ]; }
+check "the ANTLER block's Run lines, aliases and comments" 0 same_processes
+unset ML_PROCESSES
+ML_TEMPLATE="$scratch/m.moos"
+read_three() { ml_read_processes && [ "${#ML_PROCESSES[@]}" -eq 3 ] && [ "${ML_PROCESSES[1]}" = "pHazardMgr pHazardMgr_abe" ]; }
+check "ML_PROCESSES read from the mission file" 0 read_three
+ML_PROCESSES=("a b")
+keep_own() { ml_read_processes && [ "${#ML_PROCESSES[@]}" -eq 1 ]; }
+check "a mission's own ML_PROCESSES is kept" 0 keep_own
+jake_processes() {
+  [ "$(ml_antler_processes "$(dirname "$1")/../jake/jake.moos" | wc -l)" -eq 6 ]
+}
+check "the Jake mission runs six processes besides the launcher's own" 0 jake_processes "$1"
 
 [ "$failures" -eq 0 ] || { echo "$failures check(s) failed"; exit 1; }
 echo "all checks passed"
