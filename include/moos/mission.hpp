@@ -12,6 +12,11 @@
 //   `${NAME}` follows libMOOS (`define:` lines, then the environment).
 // - `#include FILE` (path relative to the including file) inserts that file's lines; errors
 //   inside it name the included file and its line. Include cycles are errors.
+// - The whole expansion is bounded, not only its depth: at most `max_included_files` files read
+//   through `#include`, `max_expanded_lines` lines and `max_expanded_bytes` bytes in all (a
+//   file that includes the next twice, 30 deep, would otherwise expand to billions of lines).
+//   Past a bound, one error names it and the line where it was reached, and the rest of the
+//   expansion is skipped.
 // - Every problem is reported as a MissionError; parsing never throws and never stops early.
 // - `ProcessConfig = X {` (brace on the header line) is NOT a block, as in libMOOS (a mission
 //   that worked with us must work with the real MOOS): it is reported as an error naming the
@@ -23,6 +28,7 @@
 //   the line is skipped; a line with no `=` is reported and skipped (libMOOS skips it silently).
 // - A UTF-8 byte-order mark at the start of a file and CR line ends (CRLF files) are accepted.
 
+#include <cstddef>
 #include <map>
 #include <optional>
 #include <string>
@@ -65,6 +71,10 @@ struct MissionOptions {
   std::map<std::string, std::string> substitutions;
   /// Also look `$(NAME)` and `${NAME}` up in the process environment.
   bool use_environment = true;
+  /// Bounds of the whole expansion (see the contract); the defaults are far above any mission.
+  std::size_t max_included_files = 10000;
+  std::size_t max_expanded_lines = 2000000;
+  std::size_t max_expanded_bytes = std::size_t{512} * 1024 * 1024;
 };
 
 class MissionFile {

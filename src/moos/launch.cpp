@@ -2,6 +2,8 @@
 
 #include "moos/launch.hpp"
 
+#include "base/diagnostics.hpp"
+
 #include <unistd.h>
 
 #include <iostream>
@@ -41,6 +43,9 @@ int launch(int argc, const char* const* argv, const AppLaunch& app) {
       return kExitUsageError;
     case LaunchAction::kRun: break;
   }
+  // The terminal report and the warnings are diagnostics: a reader that stalls must not stop the
+  // app (its mail, its postings, its signals).
+  base::install_nonblocking_diagnostics(base::DiagnosticStreams::kStdoutAndStderr);
   const bool terminal = ::isatty(STDOUT_FILENO) != 0;
   std::cout << (terminal ? kGreen : "") << app.app_name << " launching as "
             << app_name_from(cl, app.app_name) << (terminal ? kPlain : "") << "\n\n"

@@ -81,6 +81,7 @@ class Reader {
   // ---- pass 1 -------------------------------------------------------------------------------
   /// The top file is on the include stack too, so a file that includes itself is a cycle.
   void expand_top(std::string_view content, const std::string& file_name) {
+    expanded_bytes_ = content.size();
     std::error_code ec;
     include_stack_.push_back(fs::weakly_canonical(fs::path(file_name), ec).string());
     expand(content, file_name, 0);
@@ -91,7 +92,7 @@ class Reader {
     if (base::starts_with(content, kUtf8Bom)) content.remove_prefix(kUtf8Bom.size());
     int line_no = 0;
     std::size_t start = 0;
-    while (start <= content.size()) {
+    while (start <= content.size() && !over_budget_) {
       const auto end = content.find('\n', start);
       std::string_view raw = content.substr(start, end == std::string_view::npos ? end : end - start);
       if (!raw.empty() && raw.back() == '\r') raw.remove_suffix(1);
@@ -247,7 +248,20 @@ class Reader {
     return true;
   }
 
+  /// False (after one error naming the bound) once the whole expansion is past a bound.
+  bool within_budget(std::size_t used, std::size_t bound, const char* what,
+                     const std::string& file_name, int line_no) {
+    if (used <= bound) return true;
+    over_budget_ = true;
+    error(file_name, line_no,
+          "the mission file expands to more than " + std::to_string(bound) + " " + what +
+              " (an #include fan-out?); the rest of it is ignored");
+    return false;
+  }
+
   void expand_line(std::string_view raw, const std::string& file_name, int line_no, int depth) {
+    if (!within_budget(++expanded_lines_, options_.max_expanded_lines, "lines", file_name, line_no))
+      return;
     std::string code = strip_comment_and_quotes(raw);
     code = substitute_parens(code, file_name, line_no);
     const std::string_view t = base::trim(code);
@@ -315,11 +329,17 @@ class Reader {
             "#include nested deeper than " + std::to_string(kMaxIncludeDepth) + " files");
       return;
     }
+    if (!within_budget(++included_files_, options_.max_included_files, "included files",
+                       file_name, line_no))
+      return;
     const base::FileText content = base::read_regular_file(path.string());
     if (!content.text) {
       error(file_name, line_no, "cannot read included file " + shown + ": " + content.problem);
       return;
     }
+    expanded_bytes_ += content.text->size();
+    if (!within_budget(expanded_bytes_, options_.max_expanded_bytes, "bytes", file_name, line_no))
+      return;
     include_stack_.push_back(canonical);
     expand(*content.text, shown, depth + 1);
     include_stack_.pop_back();
@@ -384,6 +404,11 @@ class Reader {
   const MissionOptions& options_;
   std::vector<MissionError>* errors_;
   std::vector<std::string> include_stack_;
+  // The whole expansion so far, against MissionOptions' bounds.
+  std::size_t included_files_ = 0;
+  std::size_t expanded_lines_ = 0;
+  std::size_t expanded_bytes_ = 0;
+  bool over_budget_ = false;
   std::vector<SourceLine> lines_;
   std::map<std::string, std::string> defines_;
 };

@@ -28,6 +28,7 @@
 #include <utility>
 
 #include "moos/limits.hpp"
+#include "base/descriptors.hpp"
 #include "base/text.hpp"
 
 namespace moos {
@@ -133,14 +134,12 @@ bool TcpClient::start() {
       return false;
     }
     int fds[2];
-    if (pipe(fds) != 0) {
+    if (!base::open_internal_pipe(fds)) {
       last_error_ = errno_text("pipe");
       return false;
     }
     wake_read_ = fds[0];
     wake_write_ = fds[1];
-    set_nonblocking(wake_read_);
-    set_nonblocking(wake_write_);
     state_ = ConnectionState::kConnecting;
   }
   thread_ = std::thread([this] { run(); });

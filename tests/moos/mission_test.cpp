@@ -448,6 +448,54 @@ TEST(MissionInclude, ASpecialFileIsRefusedAtTheIncludeLine_Issue12) {
   EXPECT_EQ(m->global("X"), "1");
 }
 
+// Each file includes the next twice, 30 deep: within the depth bound, but 2^30 files in all.
+// The total bound ends it at once with one error, and what came before is kept.
+TEST(MissionInclude, AnIncludeFanOutStopsAtTheTotalBound) {
+  const test_support::ScratchDir dir;
+  constexpr int kDepth = 30;
+  for (int i = 0; i < kDepth; ++i) {
+    write_in(dir, "f" + std::to_string(i) + ".plug",
+             "#include f" + std::to_string(i + 1) + ".plug\n#include f" +
+                 std::to_string(i + 1) + ".plug\n");
+  }
+  write_in(dir, "f" + std::to_string(kDepth) + ".plug", "Leaf = 1\n");
+  const std::string top = write_in(dir, "m.moos", "Before = yes\n#include f0.plug\nAfter = yes\n");
+  std::vector<MissionError> errors;
+  const auto m = MissionFile::load(top, {}, &errors);
+  ASSERT_TRUE(m.has_value());
+  ASSERT_EQ(errors.size(), 1u) << dump(errors).substr(0, 2000);
+  EXPECT_NE(errors[0].message.find("more than 10000 included files"), std::string::npos)
+      << errors[0].message;
+  EXPECT_EQ(m->global("Before"), "yes");
+  EXPECT_EQ(m->global("Leaf"), "1");
+  EXPECT_FALSE(m->global("After").has_value());  // the rest of the expansion is skipped
+}
+
+TEST(MissionInclude, TheTotalLineAndByteBoundsNameTheLineWhereTheyWereReached) {
+  const test_support::ScratchDir dir;
+  write_in(dir, "ten.plug", "A = 1\nB = 2\nC = 3\nD = 4\nE = 5\nF = 6\nG = 7\nH = 8\nI = 9\nJ = 10\n");
+  const std::string top = write_in(dir, "m.moos", "#include ten.plug\n#include ten.plug\nZ = 1\n");
+  MissionOptions lines;
+  lines.max_expanded_lines = 15;
+  std::vector<MissionError> errors;
+  auto m = MissionFile::load(top, lines, &errors);
+  ASSERT_EQ(errors.size(), 1u) << dump(errors);
+  EXPECT_NE(errors[0].message.find("more than 15 lines"), std::string::npos) << errors[0].message;
+  EXPECT_EQ(fs::path(errors[0].file).filename(), "ten.plug");
+  // The top file's first line, the included file's eleven (ten and the empty one after its last
+  // newline), the top file's second line, then the included file's first three: 16 lines.
+  EXPECT_EQ(errors[0].line, 3);
+  EXPECT_FALSE(m->global("Z").has_value());
+
+  MissionOptions bytes;
+  bytes.max_expanded_bytes = 110;  // the top file (42 bytes) and one include (61) fit
+  errors.clear();
+  m = MissionFile::load(top, bytes, &errors);
+  ASSERT_EQ(errors.size(), 1u) << dump(errors);
+  EXPECT_NE(errors[0].message.find("more than 110 bytes"), std::string::npos) << errors[0].message;
+  EXPECT_EQ(errors[0].line, 2);
+}
+
 TEST(MissionInclude, OtherNsplugDirectivesAreReportedUnsupported) {
   std::vector<MissionError> errors;
   const auto m = parse("#ifdef VNAME\nX = 1\n#endif\n# just a hash line = 2\n", &errors);

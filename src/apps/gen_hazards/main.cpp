@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "app_support.hpp"
+#include "base/diagnostics.hpp"
 #include "GenHazards_Info.hpp"
 #include "generator.hpp"
 #include "options.hpp"
@@ -32,6 +33,7 @@ int write_stdout(const std::string& text) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  base::install_nonblocking_diagnostics();
   const std::vector<std::string> args(argv + 1, argv + argc);
   CommandLine cli = parse_command_line(args);
   if (cli.help) return write_stdout(help_text());

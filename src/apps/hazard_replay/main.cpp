@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "HazardReplay_Info.hpp"
+#include "base/diagnostics.hpp"
 #include "base/version.hpp"
 #include "args.hpp"
 #include "replay.hpp"
@@ -11,6 +12,9 @@ int main(int argc, char** argv) {
   // Events can be many (one per detection): buffer standard error instead of one write each.
   std::ios::sync_with_stdio(false);
   std::cerr.unsetf(std::ios::unitbuf);
+  // Warnings and events are diagnostics: a standard error nobody reads must not stop the replay
+  // (after sync_with_stdio, which would replace the routing).
+  base::install_nonblocking_diagnostics();
   const std::vector<std::string> args(argv + 1, argv + argc);
   const hazard_replay::ParsedArgs parsed = hazard_replay::parse_args(args);
   if (!parsed.options) {

@@ -5,10 +5,12 @@
 #include <vector>
 
 #include "MoosCli_Info.hpp"
+#include "base/diagnostics.hpp"
 #include "base/version.hpp"
 #include "moos_cli.hpp"
 
 int main(int argc, char** argv) {
+  base::install_nonblocking_diagnostics();
   const std::vector<std::string> args(argv + 1, argv + argc);
   std::string error;
   const auto options = moos_cli::parse_options(args, &error);

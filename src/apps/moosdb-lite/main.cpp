@@ -4,7 +4,6 @@
 // --help/--version, 1 if the server cannot start (port, log file), 2 for a bad command
 // line or configuration.
 
-#include <fcntl.h>
 #include <unistd.h>
 
 #include <csignal>
@@ -18,6 +17,8 @@
 #include "hub.hpp"
 #include "moos/clock.hpp"
 #include "moos/mission.hpp"
+#include "base/descriptors.hpp"
+#include "base/diagnostics.hpp"
 #include "base/text.hpp"
 #include "options.hpp"
 
@@ -44,7 +45,7 @@ void request_stop(int) {
 void log_line(const std::string& line) { std::fprintf(stderr, "moosdb-lite: %s\n", line.c_str()); }
 
 bool install_signal_handlers() {
-  if (::pipe2(g_wake_pipe, O_NONBLOCK | O_CLOEXEC) != 0) return false;
+  if (!base::open_internal_pipe(g_wake_pipe)) return false;
   struct sigaction action {};
   action.sa_handler = request_stop;
   sigemptyset(&action.sa_mask);
@@ -99,6 +100,8 @@ int main(int argc, char** argv) {
     std::fputs(version_text().c_str(), stdout);
     return kExitOk;
   }
+  // From here on, a standard error nobody reads must not stop the server.
+  base::install_nonblocking_diagnostics();
   for (const auto& note : cli.notes) log_line("note: " + note);
   for (const auto& error : cli.errors) log_line("error: " + error);
   if (!cli.errors.empty()) return kExitBadConfiguration;

@@ -7,14 +7,17 @@
 
 #include "WebViewer.hpp"
 #include "WebViewer_Info.hpp"
+#include "base/diagnostics.hpp"
 #include "moos/launch.hpp"
 #include "offline.hpp"
 
 int main(int argc, char** argv) {
   using namespace web_viewer;
   const moos::CommandLine command_line = moos::parse_command_line(argc, argv);
-  if (!moos::first_information_switch(command_line) && is_offline(command_line))
+  if (!moos::first_information_switch(command_line) && is_offline(command_line)) {
+    base::install_nonblocking_diagnostics();
     return run_offline(command_line, std::cout, std::cerr);
+  }
   moos::AppLaunch app;
   app.app_name = kAppName;
   app.texts = {help_text, example_text, interface_text, version_text};
