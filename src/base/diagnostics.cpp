@@ -82,23 +82,23 @@ class DiagnosticBuffer : public std::streambuf {
     std::lock_guard<std::mutex> lock(mutex_);
     pending_.append(s, static_cast<std::size_t>(n));
     if (std::memchr(s, '\n', static_cast<std::size_t>(n)) || pending_.size() >= kLongLine) {
-      write_lines(false);
+      write_lines();
     }
     return n;
   }
   int sync() override {
     std::lock_guard<std::mutex> lock(mutex_);
-    write_lines(false);
+    write_lines();
     return 0;
   }
 
  private:
   static constexpr std::size_t kLongLine = 64 * 1024;
 
-  void write_lines(bool everything) {
-    const std::size_t end = pending_.size() >= kLongLine || everything
-                                ? pending_.size()
-                                : pending_.rfind('\n') + 1;  // npos + 1 == 0: nothing
+  /// The complete lines pending, or everything once a line is too long to wait for its end.
+  void write_lines() {
+    const std::size_t end = pending_.size() >= kLongLine ? pending_.size()
+                                                         : pending_.rfind('\n') + 1;  // npos: 0
     if (end == 0) return;
     standard_writer(fd_).write(std::string_view(pending_).substr(0, end));
     pending_.erase(0, end);
@@ -118,7 +118,8 @@ ssize_t cookie_write(void* cookie, const char* data, std::size_t size) {
 FILE* diagnostic_file(int fd) {
   cookie_io_functions_t functions{};
   functions.write = cookie_write;
-  FILE* file = ::fopencookie(reinterpret_cast<void*>(static_cast<std::intptr_t>(fd)), "w", functions);
+  void* cookie = reinterpret_cast<void*>(static_cast<std::intptr_t>(fd));
+  FILE* file = ::fopencookie(cookie, "w", functions);
   if (file) std::setvbuf(file, nullptr, _IOLBF, BUFSIZ);
   return file;
 }

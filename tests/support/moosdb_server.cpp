@@ -46,6 +46,16 @@ MoosdbServer::MoosdbServer(const std::string& binary, const std::vector<std::str
                 << stderr_text();
 }
 
+int wait_for_port_file(const fs::path& port_file, double timeout_s) {
+  for (const double deadline = steady_now_s() + timeout_s; steady_now_s() < deadline;) {
+    // The server writes the port and a newline to a temporary file and renames it.
+    const std::string text = read_file(port_file);
+    if (!text.empty() && text.back() == '\n') return std::atoi(text.c_str());
+    std::this_thread::sleep_for(kPollInterval);
+  }
+  return 0;
+}
+
 moos::TcpClientOptions local_client_options(int port, const std::string& name) {
   moos::TcpClientOptions options;
   options.host = "127.0.0.1";

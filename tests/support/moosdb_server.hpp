@@ -57,4 +57,8 @@ class MoosdbServer {
 /// Options of a TcpClient named `name` for a server on 127.0.0.1:`port`, the rest left default.
 moos::TcpClientOptions local_client_options(int port, const std::string& name);
 
+/// The port a server started another way (e.g. through a shell) wrote to `port_file`, once the
+/// file holds a whole line; 0 when none came within `timeout_s`.
+int wait_for_port_file(const fs::path& port_file, double timeout_s);
+
 }  // namespace test_support

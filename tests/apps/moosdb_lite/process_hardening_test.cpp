@@ -114,11 +114,7 @@ TEST(MoosdbLiteHardening, DescriptorExhaustionShedsConnectionsAndKeepsServing) {
                               port_file;
   auto child = Child::spawn("/bin/sh", {"-c", command});
   ASSERT_TRUE(child);
-  int port = 0;
-  for (const double start = steady_now_s(); port == 0 && steady_now_s() - start < 10;) {
-    std::ifstream in(port_file);
-    if (!(in >> port)) std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  }
+  const int port = test_support::wait_for_port_file(port_file, 10.0);
   ASSERT_GT(port, 0) << child->stderr_text();
   RawClient keeper;
   ASSERT_TRUE(keeper.join(port, "pKeeper", false));

@@ -5,12 +5,10 @@
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
-#include <chrono>
-#include <fstream>
 #include <string>
-#include <thread>
 
 #include "child_process.hpp"
+#include "moosdb_server.hpp"
 #include "raw_client.hpp"
 #include "scratch_files.hpp"
 #include "wire_messages.hpp"
@@ -37,11 +35,7 @@ TEST(MoosdbLiteStalledStderr, AServerWhoseStandardErrorNobodyReadsKeepsServingAn
                               " --moos_port=0 --moos_timeout=60 --port-file=" + port_file;
   auto child = Child::spawn("/bin/sh", {"-c", command});
   ASSERT_TRUE(child);
-  int port = 0;
-  for (const double start = steady_now_s(); port == 0 && steady_now_s() - start < 10;) {
-    std::ifstream in(port_file);
-    if (!(in >> port)) std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  }
+  const int port = test_support::wait_for_port_file(port_file, 10.0);
   ASSERT_GT(port, 0);
 
   for (int i = 0; i < kLoggedConnections; ++i) {
