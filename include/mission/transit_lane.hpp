@@ -1,6 +1,6 @@
 #pragma once
-// The minimum-hazard transit lane (spec 14.2, uFldHazardMetric's xpath; also uFldHazardMgr's
-// `xpath=` part, spec 13): a vertical (north-south) strip of half width w through the search
+// The minimum-hazard transit lane (uFldHazardMetric's xpath; also uFldHazardMgr's
+// `xpath=` part; docs/mission-logic.md): a vertical (north-south) strip of half width w through the search
 // region that contains the fewest hazards.
 //
 // Rule: x runs from min_x + w while x < max_x - w in 1 m steps (min_x, max_x: the region's

@@ -109,41 +109,41 @@ const std::vector<ParameterSpec>& table() {
       {"default_benign_width", "", K::kNumber, "m", "8", between(0.0, kMaxMarkerWidth_m),
        "Marker width of benign objects", "manual 7.6", &C::benign_marker_width_m},
       {"rn_algorithm", "", K::kNoEffect, "", "", {},
-       "The original's dead feature: accepted with a warning, no effect", "spec 3.2", {}},
+       "The original's dead feature: accepted with a warning, no effect", "docs/differences.md", {}},
       {"rn_uniform_pct", "", K::kNoEffect, "", "", {},
-       "The original's dead feature: accepted with a warning, no effect", "spec 3.2", {}},
+       "The original's dead feature: accepted with a warning, no effect", "docs/differences.md", {}},
       {"AppTick", "", K::kFramework, "Hz", "4", above(0.0),
        "Iterations per second (MOOS time); hazard_replay iterates at this rate",
-       "wire spec 6.3", &C::app_tick_hz},
+       "docs/protocol.md 6.3", &C::app_tick_hz},
       {"IdleAppTick", "", K::kFramework, "Hz", "", {},
        "Ours, opt-in: while nothing is to be done, iterate at this rate instead of every AppTick "
        "slot; mail wakes the app at once (docs/differences.md)",
        "include/moos/app.hpp", {}},
-      {"CommsTick", "", K::kFramework, "Hz", "", {}, "Mail fetches per second", "wire spec 6.3",
+      {"CommsTick", "", K::kFramework, "Hz", "", {}, "Mail fetches per second", "docs/protocol.md 6.3",
        {}},
       {"MaxAppTick", "", K::kFramework, "Hz", "", {}, "Iteration rate limit in iterate mode 1",
-       "wire spec 6.3", {}},
+       "docs/protocol.md 6.3", {}},
       {"IterateMode", "", K::kFramework, "", "", {}, "MOOS iterate mode 0, 1 or 2",
-       "wire spec 6.3", {}},
+       "docs/protocol.md 6.3", {}},
       {"CatchCommandMessages", "", K::kFramework, "", "", {}, "MOOS framework switch",
-       "wire spec 6.3", {}},
-      {"SortMailByTime", "", K::kFramework, "", "", {}, "MOOS framework switch", "wire spec 6.3",
+       "docs/protocol.md 6.3", {}},
+      {"SortMailByTime", "", K::kFramework, "", "", {}, "MOOS framework switch", "docs/protocol.md 6.3",
        {}},
-      {"UseMOOSComms", "", K::kFramework, "", "", {}, "MOOS framework switch", "wire spec 6.3",
+      {"UseMOOSComms", "", K::kFramework, "", "", {}, "MOOS framework switch", "docs/protocol.md 6.3",
        {}},
       {"term_report_interval", "", K::kFramework, "s", "", {},
-       "Minimum real time between terminal/AppCast reports", "wire spec 7.2", {}},
+       "Minimum real time between terminal/AppCast reports", "docs/protocol.md 7.2", {}},
       {"max_appcast_events", "", K::kFramework, "", "", {}, "Events kept in the AppCast",
-       "wire spec 7.2", {}},
+       "docs/protocol.md 7.2", {}},
       {"max_appcast_run_warnings", "", K::kFramework, "", "", {},
-       "Distinct run warnings kept in the AppCast", "wire spec 7.2", {}},
-      {"comms_policy", "", K::kFramework, "", "", {}, "AppCasting comms policy", "wire spec 7.2",
+       "Distinct run warnings kept in the AppCast", "docs/protocol.md 7.2", {}},
+      {"comms_policy", "", K::kFramework, "", "", {}, "AppCasting comms policy", "docs/protocol.md 7.2",
        {}},
-      {"app_logging", "", K::kFramework, "", "", {}, "AppCasting log capture", "wire spec 7.2",
+      {"app_logging", "", K::kFramework, "", "", {}, "AppCasting log capture", "docs/protocol.md 7.2",
        {}},
-      {"deprecated_ok", "", K::kFramework, "", "", {}, "AppCasting switch", "wire spec 7.2", {}},
+      {"deprecated_ok", "", K::kFramework, "", "", {}, "AppCasting switch", "docs/protocol.md 7.2", {}},
       {"moos_*", "", K::kFramework, "", "", {},
-       "Block versions of the MOOS command-line switches (moos_time_warp, ...)", "wire spec 6.3",
+       "Block versions of the MOOS command-line switches (moos_time_warp, ...)", "docs/protocol.md 6.3",
        {}},
   };
   return t;
@@ -272,7 +272,7 @@ Applied apply_value(EngineConfig& config, const ParameterSpec& spec, std::string
 std::string place(const ConfigEntry& e) { return e.file + ":" + std::to_string(e.line) + ": "; }
 
 /// Mission text in a warning goes through base::log_excerpt, since a mission line may hold any
-/// byte but a newline (issue 12: an ESC sequence in a value reached the terminal report).
+/// byte but a newline (an ESC sequence in a value reached the terminal report).
 std::string parameter_value(const ConfigEntry& e) {
   return "parameter '" + base::log_excerpt(e.key) + "' value '" + base::log_excerpt(e.value) + "'";
 }

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""docs/robustness.md against the test sources (issue 12).
+"""docs/robustness.md against the test sources.
 
 - Every test the document names (`Suite.Name` or `Suite.*` in code spans) is a GoogleTest test
   (or suite) of tests/; a file it names under tests/ exists.

@@ -1,4 +1,4 @@
-// AppCast string (wire spec 7.2, its two examples byte for byte), terminal frame (hazard spec 11,
+// AppCast string (docs/protocol.md 7.2, its two examples byte for byte), terminal frame (docs/uFldHazardSensor.md,
 // manual section 12) and APPCAST_REQ parsing (7.2).
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 #pragma once
-// VIEW_MARKER (spec 5.4, manual 7.6): one object of the field, drawn at start-up and on each
+// VIEW_MARKER (docs/messages.md, manual 7.6): one object of the field, drawn at start-up and on each
 // PMV_CONNECT when show_hazards is true.
 //
 // Examples: x=-52,y=-290,width=8,primary_color=green,type=triangle,label=75
