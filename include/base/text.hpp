@@ -20,7 +20,8 @@
 
 namespace base {
 
-/// Blanks as the MOOS mission reader sees them inside a line: space, tab and CR (docs/protocol.md 6.2).
+/// Blanks as the MOOS mission reader sees them inside a line: space, tab and CR
+/// (docs/protocol.md 6.2).
 inline constexpr std::string_view kBlanks = " \t\r";
 
 // ---- case, trimming, splitting ---------------------------------------------------------------

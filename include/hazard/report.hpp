@@ -1,6 +1,6 @@
 #pragma once
-// The app body of the terminal/AppCast report (docs/uFldHazardSensor.md, D32), plus the seed in use and
-// the active effects in its header block. Pure: ReportData is a snapshot of engine state, and
+// The app body of the terminal/AppCast report (docs/uFldHazardSensor.md, D32), plus the seed in use
+// and the active effects in its header block. Pure: ReportData is a snapshot of engine state, and
 // format_report turns it into text. The AppCast frame (title, warnings, events) is the app's.
 
 #include <cstdint>

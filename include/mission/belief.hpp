@@ -17,7 +17,8 @@
 // single "certain" observation (pfa = 0, pd = 1, pclass = 1) would otherwise make the belief
 // infinite and later contradicting evidence would give inf - inf = NaN.
 //
-// Set choice (the scoring of docs/mission-logic.md, "The grader"). Penalties add up over objects: a reported benign object costs
+// Set choice (the scoring of docs/mission-logic.md, "The grader"). Penalties add up over objects: a
+// reported benign object costs
 // P_fa, an unreported hazard costs P_missed, everything else costs nothing; the time term does not
 // depend on the set. So the expected penalty of a set is the sum over objects of
 //   reported:     (1 - p) * P_fa        not reported:  p * P_missed

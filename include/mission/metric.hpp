@@ -13,7 +13,8 @@
 // - Ground truth: the `hazard =` lines go through libhazard's loader (load_hazard_file_text), the
 //   same code the sensor uses, so the two can never disagree about which objects exist and what
 //   they are. `region =` (a convex polygon, else a warning) and `source =` are read here (as
-//   uFldHazardMetric reads them); `//` comments are stripped. Several hazard files load together (as the sensor, rulings
+//   uFldHazardMetric reads them); `//` comments are stripped. Several hazard files load together
+//   (as the sensor, rulings
 //   "Repeats"); the last region and source win. A missing file is the application's to report
 //   (`hazard_file_missing`).
 // - Scoring, object by object in file order: reported label and truth hazard ->

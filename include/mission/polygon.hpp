@@ -9,8 +9,8 @@
 // - A polygon is valid when it has at least 3 vertices, is convex (no reflex corner, either
 //   winding) and has a positive area; collinear vertices on an edge are allowed.
 // - Containment is inclusive of the boundary (the original's habit; docs/differences.md).
-// - The spec text is `pts={x1,y1:...}` with each coordinate FMT(.,1) (gen_hazards' region line), vertices in
-//   the order given.
+// - The spec text is `pts={x1,y1:...}` with each coordinate FMT(.,1) (gen_hazards' region line),
+//   vertices in the order given.
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>

@@ -4,8 +4,8 @@
 //
 // Contract (lawnmower)
 // - Lanes are straight lines along the lane heading (degrees, 0 = north = +y, clockwise,
-//   as everywhere in this project), spaced `2 W (1 - overlap)` apart across track, where W is the swath half
-//   width (docs/differences.md D2: W to each side).
+//   as everywhere in this project), spaced `2 W (1 - overlap)` apart across track, where W is the
+//   swath half width (docs/differences.md D2: W to each side).
 // - Coverage guarantee: every point of the region lies within W of some lane segment (the lanes
 //   without their extensions). Proof sketch: n = ceil(D / s) lanes (D = the region's extent across
 //   track, s = spacing) are centred on the region, so the outer margins are at most s/2 <= W and

@@ -1,6 +1,6 @@
 #pragma once
-// The application base (docs/protocol.md 7.1 CMOOSApp and 7.2 AppCastingMOOSApp, core-moos flavour),
-// designed so that applications stay thin and can be stepped deterministically in tests.
+// The application base (docs/protocol.md 7.1 CMOOSApp and 7.2 AppCastingMOOSApp, core-moos
+// flavour), designed so that applications stay thin and can be stepped deterministically in tests.
 //
 // Contract:
 // - An app derives from MoosApp and overrides on_start_up / on_connect_to_server / on_new_mail /
@@ -8,8 +8,8 @@
 //   base does the AppCasting bookkeeping around the hooks (libMOOS's "call the base Iterate
 //   first and PostReport last" rule is built in).
 // - The base runs on any Comms: TcpClient with the system clock, or a BusClient with a
-//   ManualClock. Time is always comms().moos_time() (= unix x warp + skew, protocol.md 1.10), and the
-//   warp is the comms's own.
+//   ManualClock. Time is always comms().moos_time() (= unix x warp + skew, protocol.md 1.10), and
+//   the warp is the comms's own.
 // - One cycle (libMOOS DoRunWork without the sleep, protocol.md 7.1):
 //     1. if the comms connected (again) since the last cycle: on_connect_to_server();
 //     2. fetch mail, sort it by time (stable; unless SortMailByTime = false), consume
@@ -282,15 +282,15 @@ class MoosApp {
   std::map<std::string, Request> requests_;  // by requester key
 };
 
-/// libMOOS's pause after each packet sent, in ms per unit of time warp (docs/protocol.md 4.3 step 4):
-/// `--moos_tw_delay_factor=F` (a number >= 0), else libMOOS's default 0.2. A high-warp mission
-/// passes 0: at warp 400 the default pauses 80 ms after every packet, so a vehicle's node reports
-/// reach the sensor in bursts of 32 simulated seconds. nullopt, with `error` naming the argument,
+/// libMOOS's pause after each packet sent, in ms per unit of time warp
+/// (docs/protocol.md 4.3 step 4): `--moos_tw_delay_factor=F` (a number >= 0), else libMOOS's
+/// default 0.2. A high-warp mission passes 0: at warp 400 the default pauses 80 ms after every
+/// packet, so a vehicle's node reports reach the sensor in bursts of 32 simulated seconds. nullopt, with `error` naming the argument,
 /// when the value is not a number >= 0.
 std::optional<double> tw_delay_factor_ms(const CommandLine& command_line, std::string* error);
 
-/// The whole life of an app as a MOOS process over TCP (protocol.md 7.1): loads the mission named on
-/// the command line (with its `--NAME=value` substitutions), resolves the settings, connects a
+/// The whole life of an app as a MOOS process over TCP (protocol.md 7.1): loads the mission named
+/// on the command line (with its `--NAME=value` substitutions), resolves the settings, connects a
 /// TcpClient, waits up to 5 MOOS s for the connection, calls start(), prints terminal reports to
 /// `out` (when TERM_REPORTING = true, or unset and `out_is_terminal`) and cycles until SIGINT or
 /// SIGTERM. Problems go to `err`. Returns the exit code: 0 after a signal, 1 if the mission cannot

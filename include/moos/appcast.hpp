@@ -1,6 +1,6 @@
 #pragma once
-// AppCasting (docs/protocol.md 7.2, docs/uFldHazardSensor.md): the report model of one application, its APPCAST
-// string, its terminal frame, and APPCAST_REQ parsing.
+// AppCasting (docs/protocol.md 7.2, docs/uFldHazardSensor.md): the report model of one application,
+// its APPCAST string, its terminal frame, and APPCAST_REQ parsing.
 //
 // Contract:
 // - appcast_string() produces exactly the core-moos item sequence of protocol.md 7.2:
@@ -81,7 +81,8 @@ class AppCast {
   unsigned run_warning_count_ = 0;
 };
 
-/// One APPCAST_REQ (protocol.md 7.2), e.g. `node=henry,app=pHostInfo,duration=3.0,key=uMAC_438,thresh=any`.
+/// One APPCAST_REQ (protocol.md 7.2), e.g.
+/// `node=henry,app=pHostInfo,duration=3.0,key=uMAC_438,thresh=any`.
 struct AppCastRequest {
   std::string key;             ///< the requester
   double duration_s = 0.0;     ///< MOOS seconds, clipped to [0, 30]

@@ -1,6 +1,6 @@
 #pragma once
-// Where a MOOS process gets its time (docs/protocol.md 1.10): real seconds since the Unix epoch, which
-// the caller multiplies by the time warp (local time) and offsets by the skew (MOOS time).
+// Where a MOOS process gets its time (docs/protocol.md 1.10): real seconds since the Unix epoch,
+// which the caller multiplies by the time warp (local time) and offsets by the skew (MOOS time).
 //
 // Contract:
 // - unix_now_s() is real, unwarped, epoch-based seconds with microsecond resolution or better.

@@ -5,8 +5,8 @@
 // Contract:
 // - Everything is little-endian whatever the host (protocol.md 1.2).
 // - The encoder writes the exact length fields; the packet header's compression byte is 0.
-// - The decoder is strict where libMOOS is lenient (protocol.md 2.7): a length below 54, a length past
-//   the bytes remaining, a negative or overlong string, or consumed != length is an error
+// - The decoder is strict where libMOOS is lenient (protocol.md 2.7): a length below 54, a length
+//   past the bytes remaining, a negative or overlong string, or consumed != length is an error
 //   that names the message index and the byte offset. It never reads out of bounds and never
 //   allocates more than the bytes it was given.
 // - PacketReader reassembles packets from arbitrary TCP segment boundaries and refuses a

@@ -6,8 +6,9 @@
 // Contract (both implementations):
 // - Subscriptions are remembered: register_* records the subscription and sends it now if
 //   connected; after every (re)connect all remembered subscriptions are sent again, in the order
-//   they were first made, BEFORE the on-connect callback runs (the server forgot them, protocol.md 1.9).
-//   They return false only for invalid arguments (empty name, comma in a pattern).
+//   they were first made, BEFORE the on-connect callback runs (the server forgot them,
+//   protocol.md 1.9). They return false only for invalid arguments (empty name, comma in a
+//   pattern).
 // - unregister_variable sends UNREGISTER only for a variable registered before (libMOOS, 4.1);
 //   unregister_wildcard always sends (if connected) and forgets the pattern pair.
 // - Posting (notify/post) while disconnected returns false and sends nothing (protocol.md 1.9).
@@ -75,7 +76,8 @@ class Comms {
   bool notify_binary(const std::string& var, const std::string& bytes,
                      std::optional<double> time_s = std::nullopt,
                      const std::string& source_aux = {});
-  /// Posts a prepared NOTIFY (type forced to 'N'); a time of -1 means "now" (libMOOS, protocol.md 2.2).
+  /// Posts a prepared NOTIFY (type forced to 'N'); a time of -1 means "now"
+  /// (libMOOS, protocol.md 2.2).
   bool post(Message notify);
 
   /// All mail received since the last call, oldest first.

@@ -29,8 +29,8 @@
 //     subscription has never delivered. Of several matching filters of one client the one
 //     with the greatest (app pattern, variable pattern) pair wins, as in the reference DB's
 //     ordered filter set.
-// - DB variables (protocol.md 5.7): DB_TIME, DB_UPTIME, DB_CLIENTS, DB_RWSUMMARY at construction and
-//   on refresh_db_variables(); DB_EVENT and DB_CLIENTS on every connect and disconnect. With
+// - DB variables (protocol.md 5.7): DB_TIME, DB_UPTIME, DB_CLIENTS, DB_RWSUMMARY at construction
+//   and on refresh_db_variables(); DB_EVENT and DB_CLIENTS on every connect and disconnect. With
 //   `db_variables = false` none is written (the in-process bus, which has no refresh timer).
 //
 // Deviations from the reference DB (docs/moos.md section 3): malformed messages are refused

@@ -14,8 +14,8 @@
 //   every remembered subscription, (3) runs the on-connect callback, then normal traffic starts.
 // - Sending: whatever was posted is sent as one packet as soon as possible, after
 //   max(server delay from the last TIMING echo, warp x tw_delay_factor ms) since the previous
-//   send (4.3 step 4). A TIMING message (own local time, protocol.md 2.6) leads the next packet when
-//   kTimingInterval_real_s has passed since the last one, and is sent alone while idle, so an
+//   send (4.3 step 4). A TIMING message (own local time, protocol.md 2.6) leads the next packet
+//   when kTimingInterval_real_s has passed since the last one, and is sent alone while idle, so an
 //   idle client sends one at least once per second (4.6); while the app's thread sends packets
 //   itself, the comms thread waits kAppTimingSlack_real_s longer, so the TIMING rides in the
 //   app's next packet. Packets are never empty.

@@ -1,6 +1,6 @@
 #pragma once
-// Wildcard subscriptions (docs/protocol.md 4.1 and 5.5): the pattern language and the string carried by
-// WILDCARD_REGISTER / WILDCARD_UNREGISTER messages.
+// Wildcard subscriptions (docs/protocol.md 4.1 and 5.5): the pattern language and the string
+// carried by WILDCARD_REGISTER / WILDCARD_UNREGISTER messages.
 //
 // Contract:
 // - wildcard_match: `*` matches any run of characters (including none), `?` exactly one; every
@@ -10,9 +10,9 @@
 //   parse_wildcard_spec (a problem is reported) so a server never matches one.
 // - format_wildcard_spec writes `AppPattern=<a>,VarPattern=<v>,Interval=<x>` with the interval
 //   in C++ default stream formatting (6 significant digits), as libMOOS does.
-// - parse_wildcard_spec accepts commas or blanks between items (pymoos2 uses spaces, protocol.md 5.5);
-//   a missing pattern is "" (matches only the empty string); a missing or unreadable interval
-//   is 0. Like the reference DB it skips what it cannot read; when `problem` is given, the
+// - parse_wildcard_spec accepts commas or blanks between items (pymoos2 uses spaces,
+//   protocol.md 5.5); a missing pattern is "" (matches only the empty string); a missing or
+//   unreadable interval is 0. Like the reference DB it skips what it cannot read; when `problem` is given, the
 //   first skipped item is described there (an item without '=', an unknown key — keys are
 //   case-sensitive —, or an interval that is not a finite number >= 0), so a server can refuse
 //   the registration with a reason instead.

@@ -1,4 +1,5 @@
-// Sensing (docs/differences.md, "Geometry and sensing"): node reports and sensor requests, the per-vehicle phase of
+// Sensing (docs/differences.md, "Geometry and sensing"): node reports and sensor requests, the
+// per-vehicle phase of
 // step(): activity, the speed and turn gates, the swath, and the entry events, sampled at the
 // latest pose or along the track of node reports (sensing_track.hpp).
 #include <algorithm>
@@ -94,8 +95,8 @@ bool Engine::gates_pass(double speed_mps, const std::optional<HeadingHistory>& h
   return true;
 }
 
-// Sampling (the default; docs/accuracy.md): the objects inside the swath at the latest pose, against the
-// objects inside at the last sensor-on iteration.
+// Sampling (the default; docs/accuracy.md): the objects inside the swath at the latest pose,
+// against the objects inside at the last sensor-on iteration.
 void Engine::update_entries(VehicleState& v, const Swath& swath, double now_s, Outputs& out) {
   scratch_inside_.clear();
   field_.grid().for_each_in_box(swath.bounds(), [&](ObjectId id, glm::dvec2 position) {

@@ -1,5 +1,5 @@
-// Visuals (docs/messages.md, "Visuals"; docs/differences.md D19): object markers and aspect axes, the swath
-// polygon, and the detection and classification cue circles.
+// Visuals (docs/messages.md, "Visuals"; docs/differences.md D19): object markers and aspect axes,
+// the swath polygon, and the detection and classification cue circles.
 #include "visuals.hpp"
 
 #include <algorithm>

@@ -1,5 +1,5 @@
-// AppCast model, string and terminal frame. Follows docs/protocol.md 7.2 (the core-moos AppCast layout,
-// byte for byte) and docs/uFldHazardSensor.md; contract in include/moos/appcast.hpp.
+// AppCast model, string and terminal frame. Follows docs/protocol.md 7.2 (the core-moos AppCast
+// layout, byte for byte) and docs/uFldHazardSensor.md; contract in include/moos/appcast.hpp.
 
 #include "moos/appcast.hpp"
 

@@ -62,7 +62,7 @@ bool Comms::register_variable(const std::string& var, double interval_s) {
     if (it == subscriptions_.end())
       subscriptions_.push_back(Subscription{false, entry});
     else
-      it->entry.interval_s = interval_s;  // registering again updates the interval (protocol.md 4.1)
+      it->entry.interval_s = interval_s;  // registering again updates the interval
   }
   transmit(register_message(var, interval_s));
   return true;

@@ -3,8 +3,8 @@
 // database_notify.cpp (5.3), database_register.cpp (5.4-5.5), database_db_variables.cpp (5.7),
 // database_server_requests.cpp (5.8) and database_mail.cpp (5.6).
 //
-// Algorithm: each call applies the rules of docs/protocol.md in order and appends mail to the pending
-// queues of the clients it concerns. At the end of every public call, the pending mail of
+// Algorithm: each call applies the rules of docs/protocol.md in order and appends mail to the
+// pending queues of the clients it concerns. At the end of every public call, the pending mail of
 // each asynchronous client is sent as one packet (protocol.md 5.6 SHOULD: deliver as soon as
 // queued), while a synchronous client's mail waits for the reply to its next packet
 // (protocol.md 5.6 MUST: no unsolicited packets). The requester's own reply is built first, so

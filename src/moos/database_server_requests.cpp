@@ -26,7 +26,8 @@ void Database::handle_server_request(ClientId id, const Message& msg, double now
 void Database::answer_all(ClientId id, std::int32_t request_id) {
   for (const Variable& var : vars_) {
     // The snapshot fields, with the request id, the write frequency in dval2 and the time
-    // of the last write relative to the DB start (-1 if never written or negative), protocol.md 5.8.
+    // of the last write relative to the DB start (-1 if never written or negative),
+    // protocol.md 5.8.
     Message m = snapshot(var);
     m.id = request_id;
     m.dval2 = var.frequency.hz;

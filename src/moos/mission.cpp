@@ -46,8 +46,8 @@ struct SourceLine {
   int line = 0;
 };
 
-/// Removes the comment and the first pair of double quotes (libMOOS verbatim quoting, protocol.md 6.1).
-/// A `//` inside that pair does not start a comment.
+/// Removes the comment and the first pair of double quotes (libMOOS verbatim quoting,
+/// protocol.md 6.1). A `//` inside that pair does not start a comment.
 std::string strip_comment_and_quotes(std::string_view raw) {
   const std::string_view lead_trimmed = base::trim(raw);
   if (base::starts_with(lead_trimmed, "//")) return {};
@@ -344,7 +344,8 @@ class Reader {
     });
   }
 
-  /// libMOOS `${NAME}`: `define:` values, then the environment, else the bare NAME (protocol.md 6.1).
+  /// libMOOS `${NAME}`: `define:` values, then the environment, else the bare NAME
+  /// (protocol.md 6.1).
   std::string substitute_braces(const std::string& code, const std::string& file, int line) {
     return substitute(code, "${", '}', file, line, [&](const std::string& name) {
       if (auto it = defines_.find(name); it != defines_.end())

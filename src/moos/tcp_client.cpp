@@ -381,7 +381,7 @@ bool TcpClient::handshake() {
     set_error("handshake: the server's reply holds no message");
     return false;
   }
-  const Message& first = reply.front();  // libMOOS looks only at the first message (protocol.md 1.7)
+  const Message& first = reply.front();  // libMOOS reads only the first message (protocol.md 1.7)
   if (first.type == msg_type::kPoison) {
     std::lock_guard<std::mutex> lock(mutex_);
     last_error_ = "refused by the server: " + first.sval;

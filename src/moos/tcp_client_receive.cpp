@@ -1,5 +1,6 @@
 // The receiving half of TcpClient (contract in tcp_client.hpp): a decoded packet from the
-// server goes to the bounded inbox; a TIMING echo at its head refines the skew (protocol.md 4.3, 4.4).
+// server goes to the bounded inbox; a TIMING echo at its head refines the skew
+// (protocol.md 4.3, 4.4).
 // The comms thread reads, or fetch() on the app's own thread; the inbox is shared under `mutex_`.
 
 #include <sys/socket.h>
@@ -141,7 +142,8 @@ void TcpClient::refine_skew(const Message& echo) {
   }
   if (async) server_delay_s_ = std::max(0.0, echo.dval2);
   if (!time_correction_) return;
-  // protocol.md 4.4: measured = Ts - (Tq + Tr) / 2; exponential filter unless the skew is exactly 0.
+  // protocol.md 4.4: measured = Ts - (Tq + Tr) / 2; exponential filter unless the skew is
+  // exactly 0.
   const double tq = echo.time;
   const double ts = echo.dval;
   const double tr = local_time();

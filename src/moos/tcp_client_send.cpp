@@ -1,6 +1,6 @@
 // The sending half of TcpClient (contract in tcp_client.hpp): posted messages wait in the outbox
-// and leave as one packet per send slot, a TIMING at its head when one is due (protocol.md 4.3). The
-// comms thread sends, or the app's own thread when it releases a batch and the slot is open.
+// and leave as one packet per send slot, a TIMING at its head when one is due (protocol.md 4.3).
+// The comms thread sends, or the app's own thread when it releases a batch and the slot is open.
 
 #include <sys/socket.h>
 
@@ -111,7 +111,8 @@ bool TcpClient::write_pending() {
   if (!write_buffer_.empty()) {
     write_buffer_.clear();
     write_offset_ = 0;
-    // Pause after each send (protocol.md 4.3 step 4): the server's requested delay or the warp delay.
+    // Pause after each send (protocol.md 4.3 step 4): the server's requested delay or the warp
+    // delay.
     const double warp_delay_s = options_.time_warp > 1
                                     ? options_.time_warp * options_.tw_delay_factor_ms / kMsPerSecond
                                     : 0.0;

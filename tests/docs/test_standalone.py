@@ -143,7 +143,7 @@ def documents(root):
 
 
 class Standalone(unittest.TestCase):
-    def test_no_outside_path_or_issue_number_in_any_tracked_file(self):
+    def test_no_tracked_file_names_an_outside_path_or_an_issue(self):
         problems = []
         for path in tracked_files(ROOT):
             text = text_of(path)

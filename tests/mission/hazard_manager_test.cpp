@@ -358,8 +358,8 @@ TEST(Manager, DetectionBeforeAnyAckIsCountedButNotWeighed) {
   EXPECT_EQ(m.belief("a")->own.detections, 1);
 }
 
-// Hostile input (found under -fsanitize=undefined,float-cast-overflow): detections anywhere, even at
-// positions no grid cell index can hold, and at negative coordinates (cell indices below zero,
+// Hostile input (found under -fsanitize=undefined,float-cast-overflow): detections anywhere, even
+// at positions no grid cell index can hold, and at negative coordinates (cell indices below zero,
 // whose key was a left shift of a negative number), are indexed without undefined behaviour.
 TEST(Manager, DetectionsAtAnyPositionAreIndexedWithoutOverflow) {
   HazardManager m(archie_config());

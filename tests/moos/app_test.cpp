@@ -1,4 +1,5 @@
-// The application base on the in-process bus with a manual clock (docs/protocol.md 6.2-6.4, 7.1, 7.2).
+// The application base on the in-process bus with a manual clock (docs/protocol.md 6.2-6.4,
+// 7.1, 7.2).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -71,7 +72,7 @@ class AppOnBus : public ::testing::Test {
   EchoApp app;
 };
 
-// ---- settings (protocol.md 6.2-6.4) ------------------------------------------------------------------
+// ---- settings (protocol.md 6.2-6.4) -------------------------------------------------------------
 
 MissionFile mission(const std::string& text, std::vector<MissionError>* errors) {
   return MissionFile::parse(text, "m.moos", {}, errors);
@@ -248,7 +249,7 @@ TEST(AppSettingsResolve, WithoutAMissionThereAreNoGlobals) {
   EXPECT_FALSE(s.global_double("LatOrigin").has_value());
 }
 
-// ---- the main loop on the bus (protocol.md 7.1) -------------------------------------------------------
+// ---- the main loop on the bus (protocol.md 7.1) -------------------------------------------------
 
 TEST_F(AppOnBus, StartUpSeesConfigAndRegistersAppCastRequests_7_2) {
   AppSettings s = settings_for();

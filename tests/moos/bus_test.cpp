@@ -1,5 +1,5 @@
-// In-process bus: MOOSDB semantics of docs/protocol.md section 5 (moos::Database), through the Comms
-// interface.
+// In-process bus: MOOSDB semantics of docs/protocol.md section 5 (moos::Database), through the
+// Comms interface.
 #include <gtest/gtest.h>
 
 #include "moos/bus.hpp"
@@ -50,7 +50,7 @@ TEST_F(BusTest, LiveNotifyReachesEverySubscriberIncludingThePublisher_5_3) {
   EXPECT_TRUE(m.is_double());
   EXPECT_EQ(m.dval, 12.5);
   EXPECT_EQ(m.source, "pA");
-  EXPECT_EQ(m.community, "alpha");  // empty community filled with the bus's (protocol.md 5.3 step 4)
+  EXPECT_EQ(m.community, "alpha");  // an empty community becomes the bus's (protocol.md 5.3)
   EXPECT_DOUBLE_EQ(m.time, 2000.0);
   EXPECT_TRUE(a->fetch().empty());  // fetch empties the inbox
 }

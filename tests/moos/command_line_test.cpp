@@ -107,7 +107,7 @@ TEST(CommandLine, ArgcArgvEntryPointMatchesTheVectorOne) {
   EXPECT_EQ(cl.moos_port, 9001);
 }
 
-// ---- information switches (docs/uFldHazardSensor.md) ------------------------------------------------------
+// ---- information switches (docs/uFldHazardSensor.md) --------------------------------------------
 
 TEST(InformationSwitch, EveryFormOfTheMoosIvpConvention_Spec2) {
   for (const char* a : {"-e", "--example", "-example"})

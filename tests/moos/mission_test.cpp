@@ -1,4 +1,5 @@
-// Mission reader: docs/protocol.md section 6.1-6.3 plus the nsplug habits of include/moos/mission.hpp.
+// Mission reader: docs/protocol.md section 6.1-6.3 plus the nsplug habits of
+// include/moos/mission.hpp.
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
@@ -39,7 +40,7 @@ std::string write_in(const test_support::ScratchDir& dir, const std::string& nam
   return (dir / name).string();
 }
 
-// ---- globals (protocol.md 6.2) -----------------------------------------------------------------------
+// ---- globals (protocol.md 6.2) ------------------------------------------------------------------
 
 TEST(MissionGlobals, FirstOccurrenceWinsCaseInsensitiveWithBlanksRemoved_6_2) {
   std::vector<MissionError> errors;
@@ -84,7 +85,7 @@ TEST(MissionGlobals, GlobalLineNamesItsPlace) {
   EXPECT_EQ(m.global("moostimewarp"), "10");
 }
 
-// ---- blocks (protocol.md 6.3) ------------------------------------------------------------------------
+// ---- blocks (protocol.md 6.3) -------------------------------------------------------------------
 
 TEST(MissionBlocks, ParametersInFileOrderWithDuplicatesAndPlaces_6_3) {
   std::vector<MissionError> errors;
@@ -196,7 +197,7 @@ TEST(MissionBlocks, LineWithoutEqualsIsReportedWithFileLineAndBlock) {
   EXPECT_EQ(m.block("pA")->lines.size(), 1u);
 }
 
-// ---- comments, quoting, line ends (protocol.md 6.1) --------------------------------------------------
+// ---- comments, quoting, line ends (protocol.md 6.1) ---------------------------------------------
 
 TEST(MissionText, CommentsWholeLineAndTrailing_6_1) {
   std::vector<MissionError> errors;
@@ -233,7 +234,7 @@ TEST(MissionText, CrLfLineEndsAndByteOrderMarkAreAccepted) {
   EXPECT_EQ(m.block("pA")->lines.at(0).line, 4);
 }
 
-// ---- ${NAME} and define: (protocol.md 6.1) -----------------------------------------------------------
+// ---- ${NAME} and define: (protocol.md 6.1) ------------------------------------------------------
 
 TEST(MissionDefines, DefineValuesSubstituteEverywhereLaterDuplicateWins_6_1) {
   std::vector<MissionError> errors;

@@ -1,4 +1,5 @@
-// TcpClient against a scripted fake server on 127.0.0.1 (docs/protocol.md 1.4-1.9, 4.3, 4.4, 4.6 and the
+// TcpClient against a scripted fake server on 127.0.0.1 (docs/protocol.md 1.4-1.9, 4.3, 4.4, 4.6
+// and the
 // vectors E, F, I, N of section 8). Every wait is bounded; the server socket is closed by RAII.
 #include "tcp_client_fixture.hpp"
 

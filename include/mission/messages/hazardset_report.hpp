@@ -6,7 +6,8 @@
 //
 // Format: '#'-separated parts. `source=<vehicle>` first, then optional `name=<report name>`,
 // optional `xpath=FMT(x,1)` (the minimum-hazard transit lane), optional `search_region=pts={...}`
-// (final reports omit it), then one part per reported object: the object spec of docs/hazard-file.md with
+// (final reports omit it), then one part per reported object: the object spec of
+// docs/hazard-file.md with
 // hr, type, width and color suppressed, i.e. `x=FMT(x,2),y=FMT(y,2),label=<label>` followed by
 // `aspect=FMT,aspect_min=FMT,aspect_max=FMT` for the aspect fields the object has (the
 // detection report carries them, rulings "Report payloads"). Shape is never known vehicle-side.

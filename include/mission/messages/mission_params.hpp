@@ -10,8 +10,8 @@
 // has a convex region.
 //
 // Parsing: keys case-insensitive, commas inside {...} do not split; a missing key keeps its
-// default (uFldHazardMetric's, docs/mission-logic.md); a key whose value is not a number is an error naming
-// the key and value; unknown keys are ignored (a later grader may add some).
+// default (uFldHazardMetric's, docs/mission-logic.md); a key whose value is not a number is an
+// error naming the key and value; unknown keys are ignored (a later grader may add some).
 
 #include <optional>
 #include <string>

@@ -146,8 +146,8 @@ std::optional<GenerationError> check_fill(const Region& region, double min_fill_
 
 long tenths(double deg) { return std::lround(deg * kTenthsPerDeg); }
 
-/// The original's aspect draw with the decisions of docs/gen_hazards.md: aspect modulo 360 (a value that
-/// rounds to 360.0 becomes 0 rather than being dropped), aspect_max from its own base, and a
+/// The original's aspect draw with the decisions of docs/gen_hazards.md: aspect modulo 360 (a value
+/// that rounds to 360.0 becomes 0 rather than being dropped), aspect_max from its own base, and a
 /// window that breaks min + max <= 90 resolved instead of printed as an error line.
 void draw_aspect(const AspectOptions& a, std::uint64_t seed, std::uint64_t object_index,
                  hazard::HazardObject& object) {

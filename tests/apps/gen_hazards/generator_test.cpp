@@ -25,7 +25,8 @@ constexpr std::uint64_t kPropertySeeds = 200;
 constexpr std::uint64_t kDistributionDraws = 100'000;
 /// Tolerance of a rate check, in binomial standard deviations (team rules).
 constexpr double kSigmas = 5.0;
-/// The documented rounding (docs/gen_hazards.md, "How a field is drawn"): each coordinate moves at most this much.
+/// The documented rounding (docs/gen_hazards.md, "How a field is drawn"): each coordinate moves at
+/// most this much.
 constexpr double kRoundingLimit_m = 0.5;
 
 std::string joined(const std::vector<std::string>& lines) {

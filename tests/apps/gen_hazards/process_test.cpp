@@ -33,7 +33,8 @@ constexpr double kBadInputDeadline_s = 1.0;
 constexpr double kRunDeadline_s = 30.0;
 /// Seeds of the property test on real output files.
 constexpr std::uint64_t kFileSeeds = 25;
-/// The documented rounding (docs/gen_hazards.md, "How a field is drawn"): each coordinate moves at most this much.
+/// The documented rounding (docs/gen_hazards.md, "How a field is drawn"): each coordinate moves at
+/// most this much.
 constexpr double kRoundingLimit_m = 0.5;
 
 const std::string kManualBox = "--polygon=-150,-75:-150,-400:400,-400:400,-75";

@@ -81,7 +81,7 @@ TEST_F(ClientWithServer, TenThousandMessagesOfEachTypeArriveInOrder_5_3) {
   ASSERT_TRUE(b->register_variable("D_VAR"));
   ASSERT_TRUE(b->register_variable("S_VAR"));
   ASSERT_TRUE(b->register_variable("B_VAR"));
-  ASSERT_TRUE(a->register_variable("D_VAR"));  // the publisher hears itself (protocol.md 5.3 step 6)
+  ASSERT_TRUE(a->register_variable("D_VAR"));  // the publisher hears itself (protocol.md 5.3)
   ASSERT_TRUE(b->flush(kConnect_s) && a->flush(kConnect_s));
   std::this_thread::sleep_for(std::chrono::milliseconds(200));  // registrations processed
   for (int i = 0; i < kMessagesPerType; ++i) {

@@ -206,7 +206,8 @@ TEST_F(HostileHttp, AHeadWithinTheBoundIsServedAndOneBeyondItIsRefused_Hardening
   expect_still_serving();
 }
 
-// The header flood of docs/robustness.md: clients that send 8 kB header lines without end took the viewer from
+// The header flood of docs/robustness.md: clients that send 8 kB header lines without end took the
+// viewer from
 // 9 MB to 775 MB resident. Each flooding connection is now answered 400 (or closed) once its
 // head passes the bound; the process stays within kFloodMemory_kB of where it started and
 // serves the page during and after the flood.
