@@ -5,7 +5,7 @@
   (or suite) of tests/; a file it names under tests/ exists.
 - Every row of the bad-input tables (the sections headed "Bad input: ...") names at least one
   test, no two rows name the same tests, and the count the document gives is the number of rows
-  (at least the 80 kinds the issue asks for).
+  (at least 80 kinds).
 
 Usage: test_robustness_doc.py <repository root>
 """
