@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Writes the seed corpora of the fuzz targets (fuzz/corpus/<target>/) from the project's real
 examples: the Jake mission and hazard file, the message examples of include/*/messages, and
-MOOS packets encoded as the wire spec describes (section 2.1). Run from anywhere; the corpora
+MOOS packets encoded as docs/protocol.md describes (section 2.1). Run from anywhere; the corpora
 are committed, this script only says where each seed came from and rebuilds them."""
 
 import struct
@@ -34,7 +34,7 @@ def seed_hazard_parsers():
     write("hazard_file", "latlon", "// geodesy\nsource = gen_hazards\n"
           "hazard = lat=43.8253,lon=-70.3304,label=a,type=hazard\n"
           "hazard = x=1,y=2,label=b,hazard=false\nbogus line\n")
-    # Issue 12: the field wider than the largest double (aborted uFldHazardSensor at start-up).
+    # A known crash: the field wider than the largest double (aborted uFldHazardSensor at start-up).
     write("hazard_file", "far_apart", "hazard = x=9e307,y=0,label=a,type=hazard\n"
           "hazard = x=-9e307,y=0,label=b,type=benign\n")
     write("node_report", "example", "NAME=archie,X=10,Y=-5,LAT=43.8,LON=-70.3,SPD=1.5,HDG=90,"

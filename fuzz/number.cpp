@@ -1,4 +1,4 @@
-// Fuzz target: the fast paths of the text grammar against their references (issue 14).
+// Fuzz target: the fast paths of the text grammar against their references.
 // parse_number (the exact short-decimal path, std::from_chars, strtod) must give bit for bit
 // what the rulings' grammar, checked by a regular expression, and strtod give; fix and fmt
 // (integer arithmetic, exact ties to even, std::to_chars) and write_fmt_fast must write what C

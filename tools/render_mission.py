@@ -13,10 +13,10 @@ What is drawn (legend in docs/mission-logic.md, "The picture"):
     log win (they carry the mission's shape, colour, width and benign transparency); otherwise
     hazards are green triangles and benign objects light_blue triangles (rulings D17/D18,
     manual 7.6), overridable with --benign-shape/--benign-color; benign fill transparency
-    1 - hr (0.5 without hr, spec 5.4);
+    1 - hr (0.5 without hr, docs/messages.md);
   - each vehicle's track from NODE_REPORT X/Y (one colour per vehicle) and its swath coverage:
     the sensor's VIEW_POLYGON `sensor_swath_<v>` rectangles while the sensor was on (white
-    fill), or, without them, the track widened to the acked swath width where the spec-8.2 turn
+    fill), or, without them, the track widened to the acked swath width where the 2 s turn
     rate allowed sensing;
   - detections and classifications from VIEW_CIRCLE as posted (D19: white 12-vertex circles, pink
     when aspect degradation changed the outcome; pentagons yellow for "hazard", green for "benign",

@@ -1,4 +1,4 @@
-// What accuracy costs (issue 6; docs/accuracy.md). Prints three Markdown tables, and with
+// What accuracy costs (docs/accuracy.md). Prints three Markdown tables, and with
 // `--csv DIR` writes the data of the plot (bench/accuracy/plot_accuracy.py draws it):
 //
 // (a) Sensing between node reports. One vehicle at 2 m/s drives 400 m east, a 90 deg left arc at

@@ -1,4 +1,4 @@
-// The cost of each effect (issue 6; docs/effects.md): per vehicle-update time and memory per
+// The cost of each effect (docs/effects.md): per vehicle-update time and memory per
 // object for a plain scene, each effect alone, and all effects together, printed as a Markdown
 // table with ratios to the plain scene measured in the same run.
 //

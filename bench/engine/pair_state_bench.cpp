@@ -1,4 +1,4 @@
-// What one (vehicle, object) pair costs (issue 12; docs/robustness.md "Soak"): the engine keeps,
+// What one (vehicle, object) pair costs (docs/robustness.md "Soak"): the engine keeps,
 // per object a vehicle has had in its swath, its pass count and its unused detection credits
 // (rulings "Credits (D7)"). A harness, not a test: it prints one table row per load.
 //

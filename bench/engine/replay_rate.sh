@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# hazard_replay's digest rate (issue 14): node reports per CPU second in a 1,000,000-object
+# hazard_replay's digest rate: node reports per CPU second in a 1,000,000-object
 # field (gen_hazards, 20 km square, half hazards, --seed=1), 100 vehicles mowing lanes at
 # 1.5 m/s with 10 Hz node reports, AppTick 4, markers off, swath visuals on (the default).
 # The CPU time (user + system, /usr/bin/time) of a replay of DURATION simulated seconds minus

@@ -1,4 +1,4 @@
-// What a big field costs (issue 14): bytes per object, the idle iteration, the iteration with
+// What a big field costs: bytes per object, the idle iteration, the iteration with
 // 1, 10 and 100 vehicles, and the digest rate (node reports per CPU second through
 // hazard::Driver, as hazard_replay feeds it), for 1e3 to 1e6 objects laid out uniformly or in
 // clusters. A harness, not a test: it prints a table (docs/performance.md, "The engine at scale").

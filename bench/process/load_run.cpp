@@ -251,8 +251,9 @@ class Run {
 
   /// The periodic requests due at `sim_s`: configuration (pd alternating 0.9 / 0.85, so each
   /// A vehicle's UHZ_CONFIG_REQUEST, stamped as coming from the vehicle's own community: the
-  /// original sensor answers only a request whose originating community is its vname (spec
-  /// 7.2; ours does not check it), and every vehicle here shares one client.
+  /// original sensor answers only a request whose originating community is its vname (ours
+  /// does not check it; docs/messages.md, UHZ_CONFIG_REQUEST), and every vehicle here shares one
+  /// client.
   void post_config_request(const std::string& vname, const std::string& pd) {
     moos::Message m = moos::make_string_notify(
         "UHZ_CONFIG_REQUEST",

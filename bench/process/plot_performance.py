@@ -7,8 +7,9 @@ Two panels, field size on the x axis, one line per fleet size: the sensor's CPU 
 simulated hour, and its resident memory. When the CSV holds "original" rows (process_bench
 --original=PATH), the original's CPU at its nominal tick (the measured CPU scaled by nominal /
 achieved iterations, the CSV's last column) is drawn as dashed lines; without them, the
-figures quoted in issue 14 (warp 10, reference MOOSDB, another machine) are drawn as hollow
-marks, labelled as quoted. The SVG helpers are those of bench/accuracy/plot_accuracy.py.
+original's figures quoted in docs/performance.md (warp 10, reference MOOSDB, another machine)
+are drawn as hollow marks, labelled as quoted. The SVG helpers are those of
+bench/accuracy/plot_accuracy.py.
 """
 import csv
 import math
@@ -20,7 +21,8 @@ from plot_accuracy import LEFT0, TOP, Axes, frame, polyline, text  # noqa: E402 
 
 WIDTH, HEIGHT, GAP = 840, 400, 420
 FLEET_COLOURS = {1: "#2ca02c", 10: "#1f77b4", 100: "#d62728"}
-# Issue 14's table: (objects, vehicles, CPU s per simulated hour, low and high).
+# The original's quoted figures (docs/performance.md): (objects, vehicles, CPU s per simulated hour,
+# low and high).
 QUOTED_ORIGINAL = [(10000, 1, 82, 82), (10000, 10, 735, 735), (100000, 10, 9900, 14700)]
 
 
@@ -59,7 +61,7 @@ def legend(x, y, fleets, with_quoted, with_measured_original=False):
     if with_quoted:
         yy = y + 16 * len(fleets)
         out.append(f'<circle cx="{x + 12}" cy="{yy}" r="4" fill="none" stroke="#444"/>')
-        out.append(text(x + 30, yy + 4, "original, quoted from issue 14", 11, "start"))
+        out.append(text(x + 30, yy + 4, "original, as quoted", 11, "start"))
     if with_measured_original:
         yy = y + 16 * len(fleets)
         out.append(f'<line x1="{x}" y1="{yy}" x2="{x + 24}" y2="{yy}" stroke="#444" '

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# The rows of issue 14's side-by-side table, run with process_bench (docs/performance.md).
+# The rows of the side-by-side table against the original, run with process_bench
+# (docs/performance.md).
 #
 #   bench/process/run.sh [PRESET...] [-- PROCESS_BENCH_OPTIONS...]
 #

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Soak (issue 12, docs/robustness.md "Soak"): on demand, not in the test suite.
+# Soak (docs/robustness.md "Soak"): on demand, not in the test suite.
 #
 #   bench/soak/run.sh [--hours=H] [--warp=W] [--vehicles=V] [--objects=N] [--work-dir=DIR]
 #                     [-- PROCESS_BENCH_OPTIONS...]

@@ -1,4 +1,4 @@
-// What the sensor's engine holds over a soak (issue 12; docs/robustness.md "Soak"). A diagnosis
+// What the sensor's engine holds over a soak (docs/robustness.md "Soak"). A diagnosis
 // tool, not a benchmark with a target: it replays the mail the sensor received in a soak (the
 // run's .alog, written by moosdb-lite) through hazard::Driver, built from the run's
 // uFldHazardSensor block, stepping at the AppTick, and prints every `--every` simulated seconds

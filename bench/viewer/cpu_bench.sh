@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# pWebViewer's CPU per simulated hour (issue 15; docs/viewer.md "Benchmarks"): moosdb-lite at
+# pWebViewer's CPU per simulated hour (docs/viewer.md "Benchmarks"): moosdb-lite at
 # warp W, pWebViewer with CLIENTS event streams open (curl stands in for a browser that keeps
 # up), and viewer_load posting 10 vehicles' NODE_REPORTs at 4 Hz plus VIEW_CIRCLE/VIEW_MARKER
 # traffic for SIM simulated seconds. Prints the CPU seconds (user + system, from

@@ -1,5 +1,5 @@
 #pragma once
-// Reading a whole input file, bounded and without surprises (issue 12, "Special files").
+// Reading a whole input file, bounded and without surprises ("Special files").
 //
 // Contract (read_regular_file; WholeFile below also reads a pipe, for hazard_replay's logs):
 // - Only a regular file is read. A directory, FIFO, socket or device (/dev/zero) is refused with

@@ -7,9 +7,9 @@
 // - Numbers follow the rulings ("Numbers"): [+-]digits[.digits][(e|E)[+-]digits] with at least
 //   one digit in the mantissa, blanks trimmed; anything else, and anything non-finite after
 //   conversion (nan, inf, 1e999), is nullopt. Underflow (1e-400) is finite and reads as 0.
-// - Booleans: true/yes/on and false/no/off in any case (spec section 0, libMOOS).
+// - Booleans: true/yes/on and false/no/off in any case (libMOOS).
 // - Trimming removes blanks, tabs, CR and LF from both ends.
-// - Number formatting follows spec section 0 (FIX, FMT); the C locale is assumed throughout.
+// - Number formatting is FIX and FMT below; the C locale is assumed throughout.
 // - Angles are normalised with fmod, never with loops (N3); inputs must be finite.
 
 #include <cstdint>
@@ -20,14 +20,15 @@
 
 namespace base {
 
-/// Blanks as the MOOS mission reader sees them inside a line: space, tab and CR (spec 6.2).
+/// Blanks as the MOOS mission reader sees them inside a line: space, tab and CR
+/// (docs/protocol.md 6.2).
 inline constexpr std::string_view kBlanks = " \t\r";
 
 // ---- case, trimming, splitting ---------------------------------------------------------------
 
 /// Blanks, tabs, CR and LF removed from both ends.
 std::string_view trim(std::string_view text);
-/// Every space, tab and CR removed (libMOOS global values, spec 6.2).
+/// Every space, tab and CR removed (libMOOS global values, docs/protocol.md 6.2).
 std::string remove_blanks(std::string_view text);
 /// ASCII case-insensitive equality.
 bool iequals(std::string_view a, std::string_view b);
@@ -82,7 +83,7 @@ inline constexpr std::size_t kFastFmtMaxChars = 24;
 /// nothing written (append_fmt covers every value). For writers that fill a buffer.
 char* write_fmt_fast(char* dest, double value, int decimals);
 /// FMT(v, d): FIX(v, d), then (only if the text has a '.') trailing '0's and then a trailing '.'
-/// removed, and finally "-0" mapped to "0" (spec section 0). FMT(0.6561, 3) == "0.656".
+/// removed, and finally "-0" mapped to "0". FMT(0.6561, 3) == "0.656".
 std::string fmt(double value, int decimals = 5);
 /// printf-style "%g" with `significant` digits (C++ stream default is 6).
 std::string format_g(double value, int significant = 6);
@@ -93,7 +94,7 @@ std::string format_shortest(double value);
 /// 1 MB value never floods a report.
 std::string excerpt(std::string_view text, std::size_t max_chars = 160);
 
-/// Text from outside made safe for a log line (issue 12, "Log and record injection"): every
+/// Text from outside made safe for a log line ("Log and record injection"): every
 /// control byte (below 0x20, and 0x7F) and every backslash is written as `\xHH`, so a client
 /// can neither end a line nor forge one. Printable ASCII and bytes >= 0x80 (UTF-8) are kept.
 std::string escape_for_log(std::string_view text);

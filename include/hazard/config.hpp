@@ -34,7 +34,7 @@ struct ConfigEntry {
   int line = 0;
 };
 
-/// show_detections / show_reports (spec 5.3, D38).
+/// show_detections / show_reports (docs/messages.md, D38).
 struct DetectionCircles {
   bool enabled = true;               ///< false: no circles at all (value 0)
   std::optional<double> duration_s;  ///< nullopt: no limit ("nolimit")

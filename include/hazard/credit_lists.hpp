@@ -10,7 +10,7 @@
 // Data structure: a singly linked list per object through a std::deque of 16-byte nodes {pass,
 // next, heading} (the link fills the padding a Credit has anyway). Memory: 16 bytes per credit
 // plus one 512-byte deque block of slack per vehicle; no allocation per object, so nothing is
-// left behind in the allocator as lists grow (issue 12: with a std::vector per object the soak's
+// left behind in the allocator as lists grow (with a std::vector per object the soak's
 // heap held 35 bytes more per credit added: its spare capacity and the smaller buffers freed).
 // Costs: push_back, pop_front O(1); insert_in_pass_order and the walks O(list length), which
 // kMaxCreditsPerObject bounds (plus the credits a clear returns).

@@ -7,7 +7,8 @@
 // Algorithm: the names are hashed once (FNV-1a 64, stored with the vehicle and the object); the
 // key is folded in with the SplitMix64 finaliser after each component (seed, vehicle, label,
 // pass, purpose), which avalanches every input bit into the 64-bit result.
-// Quantisation keeps the original's (spec 10, N7), so probabilities behave as before:
+// Quantisation keeps the original's (docs/differences.md, "Random numbers"), so probabilities
+// behave as before:
 //   detection       u = k / 10000, k in [0, 9999], detect iff u < p
 //   classification  v = k / 10000, k in [0, 10000], correct iff v <= p
 // k is the 64-bit value modulo 10000 (or 10001); the modulo bias is below 1e-15.
@@ -27,7 +28,7 @@ std::uint64_t mix64(std::uint64_t x);
 
 enum class DiePurpose : std::uint64_t { kDetection = 1, kClassification = 2 };
 
-/// Detection dice steps (spec 10): 10000 values 0, 0.0001, ..., 0.9999.
+/// Detection dice steps: 10000 values 0, 0.0001, ..., 0.9999.
 inline constexpr std::uint64_t kDetectionDieSteps = 10000;
 /// Classification dice steps: 10001 values 0, 0.0001, ..., 1.
 inline constexpr std::uint64_t kClassificationDieSteps = 10001;

@@ -1,5 +1,5 @@
 #pragma once
-// Driver: the one way a program feeds the engine (issue 11). uFldHazardSensor, hazard_replay,
+// Driver: the one way a program feeds the engine. uFldHazardSensor, hazard_replay,
 // the benchmarks and the tests all deliver mail and run iterations through it, so the time
 // clamp and the dispatch on variable names exist once.
 //

@@ -1,5 +1,6 @@
 #pragma once
-// Engine: the simulated hazard sensor (manual 3-9, spec 6-10 as amended by the rulings).
+// Engine: the simulated hazard sensor (manual 3-9, with the
+// deliberate differences of docs/differences.md; its interface: docs/messages.md).
 //
 // Contract: pure and deterministic. Time comes in as `now_s` (seconds, any origin, non-
 // decreasing); randomness comes only from Dice keyed by (seed, vehicle, object, pass, purpose);
@@ -18,7 +19,8 @@
 // the setup's GeoPlacement (geodesy.hpp). Interval rules use time_rules.hpp.
 // Scale: a sensing vehicle queries the spatial grid for its swath's bounding box only; per-
 // (vehicle, object) state exists only for objects that vehicle has had in its swath.
-// Rejected alternative: evaluating every object per vehicle per iteration (the original, spec 17).
+// Rejected alternative: evaluating every object per vehicle per iteration (the original;
+// docs/performance.md).
 // Layout: one file per rule, each named after it: engine.cpp (the vehicles, start-up and step's
 // table of contents), settings.cpp (the width choice, who holds a width, configuration requests,
 // the options summary), sensing.cpp, detection.cpp, classification.cpp, visuals.cpp,
@@ -47,11 +49,11 @@
 
 namespace hazard {
 
-/// A sensor request keeps the sensor on this long (spec 8.1, D12).
+/// A sensor request keeps the sensor on this long (docs/differences.md D12).
 inline constexpr double kSensorActiveWindow_s = 600.0;
 /// A vehicle holds its width (counts against the option's `max`) from its accepted
 /// configuration request until this long passes with no configuration or sensor request from
-/// it (rulings "Width choice", amended by issue 13).
+/// it (docs/differences.md D20).
 inline constexpr double kWidthHoldWindow_s = 600.0;
 /// Default pd of a vehicle that never chose one (manual 4.2, D4).
 inline constexpr double kDefaultPd = 0.9;
@@ -59,7 +61,7 @@ inline constexpr double kDefaultPd = 0.9;
 /// oldest is dropped (a guard against reports arriving thousands of times per iteration).
 inline constexpr std::size_t kMaxTrackPoses = 4096;
 
-// Bounds on what outside input can make grow (issue 12; docs/robustness.md "Bounds: the
+// Bounds on what outside input can make grow (docs/robustness.md "Bounds: the
 // engine"). A 100-vehicle, million-object mission never reaches one; reaching one gives a run
 // warning naming the bound and a counted drop (BoundDrops, shown in the report), never growth.
 /// Vehicles in the table (vehicles). A new name when the table is full takes the place of the
@@ -96,7 +98,7 @@ struct BoundDrops {
 /// At most this many objects' visuals (a VIEW_MARKER and, for an aspect object, a VIEW_SEGLIST)
 /// are posted by one call (start-up, PMV_CONNECT, restart_field_visuals, or an iteration); a
 /// bigger field's visuals follow over successive iterations in load order, so the iteration
-/// holds its tick at start-up (issue 14). A field this small posts everything at once.
+/// holds its tick at start-up. A field this small posts everything at once.
 inline constexpr std::size_t kFieldVisualsPerIteration = 2000;
 
 /// A MOOS variable of the interface, with an example payload (for --interface and the docs).

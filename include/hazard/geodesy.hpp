@@ -1,6 +1,6 @@
 #pragma once
 // Geodesy: latitude/longitude placed in the local frame (x east, y north, metres) around the
-// mission's LatOrigin/LongOrigin (issue 6; the original had none: spec 6, T9).
+// mission's LatOrigin/LongOrigin (the original had none; docs/messages.md, NODE_REPORT).
 //
 // Contract: a LocalProjection is built once from a valid origin and a mode, and to_local() is a
 // pure function of (lat, lon) on the WGS84 ellipsoid, at height 0. The modes (parameter

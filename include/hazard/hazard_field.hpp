@@ -24,7 +24,7 @@ namespace hazard {
 
 using ObjectId = std::uint32_t;
 
-/// The field stored compactly (issue 14): flat arrays of what sensing reads, indexed by id.
+/// The field stored compactly: flat arrays of what sensing reads, indexed by id.
 /// Per object: position (16 bytes), type (1), resemblance (8, NaN when absent), an index into
 /// the aspect table and one into the style table (4 + 4, kNone when the object has none: most
 /// objects have no rendering hints, many no aspect), its label in one shared character table

@@ -1,5 +1,5 @@
 #pragma once
-// One object of the ground-truth field (manual section 5, spec 4.1), as typed values.
+// One object of the ground-truth field (manual section 5, docs/hazard-file.md), as typed values.
 
 #include <optional>
 #include <string>

@@ -1,5 +1,5 @@
 #pragma once
-// Heading history and turn rate (manual 8, spec 8.2, N4).
+// Heading history and turn rate (manual 8; docs/differences.md, "Geometry and sensing").
 //
 // Contract: samples (heading, receipt time) are kept only while they can matter: those within
 // kTurnWindow_s of the newest sample (at most kMaxSamples). A sample is added only if its time is

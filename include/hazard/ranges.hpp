@@ -1,5 +1,5 @@
 #pragma once
-// Physically meaningful ranges (issue 12): the largest values the engine accepts from its
+// Physically meaningful ranges: the largest values the engine accepts from its
 // configuration and its mail. Each is far beyond any real mission, so only nonsense is refused
 // (with a warning naming the value), and no accepted value can overflow the arithmetic or be
 // posted as a 309-digit number. The rulings' lower bounds ("Validation, one rule per value")

@@ -1,6 +1,6 @@
 #pragma once
-// The app body of the terminal/AppCast report (spec 11, ruling D32), plus the seed in use and
-// the active effects in its header block. Pure: ReportData is a snapshot of engine state, and
+// The app body of the terminal/AppCast report (docs/uFldHazardSensor.md, D32), plus the seed in use
+// and the active effects in its header block. Pure: ReportData is a snapshot of engine state, and
 // format_report turns it into text. The AppCast frame (title, warnings, events) is the app's.
 
 #include <cstdint>
@@ -36,7 +36,7 @@ ReportData collect_report_data(const Engine& engine);
 std::string format_report(const ReportData& data);
 
 /// Left-justified columns separated by two blanks, the header rows underlined with dashes,
-/// trailing blanks removed (spec 11's table style).
+/// trailing blanks removed (the original's table style).
 std::string format_table(const std::vector<std::vector<std::string>>& header_rows,
                          const std::vector<std::vector<std::string>>& rows);
 

@@ -1,6 +1,6 @@
 #pragma once
-// Sensing along a track: sub-stepping and the swept swath (issue 6; `swath_substeps`,
-// `swath_sweep`). The default, sampling at each iteration's latest pose (spec 8.5), is the
+// Sensing along a track: sub-stepping and the swept swath (`swath_substeps`,
+// `swath_sweep`). The default, sampling at each iteration's latest pose (docs/accuracy.md), is the
 // engine's own path and does not use this file.
 //
 // Contract (the rule, also in docs/accuracy.md):

@@ -31,9 +31,11 @@ double resemblance_classification_probability(double pc, double hr);
 /// Aspect on classification (manual 7.2): pc' = 0.5 + (1 - g)(pc - 0.5).
 double aspect_classification_probability(double pc, double degradation);
 
-/// Detection die (spec 8.6, N7): detect iff u < p (u = k/10000, k in [0, 9999]).
+/// Detection die (docs/differences.md, "Random numbers"): detect iff u < p
+/// (u = k/10000, k in [0, 9999]).
 inline bool detection_succeeds(double u, double p) { return u < p; }
-/// Classification die (spec 9.3, N7): correct iff v <= p (v = k/10000, k in [0, 10000]).
+/// Classification die (docs/differences.md, "Random numbers"): correct iff v <= p
+/// (v = k/10000, k in [0, 10000]).
 inline bool classification_correct(double v, double p) { return v <= p; }
 
 }  // namespace hazard

@@ -1,5 +1,6 @@
 #pragma once
-// Rendering hints for pMarineViewer: colour and marker-shape words (spec 3.2, 5.4).
+// Rendering hints for pMarineViewer: colour and marker-shape words (docs/configuration.md,
+// docs/messages.md).
 // Colours: the X11/CSS named colours (case-insensitive, underscores ignored, so `light_blue`
 // equals `lightblue`), `grayN`/`greyN` for N in 0..100, `black`, `invisible`, `empty`,
 // `hex:RR,GG,BB`, or three fractions in [0, 1] separated by one of , : % $ #.

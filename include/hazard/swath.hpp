@@ -14,7 +14,8 @@
 // as at the origin: subtracting two nearby doubles is exact (Sterbenz).
 // Headings that are exact multiples of 90 deg use exact sines and cosines, so axis-aligned
 // swaths have exact edges. Corners are listed front-starboard, rear-starboard, rear-port,
-// front-port (spec 8.3 order). Headings: degrees, 0 = north (+y), clockwise (90 = east, +x).
+// front-port (the original's order). Headings: degrees, 0 = north (+y), clockwise (90 = east,
+// +x).
 // Swept test (swath_sweep, sensing_track.hpp): the swath translated along a displacement at a
 // fixed heading covers a point when some t in [0, 1] puts the point inside the translated
 // rectangle under the same rule; in the swath's frame that is two 1-D interval conditions on t

@@ -1,5 +1,5 @@
 #pragma once
-// Interval rules on the MOOS clock (spec 8.1, 8.2, 9.4; rulings D9, D11, D12, "Release timing").
+// Interval rules on the MOOS clock (docs/differences.md D9, D11, D12).
 //
 // Contract: every interval rule of the engine asks one question, "has `interval_s` passed
 // between `since_s` and `now_s`?", through elapsed_at_least(), so the rule is written once:

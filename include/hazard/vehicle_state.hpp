@@ -9,7 +9,7 @@
 // Hot part (read every sensing iteration): pose, setting, sensor-request time, the sorted list of
 // objects currently inside the swath. Cold part: the per-object records (pass count and
 // credits), queue, counters.
-// Memory (issue 12): a pair costs its hash node and bucket (about 57 bytes with glibc), each
+// Memory: a pair costs its hash node and bucket (about 57 bytes with glibc), each
 // unused credit 16 bytes in the vehicle's credit pool (credit_lists.hpp; bench/engine/
 // pair_state_bench, docs/robustness.md "Soak"). Pairs and credits are kept for the whole run
 // (rulings "Credits (D7)", "Passes, dice and reproducibility"): a long mission grows by one
@@ -58,7 +58,7 @@ struct SensorSetting {
   double pfa = 0.0;  ///< pd^exp
 };
 
-/// Report counters (spec 11, D32).
+/// Report counters (docs/uFldHazardSensor.md; D32).
 struct VehicleCounters {
   int sensor_requests = 0;
   int width_attempts = 0;  ///< incl. the automatic default and denied requests

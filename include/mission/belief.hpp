@@ -17,7 +17,8 @@
 // single "certain" observation (pfa = 0, pd = 1, pclass = 1) would otherwise make the belief
 // infinite and later contradicting evidence would give inf - inf = NaN.
 //
-// Set choice (spec 14.2 scoring). Penalties add up over objects: a reported benign object costs
+// Set choice (the scoring of docs/mission-logic.md, "The grader"). Penalties add up over objects: a
+// reported benign object costs
 // P_fa, an unreported hazard costs P_missed, everything else costs nothing; the time term does not
 // depend on the set. So the expected penalty of a set is the sum over objects of
 //   reported:     (1 - p) * P_fa        not reported:  p * P_missed
@@ -53,7 +54,7 @@ inline constexpr double kMinLikelihood = 1e-9;
 /// penalties the report threshold is p > 1/11, so the prior matters little once evidence comes.
 inline constexpr double kDefaultPriorHazard = 0.5;
 
-/// The mission's penalties (UHZ_MISSION_PARAMS; uFldHazardMetric defaults, spec 14.1).
+/// The mission's penalties (UHZ_MISSION_PARAMS; uFldHazardMetric defaults, docs/mission-logic.md).
 struct Penalties {
   double missed_hazard = 100.0;  ///< >= 0
   double false_alarm = 10.0;     ///< >= 0

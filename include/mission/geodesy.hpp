@@ -10,8 +10,8 @@
 // point horizontally by its product with r/R, about 0.01 mm at 1 km).
 // Difference from MOOS: the original's CMOOSGeodesy works in UTM (or a flat-earth local grid);
 // the two agree to a few centimetres over a mission area of a kilometre, which no hazard test
-// can see. We never read LAT/LON back in the sensor (spec section 6: LAT/LON-only reports are
-// invalid), so they are for viewers and logs.
+// can see. We never read LAT/LON back in the sensor (docs/messages.md, NODE_REPORT: LAT/LON-only
+// reports are invalid), so they are for viewers and logs.
 
 #include <GeographicLib/LocalCartesian.hpp>
 #include <glm/vec2.hpp>

@@ -1,5 +1,6 @@
 #pragma once
-// The vehicle-side hazard manager (the role of uFldHazardMgr, spec 13, done properly): asks for
+// The vehicle-side hazard manager (the role of uFldHazardMgr, done properly;
+// docs/mission-logic.md): asks for
 // its sensor setting, keeps the sensor on, asks for a classification of every detection with a
 // priority it can justify, keeps a belief per object, reports the set that minimises expected
 // penalty, and hands its objects to another vehicle.
@@ -20,7 +21,7 @@
 //   poses, is sure the sensor looked at a known object and said nothing (see "Passes").
 // - Passes: the sensor rolls a detection die when an object enters the swath (W to each side,
 //   swath_length along, D1/D2) while it is on (turn rate over 2 s <= max_turn_rate and speed <=
-//   max_speed; state frozen while off), spec 8.5. The manager tracks the same inside/outside state
+//   max_speed; state frozen while off). The manager tracks the same inside/outside state
 //   for the objects it knows, from its own poses. A pass counts as missed only when, with no
 //   detection within `detection_latency_s` after it ended, (a) the object came within W - margin
 //   of the track (not a graze the sensor may have sampled differently) and (b) the turn rate at
@@ -67,8 +68,8 @@ namespace mission {
 
 struct ManagerConfig {
   std::string vname;                        ///< this vehicle (its community name), non-empty
-  double swath_width_m = 25.0;              ///< requested W (> 0); spec 13 default 25
-  double pd = 0.9;                          ///< requested pd, [0, 1]; spec 13 default 0.9
+  double swath_width_m = 25.0;              ///< requested W (> 0); default 25 as uFldHazardMgr
+  double pd = 0.9;                          ///< requested pd, [0, 1]; default 0.9 as uFldHazardMgr
   double prior_hazard = kDefaultPriorHazard;  ///< (0, 1), see belief.hpp
   std::string report_name;                  ///< HAZARDSET_REPORT name= part ("" = none)
   std::optional<ConvexPolygon> region;      ///< for the transit lane; else the grader's
@@ -221,7 +222,7 @@ class HazardManager {
   std::optional<double> last_config_request_s_;
   std::optional<double> last_sensor_request_s_;
   std::optional<ConvexPolygon> params_region_;  ///< from UHZ_MISSION_PARAMS
-  double transit_half_width_m_ = 20.0;          ///< from UHZ_MISSION_PARAMS (spec 14.1)
+  double transit_half_width_m_ = 20.0;          ///< from UHZ_MISSION_PARAMS (docs/mission-logic.md)
   hazard::HeadingHistory headings_;
   std::vector<TrackSample> track_;            ///< thinned own track (hindsight passes)
   std::optional<TrackSample> last_pose_;      ///< the latest pose, always

@@ -1,9 +1,10 @@
 #pragma once
-// The shoreside grader, compatible with uFldHazardMetric (spec 14): same parameters, messages and
+// The shoreside grader, compatible with uFldHazardMetric (docs/mission-logic.md): same
+// parameters, messages and
 // score formula.
 //
 // Contract
-// - Configuration (spec 14.1): penalty_missed_hazard (100), penalty_false_alarm (10),
+// - Configuration (docs/mission-logic.md): penalty_missed_hazard (100), penalty_false_alarm (10),
 //   penalty_nonopt_hazard (50, echoed only), penalty_max_time_over (0), penalty_max_time_rate (0),
 //   max_time (0 = no limit), show_xpath (false), hazard_file. Keys are case-insensitive. Numbers
 //   follow rulings "Numbers" and must be >= 0; a bad value is a warning naming the parameter and
@@ -11,11 +12,12 @@
 //   Unknown parameters are warned. The transit-lane half width is fixed at 20 m (original).
 // - Ground truth: the `hazard =` lines go through libhazard's loader (load_hazard_file_text), the
 //   same code the sensor uses, so the two can never disagree about which objects exist and what
-//   they are. `region =` (a convex polygon, else a warning) and `source =` are read here (spec
-//   14.1); `//` comments are stripped. Several hazard files load together (as the sensor, rulings
+//   they are. `region =` (a convex polygon, else a warning) and `source =` are read here (as
+//   uFldHazardMetric reads them); `//` comments are stripped. Several hazard files load together
+//   (as the sensor, rulings
 //   "Repeats"); the last region and source win. A missing file is the application's to report
 //   (`hazard_file_missing`).
-// - Scoring (spec 14.2), object by object in file order: reported label and truth hazard ->
+// - Scoring, object by object in file order: reported label and truth hazard ->
 //   correct; reported and truth benign -> false alarm; hazard not reported -> missed; extra labels
 //   not in the truth are ignored. total = missed P_m + FA P_fa + overage term, where
 //   elapsed = now - search start (0 if never started), overage = elapsed - max_time (0 when

@@ -1,7 +1,7 @@
 #pragma once
 // What one call into a mission-side core produced: postings in order, plus texts for the
 // application's report. Like hazard::Outputs, with one addition: a posting may be a MOOS double
-// (uFldHazardMetric posts HAZARD_SEARCH_SCORE as a double, spec 14.2).
+// (uFldHazardMetric posts HAZARD_SEARCH_SCORE as a double, docs/mission-logic.md).
 
 #include <optional>
 #include <string>

@@ -8,9 +8,9 @@
 //   A vertex is `x,y` or `x,y,z` (z ignored). Numbers follow rulings "Numbers".
 // - A polygon is valid when it has at least 3 vertices, is convex (no reflex corner, either
 //   winding) and has a positive area; collinear vertices on an edge are allowed.
-// - Containment is inclusive of the boundary (spec 8.3, the original's habit).
-// - The spec text is `pts={x1,y1:...}` with each coordinate FMT(.,1) (spec 12.2), vertices in
-//   the order given.
+// - Containment is inclusive of the boundary (the original's habit; docs/differences.md).
+// - The spec text is `pts={x1,y1:...}` with each coordinate FMT(.,1) (gen_hazards' region line),
+//   vertices in the order given.
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>

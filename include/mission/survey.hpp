@@ -4,8 +4,8 @@
 //
 // Contract (lawnmower)
 // - Lanes are straight lines along the lane heading (degrees, 0 = north = +y, clockwise,
-//   spec section 0), spaced `2 W (1 - overlap)` apart across track, where W is the swath half
-//   width (spec 8.3 / rulings D2: W to each side).
+//   as everywhere in this project), spaced `2 W (1 - overlap)` apart across track, where W is the
+//   swath half width (docs/differences.md D2: W to each side).
 // - Coverage guarantee: every point of the region lies within W of some lane segment (the lanes
 //   without their extensions). Proof sketch: n = ceil(D / s) lanes (D = the region's extent across
 //   track, s = spacing) are centred on the region, so the outer margins are at most s/2 <= W and
@@ -73,7 +73,7 @@ std::vector<glm::dvec2> plan_reacquire_route(glm::dvec2 start_m,
                                              const std::vector<glm::dvec2>& objects_m,
                                              const ReacquireOptions& options);
 
-/// Unit vector of a heading (0 = +y, 90 = +x): (sin h, cos h) (spec section 0).
+/// Unit vector of a heading (0 = +y, 90 = +x): (sin h, cos h).
 glm::dvec2 heading_vector(double heading_deg);
 /// Heading of a direction vector, in [0, 360); (0,0) gives 0.
 double heading_of(glm::dvec2 direction);

@@ -1,7 +1,7 @@
 #pragma once
-// The minimum-hazard transit lane (spec 14.2, uFldHazardMetric's xpath; also uFldHazardMgr's
-// `xpath=` part, spec 13): a vertical (north-south) strip of half width w through the search
-// region that contains the fewest hazards.
+// The minimum-hazard transit lane (uFldHazardMetric's xpath; also uFldHazardMgr's
+// `xpath=` part; docs/mission-logic.md): a vertical (north-south) strip of half width w through the
+// search region that contains the fewest hazards.
 //
 // Rule: x runs from min_x + w while x < max_x - w in 1 m steps (min_x, max_x: the region's
 // bounding box); the strip [x - w, x + w] x [min_y, max_y] counts the given points inside or on

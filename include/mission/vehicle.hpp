@@ -8,7 +8,7 @@
 //   values) the application calls `advance_to`. The pose reported at a `now` between grid points
 //   is a preview of the next step cut at `now` (not stored).
 // - The heading never changes faster than `max_turn_rate_dps` (between any two reported poses,
-//   including previews). Headings: 0 = north = +y, clockwise, in [0, 360) (spec section 0).
+//   including previews). Headings: 0 = north = +y, clockwise, in [0, 360).
 // - Steering: toward a point `lead_m` ahead of the vehicle's projection on the current track line
 //   (previous waypoint -> next waypoint), which converges onto the line without orbiting a point.
 //   A waypoint is reached when within `capture_radius_m`, or when the vehicle has passed the line
@@ -19,7 +19,7 @@
 //   (Ornstein-Uhlenbeck) disturbance of the commanded heading with stationary standard deviation
 //   `heading_noise_deg` and correlation time `heading_noise_tau_s`, drawn from (seed, step).
 //   Why low-pass: the sensor blacks out when the SUM of absolute heading steps over 2 s exceeds
-//   max_turn_rate (spec 8.2, N4); white noise of 1 degree at 4 Hz already sums to about 4.5 deg/s.
+//   max_turn_rate; white noise of 1 degree at 4 Hz already sums to about 4.5 deg/s.
 //   With the defaults tau = 20 s and noise 1 deg, the steps sum to about 0.4 deg/s (tested).
 //   Why off by default: the original Jake vehicles (uSimMarine) had no heading noise either.
 // - Cost: linear in simulated time (20 steps per second by default) while following; nothing

@@ -1,6 +1,6 @@
 #pragma once
-// The application base (wire spec 7.1 CMOOSApp and 7.2 AppCastingMOOSApp, core-moos flavour),
-// designed so that applications stay thin and can be stepped deterministically in tests.
+// The application base (docs/protocol.md 7.1 CMOOSApp and 7.2 AppCastingMOOSApp, core-moos
+// flavour), designed so that applications stay thin and can be stepped deterministically in tests.
 //
 // Contract:
 // - An app derives from MoosApp and overrides on_start_up / on_connect_to_server / on_new_mail /
@@ -8,15 +8,15 @@
 //   base does the AppCasting bookkeeping around the hooks (libMOOS's "call the base Iterate
 //   first and PostReport last" rule is built in).
 // - The base runs on any Comms: TcpClient with the system clock, or a BusClient with a
-//   ManualClock. Time is always comms().moos_time() (= unix x warp + skew, spec 0.3), and the
-//   warp is the comms's own.
-// - One cycle (libMOOS DoRunWork without the sleep, spec 7.1):
+//   ManualClock. Time is always comms().moos_time() (= unix x warp + skew, protocol.md 1.10), and
+//   the warp is the comms's own.
+// - One cycle (libMOOS DoRunWork without the sleep, protocol.md 7.1):
 //     1. if the comms connected (again) since the last cycle: on_connect_to_server();
 //     2. fetch mail, sort it by time (stable; unless SortMailByTime = false), consume
 //        APPCAST_REQ and `_async_timing`, hand the rest to on_new_mail() if any is left;
 //     3. only while connected: post `<APPNAME>_STATUS` (first cycle, then every 2 MOOS s),
 //        iteration += 1, post `<MOOSNAME>_ITER_GAP` (from the 2nd iteration), iterate(),
-//        post `<MOOSNAME>_ITER_LEN`, then the report decision of spec 7.2 (terminal frame
+//        post `<MOOSNAME>_ITER_LEN`, then the report decision of protocol.md 7.2 (terminal frame
 //        and/or APPCAST).
 // - Cycles are due every 1/AppTick MOOS seconds (AppTick in MOOS-time Hz, so warp W gives
 //   W x AppTick real cycles per second). run_for() and run_until() sleep on the comms clock, so
@@ -65,15 +65,15 @@ enum class RepeatedParameter {
 /// What an application says about itself (defaults that differ between apps).
 struct AppTraits {
   std::string default_name;             ///< process name without an alias, e.g. "uFldHazardSensor"
-  double default_app_tick_hz = 5.0;     ///< CMOOSApp default (spec 6.3)
+  double default_app_tick_hz = 5.0;     ///< CMOOSApp default (protocol.md 6.3)
   int default_comms_tick_hz = 5;
   std::size_t default_max_appcast_events = AppCast::kDefaultMaxEvents;
   std::size_t default_max_appcast_run_warnings = AppCast::kDefaultMaxRunWarnings;
   RepeatedParameter repeated_parameters = RepeatedParameter::kFirstWins;
-  bool post_iteration_timing = true;    ///< `<MOOSNAME>_ITER_GAP` / `_ITER_LEN` (spec 7.2)
+  bool post_iteration_timing = true;    ///< `<MOOSNAME>_ITER_GAP` / `_ITER_LEN` (protocol.md 7.2)
 };
 
-/// The framework's settings after mission file and command line (spec 6.2-6.4).
+/// The framework's settings after mission file and command line (protocol.md 6.2-6.4).
 struct AppSettings {
   std::string app_name;                  ///< selects the block; names _STATUS and the appcast
   std::string moos_name;                 ///< registration name (default: app_name)
@@ -114,7 +114,7 @@ struct AppSettings {
 /// MAX_APPCAST_RUN_WARNINGS, moos_time_warp), compared case-insensitively.
 bool is_framework_parameter(std::string_view key);
 
-/// Resolves the settings. Precedence (spec 6.3, 6.4): warp = --moos_time_warp, else block
+/// Resolves the settings. Precedence (protocol.md 6.3, 6.4): warp = --moos_time_warp, else block
 /// moos_time_warp, else global MOOSTimeWarp, else 1; AppTick = block, else --moos_app_tick,
 /// else the trait default; host/port = --moos_host/--moos_port, else ServerHost/ServerPort,
 /// else localhost:9000. `mission_errors` in this app's block or outside any block become
@@ -126,7 +126,7 @@ AppSettings resolve_app_settings(const AppTraits& traits, const CommandLine& com
 
 class MoosApp {
  public:
-  /// MOOS seconds between `<APPNAME>_STATUS` postings (spec 7.1).
+  /// MOOS seconds between `<APPNAME>_STATUS` postings (protocol.md 7.1).
   static constexpr double kStatusPeriod_s = 2.0;
 
   explicit MoosApp(AppTraits traits);
@@ -169,7 +169,7 @@ class MoosApp {
   /// The MOOS time of the running cycle: sampled once when the cycle starts, so mail handling
   /// and iterate() in one cycle see the same time (libMOOS m_curr_time).
   double cycle_time() const { return curr_time_; }
-  /// The current `<APPNAME>_STATUS` text (spec 7.1).
+  /// The current `<APPNAME>_STATUS` text (protocol.md 7.1).
   std::string status_string() const;
   /// Builds the report now (calls build_report) and returns the terminal frame.
   std::string terminal_report();
@@ -219,7 +219,7 @@ class MoosApp {
   };
 
   void handle_framework_mail(std::vector<Message>& mail);
-  /// A standing run warning with the count of mail the comms dropped unread (issue 12).
+  /// A standing run warning with the count of mail the comms dropped unread.
   void report_dropped_mail();
   bool appcast_requested() const;
   void post_status_if_due();
@@ -282,15 +282,15 @@ class MoosApp {
   std::map<std::string, Request> requests_;  // by requester key
 };
 
-/// libMOOS's pause after each packet sent, in ms per unit of time warp (wire spec 4.3 step 4):
-/// `--moos_tw_delay_factor=F` (a number >= 0), else libMOOS's default 0.2. A high-warp mission
-/// passes 0: at warp 400 the default pauses 80 ms after every packet, so a vehicle's node reports
-/// reach the sensor in bursts of 32 simulated seconds. nullopt, with `error` naming the argument,
+/// libMOOS's pause after each packet sent, in ms per unit of time warp
+/// (docs/protocol.md 4.3 step 4): `--moos_tw_delay_factor=F` (a number >= 0), else libMOOS's
+/// default 0.2. A high-warp mission passes 0: at warp 400 the default pauses 80 ms after every
+/// packet, so a vehicle's node reports reach the sensor in bursts of 32 simulated seconds. nullopt, with `error` naming the argument,
 /// when the value is not a number >= 0.
 std::optional<double> tw_delay_factor_ms(const CommandLine& command_line, std::string* error);
 
-/// The whole life of an app as a MOOS process over TCP (spec 7.1): loads the mission named on
-/// the command line (with its `--NAME=value` substitutions), resolves the settings, connects a
+/// The whole life of an app as a MOOS process over TCP (protocol.md 7.1): loads the mission named
+/// on the command line (with its `--NAME=value` substitutions), resolves the settings, connects a
 /// TcpClient, waits up to 5 MOOS s for the connection, calls start(), prints terminal reports to
 /// `out` (when TERM_REPORTING = true, or unset and `out_is_terminal`) and cycles until SIGINT or
 /// SIGTERM. Problems go to `err`. Returns the exit code: 0 after a signal, 1 if the mission cannot

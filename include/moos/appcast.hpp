@@ -1,9 +1,9 @@
 #pragma once
-// AppCasting (wire spec 7.2, hazard spec 11): the report model of one application, its APPCAST
-// string, its terminal frame, and APPCAST_REQ parsing.
+// AppCasting (docs/protocol.md 7.2, docs/uFldHazardSensor.md): the report model of one application,
+// its APPCAST string, its terminal frame, and APPCAST_REQ parsing.
 //
 // Contract:
-// - appcast_string() produces exactly the core-moos item sequence of spec 7.2:
+// - appcast_string() produces exactly the core-moos item sequence of protocol.md 7.2:
 //   proc, iter, node (omitted when empty), iter again, messages (each body line followed by
 //   `!@`), config_warnings (item text empty when none, separator still written),
 //   events_total, events (empty item when none), run_warning_total, run_warnings (omitted with
@@ -81,18 +81,19 @@ class AppCast {
   unsigned run_warning_count_ = 0;
 };
 
-/// One APPCAST_REQ (spec 7.2), e.g. `node=henry,app=pHostInfo,duration=3.0,key=uMAC_438,thresh=any`.
+/// One APPCAST_REQ (protocol.md 7.2), e.g.
+/// `node=henry,app=pHostInfo,duration=3.0,key=uMAC_438,thresh=any`.
 struct AppCastRequest {
   std::string key;             ///< the requester
   double duration_s = 0.0;     ///< MOOS seconds, clipped to [0, 30]
   std::string thresh = "any";  ///< "any" or "run_warning"
 };
 
-/// Longest lifetime of a request, MOOS seconds (spec 7.2).
+/// Longest lifetime of a request, MOOS seconds (protocol.md 7.2).
 inline constexpr double kMaxAppCastRequestDuration_s = 30.0;
 
 /// Parses a request addressed to `node` / `app` (or to `all`): keys case-insensitive, values
-/// compared exactly. nullopt if it is for another node or app, or has no key (spec 7.2).
+/// compared exactly. nullopt if it is for another node or app, or has no key (protocol.md 7.2).
 std::optional<AppCastRequest> parse_appcast_request(std::string_view text, std::string_view node,
                                                     std::string_view app);
 

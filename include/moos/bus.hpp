@@ -3,7 +3,7 @@
 // rules moosdb-lite serves) without sockets, threads or real time. Applications see it through
 // the Comms interface, exactly as they see a TcpClient.
 //
-// Contract (a thin adapter; the MOOSDB rules are moos::Database's, spec section 5):
+// Contract (a thin adapter; the MOOSDB rules are moos::Database's, protocol.md section 5):
 // - Every client is an asynchronous Database client; every message it transmits is one packet.
 //   The NOTIFYs the Database sends it land in its inbox (fetch()); protocol replies (WELCOME)
 //   are not mail. Delivery is synchronous and deterministic: a message is in the subscribers'
@@ -35,8 +35,8 @@ struct BusCore;
 class InProcessBus {
  public:
   struct Options {
-    std::string community = kDefaultCommunity;  ///< spec 5.11
-    double time_warp = 1.0;        ///< 0 < W <= 400 (spec 0.3)
+    std::string community = kDefaultCommunity;  ///< protocol.md 5.11
+    double time_warp = 1.0;        ///< 0 < W <= 400 (protocol.md 1.10)
   };
 
   /// `clock` must outlive the bus and every client (usually a ManualClock).
@@ -47,7 +47,7 @@ class InProcessBus {
   InProcessBus& operator=(const InProcessBus&) = delete;
 
   /// A new, connected client. nullptr if the name is empty or already connected (a real DB
-  /// would POISON the second one, spec 1.6).
+  /// would POISON the second one, protocol.md 1.6).
   std::unique_ptr<BusClient> connect(const std::string& name);
 
   Clock& clock() const;

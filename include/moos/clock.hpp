@@ -1,6 +1,6 @@
 #pragma once
-// Where a MOOS process gets its time (wire spec 0.3): real seconds since the Unix epoch, which
-// the caller multiplies by the time warp (local time) and offsets by the skew (MOOS time).
+// Where a MOOS process gets its time (docs/protocol.md 1.10): real seconds since the Unix epoch,
+// which the caller multiplies by the time warp (local time) and offsets by the skew (MOOS time).
 //
 // Contract:
 // - unix_now_s() is real, unwarped, epoch-based seconds with microsecond resolution or better.
@@ -44,7 +44,8 @@ SystemClock& system_clock();
 class ManualClock final : public Clock {
  public:
   /// 2023-11-14T22:13:20Z: a realistic epoch value, so code that mixes epoch times and
-  /// durations is exercised as in a real run (the wire spec's test vectors use it too).
+  /// durations is exercised as in a real run (the examples of docs/protocol.md section 8 use it
+  /// too).
   static constexpr double kDefaultStartUnix_s = 1700000000.0;
 
   explicit ManualClock(double start_unix_s = kDefaultStartUnix_s) : now_s_(start_unix_s) {}

@@ -1,12 +1,12 @@
 #pragma once
 // Message encoding and packet framing of the MOOS v10 protocol (core-moos CMOOSMsg and
-// CMOOSCommPkt), written from ../shared/spec/moos-wire-protocol.md sections 1.2-3.4.
+// CMOOSCommPkt), written from docs/protocol.md sections 1.2-3.4.
 //
 // Contract:
-// - Everything is little-endian whatever the host (spec 1.2).
+// - Everything is little-endian whatever the host (protocol.md 1.2).
 // - The encoder writes the exact length fields; the packet header's compression byte is 0.
-// - The decoder is strict where libMOOS is lenient (spec 2.7): a length below 54, a length past
-//   the bytes remaining, a negative or overlong string, or consumed != length is an error
+// - The decoder is strict where libMOOS is lenient (protocol.md 2.7): a length below 54, a length
+//   past the bytes remaining, a negative or overlong string, or consumed != length is an error
 //   that names the message index and the byte offset. It never reads out of bounds and never
 //   allocates more than the bytes it was given.
 // - PacketReader reassembles packets from arbitrary TCP segment boundaries and refuses a
@@ -24,7 +24,7 @@
 
 namespace moos {
 
-/// The 32-byte client banner: "ELKS CAN'T DANCE 2/8/10" padded with NULs (spec 1.4).
+/// The 32-byte client banner: "ELKS CAN'T DANCE 2/8/10" padded with NULs (protocol.md 1.4).
 inline constexpr std::string_view kBannerText = "ELKS CAN'T DANCE 2/8/10";
 inline constexpr std::size_t kBannerSize = 32;
 std::string protocol_banner();
@@ -33,15 +33,15 @@ std::string protocol_banner();
 bool banner_matches(std::string_view received);
 
 /// Packet header: int32 total length (including the header), int32 message count, one
-/// compression byte that is always 0 (spec 3.1).
+/// compression byte that is always 0 (protocol.md 3.1).
 inline constexpr std::size_t kPacketHeaderSize = 9;
-/// Suggested default limit for one packet (spec 3.4).
+/// Suggested default limit for one packet (protocol.md 3.4).
 inline constexpr std::size_t kDefaultMaxPacketBytes = 128u * 1024u * 1024u;
 
 void append_message(std::string& out, const Message& msg);
 std::string encode_message(const Message& msg);
 /// One packet holding the messages in order. Never call with an empty list for a peer that
-/// expects mail (spec 3.4); the function itself allows it for tests.
+/// expects mail (protocol.md 3.4); the function itself allows it for tests.
 std::string encode_packet(const std::vector<Message>& messages);
 
 struct DecodeError {

@@ -1,5 +1,6 @@
 #pragma once
-// Command-line conventions shared by every MOOS program we build (wire spec 6.4, hazard spec 2),
+// Command-line conventions shared by every MOOS program we build (docs/protocol.md 6.4,
+// docs/uFldHazardSensor.md),
 // and the typed switch table that every program's own switches are read with.
 //
 // Contract of parse_command_line (the MOOS applications' convention):
@@ -15,7 +16,8 @@
 //   style) AND is listed in `unhandled`, in order, so an application can recognise its own
 //   `--name=value` flags. Arguments that start with '-' and carry no '=' (`--help`, `-e`) are
 //   listed in `unhandled` too. The parser never prints and never exits: main decides.
-// - Information switches (the MOOS-IvP convention, hazard spec 2): -e/--example/-example,
+// - Information switches (the MOOS-IvP convention, docs/uFldHazardSensor.md):
+//   -e/--example/-example,
 //   -h/--help/-help, -i/--interface (no one-dash -interface), -v/--version/-version, compared as
 //   whole words. first_information_switch reads `unhandled` left to right, so the first one on
 //   the command line decides.
@@ -128,7 +130,7 @@ struct CommandLine {
   std::optional<std::string> moos_app_name;   ///< --moos_app_name NAME
   std::optional<std::string> moos_host;       ///< --moos_host
   std::optional<int> moos_port;               ///< --moos_port, kConnectPortRange
-  std::optional<double> moos_time_warp;       ///< --moos_time_warp, kTimeWarpRange (spec 0.3)
+  std::optional<double> moos_time_warp;       ///< --moos_time_warp, kTimeWarpRange
   std::optional<double> moos_app_tick_hz;     ///< --moos_app_tick, > 0 (MOOS-time Hz)
   std::optional<int> moos_comms_tick_hz;      ///< --moos_comms_tick N, kCommsTickRangeHz (4.2)
 
@@ -140,7 +142,7 @@ struct CommandLine {
 CommandLine parse_command_line(int argc, const char* const* argv);
 CommandLine parse_command_line(const std::vector<std::string>& args);
 
-/// The run name: the alias if one was given, else `default_name` (spec 6.4).
+/// The run name: the alias if one was given, else `default_name` (protocol.md 6.4).
 std::string app_name_from(const CommandLine& cl, const std::string& default_name);
 
 /// What an information switch asks main to print (and then exit 0).

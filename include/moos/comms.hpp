@@ -1,20 +1,21 @@
 #pragma once
 // The one interface through which an application talks to a MOOS community. Two
-// implementations: TcpClient (a real MOOSDB or moosdb-lite over TCP, wire spec 1 and 4) and
+// implementations: TcpClient (a real MOOSDB or moosdb-lite over TCP, docs/protocol.md 1 and 4) and
 // BusClient (an in-process bus with the same semantics, for tests).
 //
 // Contract (both implementations):
 // - Subscriptions are remembered: register_* records the subscription and sends it now if
 //   connected; after every (re)connect all remembered subscriptions are sent again, in the order
-//   they were first made, BEFORE the on-connect callback runs (the server forgot them, spec 1.9).
-//   They return false only for invalid arguments (empty name, comma in a pattern).
+//   they were first made, BEFORE the on-connect callback runs (the server forgot them,
+//   protocol.md 1.9). They return false only for invalid arguments (empty name, comma in a
+//   pattern).
 // - unregister_variable sends UNREGISTER only for a variable registered before (libMOOS, 4.1);
 //   unregister_wildcard always sends (if connected) and forgets the pattern pair.
-// - Posting (notify/post) while disconnected returns false and sends nothing (spec 1.9).
+// - Posting (notify/post) while disconnected returns false and sends nothing (protocol.md 1.9).
 //   Posted NOTIFYs carry this client's name as source and, unless given, the MOOS time now.
 // - fetch() returns all mail received since the last fetch, in arrival order; TIMING and NULL
 //   messages never reach it.
-// - Time: local time = Clock real seconds x warp; MOOS time = local time + skew (spec 0.3).
+// - Time: local time = Clock real seconds x warp; MOOS time = local time + skew (protocol.md 1.10).
 // - Every public function is thread-safe. Callbacks run on the implementation's own thread
 //   (TcpClient: its comms thread) with no lock held; they may call any function of this object.
 
@@ -51,17 +52,17 @@ class Comms {
 
   virtual Clock& clock() const = 0;
   virtual double time_warp() const = 0;
-  /// MOOS time minus local time, seconds (0 until a server says otherwise, spec 1.8, 4.4).
+  /// MOOS time minus local time, seconds (0 until a server says otherwise, protocol.md 1.8, 4.4).
   virtual double skew_s() const = 0;
   double local_time() const { return clock().unix_now_s() * time_warp(); }
   double moos_time() const { return local_time() + skew_s(); }
 
   /// REGISTER `var`; updates of it arrive at most once per `interval_s` MOOS seconds (0 = every
-  /// update; throttled updates are dropped by the server, spec 5.3).
+  /// update; throttled updates are dropped by the server, protocol.md 5.3).
   bool register_variable(const std::string& var, double interval_s = 0.0);
   bool unregister_variable(const std::string& var);
   /// WILDCARD_REGISTER: variables whose name matches `var_pattern` and whose (first) writer
-  /// matches `app_pattern` (spec 5.5). Patterns use `*` and `?` and cannot contain commas.
+  /// matches `app_pattern` (protocol.md 5.5). Patterns use `*` and `?` and cannot contain commas.
   bool register_wildcard(const std::string& var_pattern, const std::string& app_pattern = "*",
                          double interval_s = 0.0);
   bool unregister_wildcard(const std::string& var_pattern, const std::string& app_pattern = "*");
@@ -75,7 +76,8 @@ class Comms {
   bool notify_binary(const std::string& var, const std::string& bytes,
                      std::optional<double> time_s = std::nullopt,
                      const std::string& source_aux = {});
-  /// Posts a prepared NOTIFY (type forced to 'N'); a time of -1 means "now" (libMOOS, spec 2.2).
+  /// Posts a prepared NOTIFY (type forced to 'N'); a time of -1 means "now"
+  /// (libMOOS, protocol.md 2.2).
   bool post(Message notify);
 
   /// All mail received since the last call, oldest first.
@@ -100,7 +102,7 @@ class Comms {
   /// A copy of the on-mail callback (empty if none), for code that calls it later.
   std::function<void()> on_mail_callback() const;
 
-  /// Remembered plain registrations (the `Subscribing` list of `<APP>_STATUS`, spec 7.1).
+  /// Remembered plain registrations (the `Subscribing` list of `<APP>_STATUS`, protocol.md 7.1).
   std::set<std::string> registered_names() const;
   /// Variables this client has posted (the `Publishing` list of `<APP>_STATUS`).
   std::set<std::string> published_names() const;

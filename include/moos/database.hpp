@@ -1,6 +1,6 @@
 #pragma once
 // The MOOSDB's rules, once, without sockets, threads or clocks
-// (../shared/spec/moos-wire-protocol.md sections 1.5-1.9 and 5). Two users: moosdb-lite (the
+// (docs/protocol.md sections 1.5-1.9 and 5). Two users: moosdb-lite (the
 // server; src/apps/moosdb-lite turns bytes into packets and back) and moos::InProcessBus (the
 // in-process community of the app tests, include/moos/bus.hpp).
 //
@@ -9,17 +9,17 @@
 //   by the name they gave in the handshake; names are unique among connected clients.
 // - Time comes in as `now_moos_s` (the server's MOOS time: unix seconds x warp, skew 0).
 // - Every call appends the packets it wants sent to an output list, in the exact order they
-//   must leave; take_output() hands them over. Order per client is preserved (spec 5.6).
+//   must leave; take_output() hands them over. Order per client is preserved (protocol.md 5.6).
 // - Synchronous clients get exactly one packet per packet they send, beginning with a NULL
-//   that carries the server time, and nothing else ever (spec 5.6 MUST). Asynchronous
+//   that carries the server time, and nothing else ever (protocol.md 5.6 MUST). Asynchronous
 //   clients never get a NULL or an empty packet; a TIMING that opened their packet is echoed
 //   as the first message of the reply; and every mail queued for them (live updates, DB
-//   variables, snapshots) is sent at the end of the call that queued it (spec 5.6 SHOULD).
+//   variables, snapshots) is sent at the end of the call that queued it (protocol.md 5.6 SHOULD).
 // - Bad messages inside a well-formed packet are refused one by one with a logged reason
 //   that names the client; the rest of the packet is processed.
 // - A client whose undelivered mail exceeds `max_pending_bytes` is reported through
 //   take_drop_requests() (the connection layer disconnects it); no more mail is queued for it.
-// - Subscriptions (spec 5.3-5.5), as the reference MOOSDB keeps them:
+// - Subscriptions (protocol.md 5.3-5.5), as the reference MOOSDB keeps them:
 //   * a subscription that never delivered is always due ("never" is explicit, not a time 0,
 //     so a clock that starts at 0 behaves like one that starts today); a REGISTER snapshot
 //     counts as a delivery and starts the throttle window;
@@ -29,8 +29,8 @@
 //     subscription has never delivered. Of several matching filters of one client the one
 //     with the greatest (app pattern, variable pattern) pair wins, as in the reference DB's
 //     ordered filter set.
-// - DB variables (spec 5.7): DB_TIME, DB_UPTIME, DB_CLIENTS, DB_RWSUMMARY at construction and
-//   on refresh_db_variables(); DB_EVENT and DB_CLIENTS on every connect and disconnect. With
+// - DB variables (protocol.md 5.7): DB_TIME, DB_UPTIME, DB_CLIENTS, DB_RWSUMMARY at construction
+//   and on refresh_db_variables(); DB_EVENT and DB_CLIENTS on every connect and disconnect. With
 //   `db_variables = false` none is written (the in-process bus, which has no refresh timer).
 //
 // Deviations from the reference DB (docs/moos.md section 3): malformed messages are refused
@@ -55,11 +55,11 @@ namespace moos {
 
 using ClientId = std::uint64_t;
 
-/// Default community of the reference MOOSDB (spec 5.11).
+/// Default community of the reference MOOSDB (protocol.md 5.11).
 inline constexpr const char* kDefaultCommunity = "#1";
 /// Undelivered mail a client may accumulate before it is dropped, in bytes: twice moosdb-lite's
 /// packet limit (256 MiB, sized from libMOOS's 2,048-message outbox), so a libMOOS client that
-/// subscribes to what it posts always gets the echo of its largest packet (issue 12).
+/// subscribes to what it posts always gets the echo of its largest packet.
 inline constexpr std::size_t kDefaultMaxPendingBytes = 512u * 1024u * 1024u;
 /// Refusals logged per client before further ones are only counted (keeps a misbehaving
 /// client from flooding the log; the count is logged when it disconnects). A refusal quotes
@@ -67,7 +67,7 @@ inline constexpr std::size_t kDefaultMaxPendingBytes = 512u * 1024u * 1024u;
 /// packet.
 inline constexpr int kLoggedRefusalsPerClient = 20;
 
-/// What the stored variables may hold in all, bytes (issue 12): each variable's name and last
+/// What the stored variables may hold in all, bytes: each variable's name and last
 /// value with its writer and community, plus kVariableOverheadBytes for its bookkeeping. A
 /// client that posts or registers ever new names grew the store without bound (3,000 variables
 /// of 100 kB held 300 MB, outside the connections' memory budget); a 100-vehicle mission stores
@@ -78,10 +78,10 @@ inline constexpr std::size_t kVariableOverheadBytes = 256;
 
 struct DatabaseConfig {
   std::string community = kDefaultCommunity;
-  std::string hostname;  ///< sent in WELCOME as `hostname=<hostname>` (spec 1.6)
+  std::string hostname;  ///< sent in WELCOME as `hostname=<hostname>` (protocol.md 1.6)
   std::size_t max_pending_bytes = kDefaultMaxPendingBytes;
   std::size_t max_stored_bytes = kDefaultMaxStoredBytes;
-  bool db_variables = true;  ///< publish the DB_* variables of spec 5.7
+  bool db_variables = true;  ///< publish the DB_* variables of protocol.md 5.7
 };
 
 /// One packet for one client.
@@ -95,10 +95,10 @@ struct DropRequest {
   std::string reason;
 };
 
-/// Reasons of the reference DB's POISON messages (spec 1.6), kept verbatim.
+/// Reasons of the reference DB's POISON messages (protocol.md 1.6), kept verbatim.
 std::string duplicate_name_reason(const std::string& name);
 inline constexpr const char* kNoNameReason = "Failed to read receive client's name";
-/// The longest client name accepted, bytes (issue 12). The reference DB has no bound, but a
+/// The longest client name accepted, bytes. The reference DB has no bound, but a
 /// name is repeated in DB_CLIENTS, DB_EVENT and every log line about its client, so a name as
 /// long as a packet may be (hundreds of MB) would make each of those as long. libMOOS names
 /// are a few dozen bytes.
@@ -111,28 +111,28 @@ class Database {
   using LogSink = std::function<void(const std::string&)>;
   using NotifyObserver = std::function<void(const Message&)>;
 
-  /// Creates the DB and writes its DB_* variables once (spec 5.6 SHOULD), so a client
+  /// Creates the DB and writes its DB_* variables once (protocol.md 5.6 SHOULD), so a client
   /// registering before the first refresh gets a snapshot. `observer` (may be empty) is
   /// called with every NOTIFY the DB accepts, as stored and forwarded, DB variables
   /// included: this is what moosdb-lite's `--log` writes.
   Database(DatabaseConfig config, double start_moos_s, LogSink log, NotifyObserver observer = {});
 
-  /// Handshake (spec 1.5-1.6): `identification` is the decoded identification packet.
+  /// Handshake (protocol.md 1.5-1.6): `identification` is the decoded identification packet.
   /// Queues WELCOME (returns true; the client is now connected, DB_EVENT and DB_CLIENTS are
   /// published) or POISON (returns false; the caller closes the connection after sending).
   bool connect(ClientId id, const std::vector<Message>& identification, double now_moos_s);
   /// Why connect() would refuse `identification` now (the POISON's text), or nullopt.
   std::optional<std::string> handshake_refusal(const std::vector<Message>& identification) const;
 
-  /// Disconnect clean-up of spec 1.9: subscriptions, filters and undelivered mail go, the
+  /// Disconnect clean-up of protocol.md 1.9: subscriptions, filters and undelivered mail go, the
   /// name is free, DB_EVENT/DB_CLIENTS are published. Unknown ids are ignored.
   void disconnect(ClientId id, double now_moos_s);
 
-  /// Processes one packet from a connected client (spec 5.2) and queues the replies.
+  /// Processes one packet from a connected client (protocol.md 5.2) and queues the replies.
   /// Taken by value: its NOTIFYs are moved into storage, not copied.
   void process_packet(ClientId id, std::vector<Message> packet, double now_moos_s);
 
-  /// Rewrites DB_TIME, DB_UPTIME, DB_CLIENTS and DB_RWSUMMARY (spec 5.7).
+  /// Rewrites DB_TIME, DB_UPTIME, DB_CLIENTS and DB_RWSUMMARY (protocol.md 5.7).
   void refresh_db_variables(double now_moos_s);
 
   /// Packets to send, oldest first; the list is emptied.
@@ -146,7 +146,7 @@ class Database {
   /// Encoded bytes of the mail queued for a client and not yet handed to take_output() (a
   /// synchronous client's mail waits for its next packet); 0 for unknown ids.
   std::size_t pending_bytes(ClientId id) const;
-  /// The snapshot a REGISTER of `name` would send now (spec 2.6); nullopt while unwritten.
+  /// The snapshot a REGISTER of `name` would send now (protocol.md 2.6); nullopt while unwritten.
   std::optional<Message> latest(const std::string& name) const;
   /// What the store holds now, counted as for DatabaseConfig::max_stored_bytes.
   std::size_t stored_bytes() const { return stored_bytes_; }
@@ -170,7 +170,7 @@ class Database {
     std::string community;
   };
 
-  /// Write-frequency estimate (dval2 of the `ALL` answer, spec 5.8).
+  /// Write-frequency estimate (dval2 of the `ALL` answer, protocol.md 5.8).
   struct WriteFrequency {
     double hz = 0.0;
     double window_start_moos_s = 0.0;
@@ -199,7 +199,7 @@ class Database {
     int refusals = 0;
   };
 
-  // One handler per message type (spec 5.2 step 3), each in the file of its rule.
+  // One handler per message type (protocol.md 5.2 step 3), each in the file of its rule.
   void handle_message(ClientId id, Message msg, double now);
   void handle_notify(ClientId id, Message msg, double now);
   void handle_register(ClientId id, const Message& msg, double now);

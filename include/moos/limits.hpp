@@ -3,13 +3,13 @@
 // the command line, the mission reader, the client and the tools agree on them.
 //
 // Contract:
-// - A time warp is valid in (0, kMaxTimeWarp] (wire spec 0.3).
+// - A time warp is valid in (0, kMaxTimeWarp] (docs/protocol.md 1.10).
 // - parse_time_warp accepts what base::parse_number accepts and a valid warp; nullopt otherwise.
 // - kMaxPort is the highest TCP port number. Clients connect to ports kMinConnectPort..kMaxPort;
 //   a server may listen on kAnyListenPort..kMaxPort, where kAnyListenPort (0) lets the operating
 //   system pick a free port (kConnectPortRange, kListenPortRange).
 // - A Range is a closed or open interval of numbers; contains() is false for NaN.
-// - CommsTick is a whole number of Hz in 1..kMaxCommsTickHz (wire spec 4.2).
+// - CommsTick is a whole number of Hz in 1..kMaxCommsTickHz (docs/protocol.md 4.2).
 
 #include <limits>
 #include <optional>
@@ -38,11 +38,11 @@ inline constexpr Range kNonNegative{0.0, std::numeric_limits<double>::max()};
 
 /// A real-time wait a user asks for (moos-cli --timeout, --connect-timeout), s: (0, 1e8], about
 /// three years. A longer one overflows std::chrono's steady clock (64-bit nanoseconds, 292
-/// years) when it becomes a deadline: 1e300 once made moos-cli give up at once (issue 12).
+/// years) when it becomes a deadline: 1e300 once made moos-cli give up at once.
 inline constexpr double kMaxRealWait_s = 1.0e8;
 inline constexpr Range kRealWaitRange{0.0, kMaxRealWait_s, true, false};
 
-/// The largest time warp libMOOS accepts (wire spec 0.3).
+/// The largest time warp libMOOS accepts (docs/protocol.md 1.10).
 inline constexpr double kMaxTimeWarp = 400.0;
 /// A time warp: (0, kMaxTimeWarp].
 inline constexpr Range kTimeWarpRange{0.0, kMaxTimeWarp, true, false};
@@ -55,12 +55,12 @@ inline constexpr int kAnyListenPort = 0;
 /// Ports a client connects to, and ports a server listens on.
 inline constexpr Range kConnectPortRange{kMinConnectPort, kMaxPort};
 inline constexpr Range kListenPortRange{kAnyListenPort, kMaxPort};
-/// The highest CommsTick libMOOS accepts, in Hz (wire spec 4.2): CommsTick is in 1..200.
+/// The highest CommsTick libMOOS accepts, in Hz (docs/protocol.md 4.2): CommsTick is in 1..200.
 inline constexpr int kMaxCommsTickHz = 200;
 /// CommsTick in Hz: 1..kMaxCommsTickHz.
 inline constexpr Range kCommsTickRangeHz{1, kMaxCommsTickHz};
 
-/// AppTick range, in MOOS-time Hz (issue 12): below one iteration per 1,000 MOOS seconds an app
+/// AppTick range, in MOOS-time Hz: below one iteration per 1,000 MOOS seconds an app
 /// looks stalled; above 1 kHz (x warp in real time) it only busy-loops. libMOOS accepts any
 /// positive number; we refuse the rest with a warning and keep the default.
 inline constexpr double kMinAppTickHz = 1e-3;

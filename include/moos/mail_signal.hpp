@@ -1,5 +1,5 @@
 #pragma once
-// A wake-up for a thread that waits for mail (issue 12, "A missed wake-up"): mail that arrives
+// A wake-up for a thread that waits for mail ("A missed wake-up"): mail that arrives
 // between a fetch and the wait must end the wait at once, not at its deadline.
 //
 // Contract: notify() records that mail arrived and wakes a waiter. take() forgets what was

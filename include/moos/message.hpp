@@ -1,6 +1,6 @@
 #pragma once
 // A MOOS message (core-moos CMOOSMsg) as it travels on the wire.
-// Field meanings and defaults: ../shared/spec/moos-wire-protocol.md sections 2.1-2.6.
+// Field meanings and defaults: docs/protocol.md sections 2.1-2.6.
 
 #include <cstdint>
 #include <string>
@@ -8,7 +8,7 @@
 
 namespace moos {
 
-/// Message type codes (wire spec 2.3). Stored as a plain char so that unknown codes survive
+/// Message type codes (docs/protocol.md 2.3). Stored as a plain char so that unknown codes survive
 /// decoding and can be ignored by receivers instead of failing the whole packet.
 namespace msg_type {
 inline constexpr char kNotify = 'N';
@@ -25,7 +25,7 @@ inline constexpr char kTiming = 'T';
 inline constexpr char kCommand = 'C';
 }  // namespace msg_type
 
-/// Data type codes (wire spec 2.4).
+/// Data type codes (docs/protocol.md 2.4).
 namespace data_type {
 inline constexpr char kDouble = 'D';
 inline constexpr char kString = 'S';
@@ -34,15 +34,15 @@ inline constexpr char kNotSet = '~';
 }  // namespace data_type
 
 /// The identification key that selects asynchronous mode and the WELCOME string value that
-/// advertises it, compared case-insensitively (wire spec 1.5, 1.6).
+/// advertises it, compared case-insensitively (docs/protocol.md 1.5, 1.6).
 inline constexpr std::string_view kAsynchronousKey = "asynchronous";
-/// The key of TIMING messages (wire spec 2.6).
+/// The key of TIMING messages (docs/protocol.md 2.6).
 inline constexpr std::string_view kTimingKey = "_async_timing";
 
-/// Unused doubles and ids are -1, as libMOOS writes them (wire spec 2.2).
+/// Unused doubles and ids are -1, as libMOOS writes them (docs/protocol.md 2.2).
 inline constexpr double kUnsetDouble = -1.0;
 inline constexpr std::int32_t kUnsetId = -1;
-/// SERVER_REQUEST messages and their answers carry id -2 (wire spec 2.5).
+/// SERVER_REQUEST messages and their answers carry id -2 (docs/protocol.md 2.5).
 inline constexpr std::int32_t kServerRequestId = -2;
 
 struct Message {
@@ -62,7 +62,7 @@ struct Message {
   bool is_string() const { return data_type == data_type::kString; }
   bool is_binary() const { return data_type == data_type::kBinary; }
 
-  /// Serialized size in bytes: 54 + the lengths of the five strings (wire spec 2.1).
+  /// Serialized size in bytes: 54 + the lengths of the five strings (docs/protocol.md 2.1).
   std::size_t encoded_size() const {
     return kFixedEncodedSize + source.size() + source_aux.size() + community.size() +
            key.size() + sval.size();
@@ -75,7 +75,7 @@ struct Message {
   friend bool operator!=(const Message& a, const Message& b) { return !(a == b); }
 };
 
-/// A NOTIFY carrying a double (wire spec 2.2): string value empty, dval2 -1.
+/// A NOTIFY carrying a double (docs/protocol.md 2.2): string value empty, dval2 -1.
 Message make_double_notify(std::string key, double value, std::string source, double time);
 /// A NOTIFY carrying a string: dval -1 as libMOOS writes it.
 Message make_string_notify(std::string key, std::string value, std::string source, double time);

@@ -1,7 +1,7 @@
 #pragma once
 // The .moos mission file: globals, ProcessConfig blocks, comments, and the nsplug habits that
 // mission folders rely on (`#include FILE`, `$(NAME)` substitution).
-// Behaviour: ../shared/spec/moos-wire-protocol.md section 6, with these deliberate choices:
+// Behaviour: docs/protocol.md section 6, with these deliberate choices:
 // - Block parameters keep the libMOOS split (key = text before the first '=', both sides
 //   trimmed, interior spaces kept) and are returned in FILE ORDER with their file and line,
 //   so each application applies its own rules (uFldHazardSensor: rulings D36).

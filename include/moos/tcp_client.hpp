@@ -1,21 +1,21 @@
 #pragma once
-// A MOOS client over TCP in asynchronous mode (wire spec sections 1, 4.1, 4.3, 4.4 and 4.6),
+// A MOOS client over TCP in asynchronous mode (docs/protocol.md sections 1, 4.1, 4.3, 4.4 and 4.6),
 // compatible with the reference MOOSDB and with moosdb-lite.
 //
 // Contract:
 // - start() launches one comms thread that connects, performs the handshake (32-byte banner,
-//   identification with key "asynchronous" and the client name, spec 1.4-1.5) and then both
+//   identification with key "asynchronous" and the client name, protocol.md 1.4-1.5) and then both
 //   writes and reads the socket. Every public function is thread-safe.
 // - POISON (duplicate name) stops the client for good (state kPoisoned, last_error() holds the
 //   server's reason), as libMOOS does. Any other failure (refused connection, lost connection,
 //   a handshake that closes or stays silent longer than handshake_timeout_real_s) is retried
-//   once per MOOS second (1/warp real seconds, spec 1.9).
+//   once per MOOS second (1/warp real seconds, protocol.md 1.9).
 // - After each handshake the client (1) adopts the WELCOME skew per SkewPolicy (1.8), (2) queues
 //   every remembered subscription, (3) runs the on-connect callback, then normal traffic starts.
 // - Sending: whatever was posted is sent as one packet as soon as possible, after
 //   max(server delay from the last TIMING echo, warp x tw_delay_factor ms) since the previous
-//   send (4.3 step 4). A TIMING message (own local time, spec 2.6) leads the next packet when
-//   kTimingInterval_real_s has passed since the last one, and is sent alone while idle, so an
+//   send (4.3 step 4). A TIMING message (own local time, protocol.md 2.6) leads the next packet
+//   when kTimingInterval_real_s has passed since the last one, and is sent alone while idle, so an
 //   idle client sends one at least once per second (4.6); while the app's thread sends packets
 //   itself, the comms thread waits kAppTimingSlack_real_s longer, so the TIMING rides in the
 //   app's next packet. Packets are never empty.
@@ -23,7 +23,7 @@
 //   messages elsewhere and NULL messages anywhere are dropped; everything else, `~` data types
 //   included, goes to the inbox in arrival order. A framing or decoding error closes the
 //   connection (then it is retried).
-// - The app's own thread does the I/O when it can (issue 14): release_sends() writes the held
+// - The app's own thread does the I/O when it can: release_sends() writes the held
 //   batch itself when the send slot is open. After expect_fetch_within(), fetch() first reads
 //   what the socket holds, and the comms thread leaves reading to fetch() for that long plus
 //   kAppReadGrace_real_s (except while a TIMING echo is awaited, so the skew stays exact), so an
@@ -61,24 +61,24 @@ enum class ConnectionState {
   kClosed,      ///< close() was called
 };
 
-/// When to adopt the skew a server announces in WELCOME (spec 1.8).
+/// When to adopt the skew a server announces in WELCOME (protocol.md 1.8).
 enum class SkewPolicy {
   kLibMoos,  ///< libMOOS non-quiet: ignore it when the DB runs on this host (same hostname)
   kAlways,   ///< libMOOS quiet mode and pymoos2
   kNever,
 };
 
-/// Unread mail a client keeps before it drops the oldest (issue 12): far above what a
+/// Unread mail a client keeps before it drops the oldest: far above what a
 /// 100-vehicle mission delivers between two iterations (about 1,000 messages a second), so only
 /// an app that has stopped fetching, or a flood, reaches it.
 inline constexpr std::size_t kDefaultMaxInboxMessages = 65536;
 inline constexpr std::size_t kDefaultMaxInboxBytes = std::size_t{64} * 1024 * 1024;
 
 struct TcpClientOptions {
-  std::string host = "localhost";  ///< a name or dotted IPv4 address (IPv4 only, spec 1.1)
+  std::string host = "localhost";  ///< a name or dotted IPv4 address (IPv4 only, protocol.md 1.1)
   int port = 9000;                 ///< 1..65535
   std::string name;                ///< the client name: unique in the community, not empty
-  double time_warp = 1.0;          ///< 0 < W <= 400 (spec 0.3)
+  double time_warp = 1.0;          ///< 0 < W <= 400 (protocol.md 1.10)
   Clock* clock = nullptr;          ///< time stamps; nullptr = system_clock()
   SkewPolicy skew_policy = SkewPolicy::kLibMoos;
   /// This host's name for the kLibMoos comparison; "" = gethostname().

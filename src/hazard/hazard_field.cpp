@@ -185,7 +185,7 @@ HazardFileCounts load_hazard_file_text(std::string_view text, std::string_view f
   const auto lines = static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1;
   field.reserve(field.size() + lines);
   int line_number = 0;
-  // A UTF-8 byte-order mark is accepted at the start, as in mission files (issue 12).
+  // A UTF-8 byte-order mark is accepted at the start, as in mission files.
   std::size_t start = base::starts_with(text, "\xEF\xBB\xBF") ? 3 : 0;
   while (start <= text.size()) {
     const auto end = text.find('\n', start);

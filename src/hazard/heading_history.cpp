@@ -13,7 +13,7 @@ void HeadingHistory::add(double heading_deg, double time_s) {
   const double step_deg =
       empty ? 0.0 : std::fabs(base::norm180(heading_deg - samples_.back().heading_deg));
   samples_.push_back({heading_deg, time_s, step_deg});
-  // Inside the window means newest - t < window (strict, spec 8.2), allowing for clock rounding
+  // Inside the window means newest - t < window (strict), allowing for clock rounding
   // (time_rules.hpp), so the window holds the same number of samples all day at epoch times.
   while (size() > kMaxSamples ||
          elapsed_at_least(time_s, samples_[first_].time_s, kTurnWindow_s)) {

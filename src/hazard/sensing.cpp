@@ -1,4 +1,5 @@
-// Sensing (spec 8; rulings "Pass"): node reports and sensor requests, the per-vehicle phase of
+// Sensing (docs/differences.md, "Geometry and sensing"): node reports and sensor requests, the
+// per-vehicle phase of
 // step(): activity, the speed and turn gates, the swath, and the entry events, sampled at the
 // latest pose or along the track of node reports (sensing_track.hpp).
 #include <algorithm>
@@ -94,15 +95,15 @@ bool Engine::gates_pass(double speed_mps, const std::optional<HeadingHistory>& h
   return true;
 }
 
-// Sampling (the default, spec 8.5): the objects inside the swath at the latest pose, against the
-// objects inside at the last sensor-on iteration.
+// Sampling (the default; docs/accuracy.md): the objects inside the swath at the latest pose,
+// against the objects inside at the last sensor-on iteration.
 void Engine::update_entries(VehicleState& v, const Swath& swath, double now_s, Outputs& out) {
   scratch_inside_.clear();
   field_.grid().for_each_in_box(swath.bounds(), [&](ObjectId id, glm::dvec2 position) {
     if (swath.contains(position)) scratch_inside_.push_back(id);
   });
   std::sort(scratch_inside_.begin(), scratch_inside_.end());
-  // A sensor event is an object inside now that was not inside before (spec 8.5).
+  // A sensor event is an object inside now that was not inside before.
   std::vector<ObjectId> entering;
   std::set_difference(scratch_inside_.begin(), scratch_inside_.end(), v.inside.begin(),
                       v.inside.end(), std::back_inserter(entering));

@@ -12,8 +12,8 @@
 namespace hazard {
 
 // A vehicle holds its width from its accepted configuration request (or its default setting)
-// until kWidthHoldWindow_s pass with no configuration or sensor request from it (rulings
-// "Width choice", as amended by issue 13): holding does not wait for a sensor request.
+// until kWidthHoldWindow_s pass with no configuration or sensor request from it
+// (docs/differences.md D20): holding does not wait for a sensor request.
 bool Engine::holds_width(const VehicleState& v, double now_s) const {
   return v.setting && v.last_width_claim_s &&
          !elapsed_at_least(now_s, *v.last_width_claim_s, kWidthHoldWindow_s);

@@ -1,5 +1,5 @@
-// Visuals (spec 5.3, 5.4; rulings "Visuals", D19): object markers and aspect axes, the swath
-// polygon, and the detection and classification cue circles.
+// Visuals (docs/messages.md, "Visuals"; docs/differences.md D19): object markers and aspect axes,
+// the swath polygon, and the detection and classification cue circles.
 #include "visuals.hpp"
 
 #include <algorithm>
@@ -14,7 +14,7 @@ namespace hazard {
 
 namespace {
 
-// Visual constants of the original (spec 5.3, 5.4) and the rulings' colours (D19).
+// Visual constants of the original (docs/messages.md) and the rulings' colours (D19).
 constexpr double kCircleRadius_m = 10.0;
 constexpr int kDetectionCircleVertices = 12;
 constexpr int kClassificationCircleVertices = 5;  // drawn as a pentagon
@@ -99,7 +99,7 @@ void Engine::post_object_visuals(ObjectId id, Outputs& out) const {
   if (!hazard) m.fill_transparency = 1.0 - o.resemblance.value_or(kMarkerFillWithoutHr);
   out.post("VIEW_MARKER", format_view_marker(m));
   if (!o.aspect_deg) return;
-  // The aspect axis (spec 5.4; rulings "Visuals": every aspect, 0 included).
+  // The aspect axis (docs/messages.md: every aspect, 0 included).
   const double length_m =
       (o.aspect_min_deg && o.aspect_max_deg)
           ? kSeglistBaseLength_m + kSeglistWindowLength_m *

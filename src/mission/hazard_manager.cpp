@@ -172,7 +172,7 @@ Outputs HazardManager::on_pose(glm::dvec2 position_m, double heading_deg, double
   headings_.add(heading_deg, now_s);
   const double rate_dps = headings_.turn_rate_dps();
   const bool speed_ok = !(speed_mps > config_.sensor_max_speed_mps);
-  // The sensor's test (spec 8.4 d): off when rate > limit or speed > limit, strictly.
+  // The sensor's test: off when rate > limit or speed > limit, strictly.
   const bool on =
       setting_.has_value() && !(rate_dps > config_.sensor_max_turn_rate_dps) && speed_ok;
   const bool clear =
@@ -204,7 +204,7 @@ void HazardManager::add_track_sample(const TrackSample& sample) {
 }
 
 void HazardManager::update_passes(const TrackSample& s) {
-  if (!s.sensor_on) return;  // the sensor freezes its inside/outside state while off (spec 8.5)
+  if (!s.sensor_on) return;  // the sensor freezes its inside/outside state while off
   const Footprint foot(s.position_m, s.heading_deg, s.half_width_m, config_);
   // Exits (and core reached) for the objects inside.
   for (std::size_t i = 0; i < inside_.size();) {

@@ -142,7 +142,7 @@ const std::vector<ParamInfo>& manager_parameters() {
 std::string apply_manager_param(ManagerConfig& config, std::string_view key,
                                 std::string_view value) {
   std::string name = base::to_lower(base::trim(key));
-  if (name == "pd") name = "sensor_pd";  // spec 13: both names are accepted
+  if (name == "pd") name = "sensor_pd";  // as uFldHazardMgr: both names are accepted
   for (const ParamRow& row : param_rows())
     if (name == row.info.name) return row.apply(config, value);
   return "unknown parameter '" + std::string(base::trim(key)) + "'";

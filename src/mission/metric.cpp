@@ -39,7 +39,7 @@ const std::vector<NumberParam>& number_params() {
 const ParamInfo kShowXpath{"show_xpath", "false", "draw the minimum-hazard transit lane"};
 const ParamInfo kHazardFile{"hazard_file", "", "ground truth (the sensor's hazard file)"};
 
-// `//` comments are stripped from hazard files (spec 14.1).
+// `//` comments are stripped from hazard files (as uFldHazardMetric does).
 std::string_view without_comment(std::string_view line) {
   const auto pos = line.find("//");
   return pos == std::string_view::npos ? line : line.substr(0, pos);

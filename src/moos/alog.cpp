@@ -93,7 +93,7 @@ bool needs_escape(char c) {
 }
 
 // A VARIABLE or SOURCE column: one word, whatever a client sent, padded to `width`. Blanks
-// would shift the columns and a newline would forge a record, so both are escaped (issue 12).
+// would shift the columns and a newline would forge a record, so both are escaped.
 void append_column(std::string& out, std::string_view text, std::size_t width) {
   const std::size_t at = out.size();
   if (text.empty()) {

@@ -1,5 +1,5 @@
 // Application base: CMOOSApp's main loop and core-moos AppCastingMOOSApp's reporting, following
-// wire spec 6.2-6.4, 7.1 and 7.2; contract and deviations in include/moos/app.hpp.
+// docs/protocol.md 6.2-6.4, 7.1 and 7.2; contract and deviations in include/moos/app.hpp.
 
 #include "moos/app.hpp"
 
@@ -16,7 +16,7 @@ namespace moos {
 
 namespace {
 
-constexpr double kMaxTermReportInterval_s = 10.0;  // spec 7.2 clamp 0-10
+constexpr double kMaxTermReportInterval_s = 10.0;  // protocol.md 7.2 clamp 0-10
 constexpr long long kMaxAppCastRunWarnings = 1000; // core-moos upper bound
 /// libMOOS waits this many MOOS seconds for the first connection before starting up (7.1).
 constexpr double kConnectWait_moos_s = 5.0;
@@ -33,7 +33,7 @@ std::string place(const ConfigLine& line) {
   return " (" + base::log_excerpt(line.file) + ":" + std::to_string(line.line) + ")";
 }
 
-/// libMOOS booleans: TRUE in any case, or a number > 0 (spec 6.2).
+/// libMOOS booleans: TRUE in any case, or a number > 0 (protocol.md 6.2).
 std::optional<bool> moos_bool(std::string_view value) {
   if (auto b = base::parse_bool(value)) return b;
   if (auto n = base::parse_number(value)) return *n > 0;
@@ -201,7 +201,7 @@ AppSettings resolve_app_settings(const AppTraits& traits, const CommandLine& cl,
       s.config_warnings.push_back("No mission config block found for " + s.app_name);
     }
   }
-  // Command line beats the mission, except that a block AppTick wins (spec 6.4).
+  // Command line beats the mission, except that a block AppTick wins (protocol.md 6.4).
   if (cl.moos_host) s.server_host = *cl.moos_host;
   if (cl.moos_port) s.server_port = *cl.moos_port;
   if (cl.moos_time_warp) s.time_warp = *cl.moos_time_warp;
@@ -425,7 +425,7 @@ void MoosApp::post_report(double iterate_start) {
   appcast_.set_iteration(iteration_);
   appcast_.set_node(community());
 
-  // Spec 7.2: real seconds since the last terminal report and the last appcast.
+  // protocol.md 7.2: real seconds since the last terminal report and the last appcast.
   const double warp = comms_->time_warp();
   auto real_since = [&](const std::optional<double>& t) {
     return t ? (curr_time_ - *t) / warp : std::numeric_limits<double>::infinity();

@@ -1,5 +1,5 @@
-// AppCast model, string and terminal frame. Follows wire spec 7.2 (the core-moos AppCast layout,
-// byte for byte) and hazard spec 11; contract in include/moos/appcast.hpp.
+// AppCast model, string and terminal frame. Follows docs/protocol.md 7.2 (the core-moos AppCast
+// layout, byte for byte) and docs/uFldHazardSensor.md; contract in include/moos/appcast.hpp.
 
 #include "moos/appcast.hpp"
 
@@ -12,7 +12,7 @@ namespace moos {
 namespace {
 constexpr std::string_view kOuterSeparator = "!@#";
 constexpr std::string_view kInnerSeparator = "!@";
-/// Width of the terminal header line and its '=' rules (hazard spec 11).
+/// Width of the terminal header line and its '=' rules (docs/uFldHazardSensor.md).
 constexpr std::size_t kHeaderWidth = 62;
 /// Width of the '=' rules around the events list (core-moos terminal layout).
 constexpr std::size_t kEventsRuleWidth = 67;

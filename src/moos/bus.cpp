@@ -1,8 +1,8 @@
 // In-process MOOS community: an adapter between Comms clients and moos::Database; contract in
 // include/moos/bus.hpp.
 //
-// Data structures: the Database (every rule of spec 5); per client name, its current Database
-// connection id (a reconnect is a new connection, as over TCP), its inbox and connection
+// Data structures: the Database (every rule of protocol.md 5); per client name, its current
+// Database connection id (a reconnect is a new connection, as over TCP), its inbox and connection
 // count; the connection ids back to names, to route the Database's output. One mutex guards
 // everything; on-mail callbacks run after it is released.
 

@@ -1,4 +1,4 @@
-// MOOS v10 message and packet codec. Layouts: ../shared/spec/moos-wire-protocol.md 2.1 and 3.1.
+// MOOS v10 message and packet codec. Layouts: docs/protocol.md 2.1 and 3.1.
 // Integers and doubles are written byte by byte in little-endian order so the code is
 // independent of host byte order and alignment.
 
@@ -217,7 +217,7 @@ std::string encode_packet(const std::vector<Message>& messages) {
   out.reserve(total);
   put_int32(out, static_cast<std::int32_t>(total));
   put_int32(out, static_cast<std::int32_t>(messages.size()));
-  out.push_back('\0');  // compression flag: v10 has no compression (spec 3.2)
+  out.push_back('\0');  // compression flag: v10 has no compression (protocol.md 3.2)
   for (const auto& m : messages) append_message(out, m);
   return out;
 }

@@ -1,4 +1,4 @@
-// Command-line conventions of MOOS programs (wire spec 6.4). Contract in
+// Command-line conventions of MOOS programs (docs/protocol.md 6.4). Contract in
 // include/moos/command_line.hpp.
 
 #include "moos/command_line.hpp"
@@ -15,7 +15,7 @@ namespace {
 
 constexpr std::string_view kMoosPrefix = "--moos_";
 constexpr std::string_view kAliasPrefix = "--alias=";
-/// Switches that libMOOS reads as "switch followed by a separate argument" (spec 6.4).
+/// Switches that libMOOS reads as "switch followed by a separate argument" (protocol.md 6.4).
 constexpr std::string_view kSwitchesWithNextArgument[] = {"moos_app_name", "moos_comms_tick"};
 
 bool is_mission_name(std::string_view arg) {
@@ -230,7 +230,7 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
     free.push_back(arg);
   }
 
-  // Mission file: first *.moos / *.moos++ argument, else the first free one (spec 6.4).
+  // Mission file: first *.moos / *.moos++ argument, else the first free one (protocol.md 6.4).
   bool mission_is_second = false;  // then there is no positional alias
   std::size_t mission_index = free.size();  // free.size(): none
   for (std::size_t i = 0; i < free.size() && mission_index == free.size(); ++i)

@@ -1,6 +1,6 @@
 // The shared part of every Comms implementation: the book of subscriptions that is replayed after
 // each reconnect, the published-names set, and message construction exactly as libMOOS fills the
-// fields (wire spec 2.6). Contract in include/moos/comms.hpp.
+// fields (docs/protocol.md 2.6). Contract in include/moos/comms.hpp.
 
 #include "moos/comms.hpp"
 
@@ -11,7 +11,7 @@
 namespace moos {
 
 namespace {
-/// UNREGISTER carries 0 in dval (spec 2.6).
+/// UNREGISTER carries 0 in dval (protocol.md 2.6).
 constexpr double kUnregisterDval = 0.0;
 
 bool valid_pattern(const std::string& pattern) {
@@ -47,7 +47,7 @@ Message Comms::register_message(const std::string& var, double interval_s) const
 }
 
 Message Comms::wildcard_message(char type, const WildcardSpec& spec) const {
-  // The key of a wildcard message is the client's own name (ignored by the DB, spec 2.6).
+  // The key of a wildcard message is the client's own name (ignored by the DB, protocol.md 2.6).
   Message m = control_message(type, data_type::kString, name_);
   m.sval = format_wildcard_spec(spec);
   return m;
@@ -62,7 +62,7 @@ bool Comms::register_variable(const std::string& var, double interval_s) {
     if (it == subscriptions_.end())
       subscriptions_.push_back(Subscription{false, entry});
     else
-      it->entry.interval_s = interval_s;  // registering again updates the interval (spec 4.1)
+      it->entry.interval_s = interval_s;  // registering again updates the interval
   }
   transmit(register_message(var, interval_s));
   return true;

@@ -1,13 +1,13 @@
-// MOOSDB rules: handshake, disconnect and the packet loop (../shared/spec/moos-wire-protocol.md
+// MOOSDB rules: handshake, disconnect and the packet loop (docs/protocol.md
 // 1.5-1.9, 5.2). Contract in include/moos/database.hpp; the other rules live in
 // database_notify.cpp (5.3), database_register.cpp (5.4-5.5), database_db_variables.cpp (5.7),
 // database_server_requests.cpp (5.8) and database_mail.cpp (5.6).
 //
-// Algorithm: each call applies the spec's rules in order and appends mail to the pending
-// queues of the clients it concerns. At the end of every public call, the pending mail of
-// each asynchronous client is sent as one packet (spec 5.6 SHOULD: deliver as soon as
+// Algorithm: each call applies the rules of docs/protocol.md in order and appends mail to the
+// pending queues of the clients it concerns. At the end of every public call, the pending mail of
+// each asynchronous client is sent as one packet (protocol.md 5.6 SHOULD: deliver as soon as
 // queued), while a synchronous client's mail waits for the reply to its next packet
-// (spec 5.6 MUST: no unsolicited packets). The requester's own reply is built first, so
+// (protocol.md 5.6 MUST: no unsolicited packets). The requester's own reply is built first, so
 // an echoed TIMING opens its packet.
 //
 // Data structures: variables live in a vector indexed by a small VarId, found by name
@@ -70,7 +70,7 @@ Database::Database(DatabaseConfig config, double start_moos_s, LogSink log,
 }
 
 // ---------------------------------------------------------------------------------------
-// Connections (spec 1.5, 1.6, 1.9)
+// Connections (protocol.md 1.5, 1.6, 1.9)
 
 bool Database::connect(ClientId id, const std::vector<Message>& identification,
                        double now_moos_s) {
@@ -91,7 +91,7 @@ bool Database::connect(ClientId id, const std::vector<Message>& identification,
   const std::string name = client.name;
   clients_.emplace(id, std::move(client));
 
-  // Skew = server MOOS time when the identification is processed - its time (spec 1.8).
+  // Skew = server MOOS time when the identification is processed - its time (protocol.md 1.8).
   Message welcome = handshake_reply(mt::kWelcome, dt::kDouble, now_moos_s);
   welcome.source_aux = "hostname=" + config_.hostname;
   welcome.community = config_.community;
@@ -123,12 +123,12 @@ void Database::disconnect(ClientId id, double now_moos_s) {
 }
 
 // ---------------------------------------------------------------------------------------
-// Packets (spec 5.2)
+// Packets (protocol.md 5.2)
 
 void Database::process_packet(ClientId id, std::vector<Message> packet, double now_moos_s) {
   if (clients_.count(id) == 0) return;
   // Step 2: a leading TIMING is echoed to asynchronous clients; synchronous clients never
-  // receive TIMING (spec 5.6), so theirs is dropped. TIMING elsewhere is ignored.
+  // receive TIMING (protocol.md 5.6), so theirs is dropped. TIMING elsewhere is ignored.
   std::optional<Message> echo;
   std::size_t first = 0;
   if (!packet.empty() && packet.front().type == mt::kTiming) {
@@ -154,7 +154,7 @@ void Database::process_packet(ClientId id, std::vector<Message> packet, double n
   client.pending.clear();
   client.pending_bytes = 0;
   if (!reply.empty()) send_packet(id, std::move(reply));
-  // Step 7, for every asynchronous client and on every packet (spec 5.6 SHOULD).
+  // Step 7, for every asynchronous client and on every packet (protocol.md 5.6 SHOULD).
   flush_async_mail();
 }
 
@@ -181,7 +181,7 @@ void Database::handle_message(ClientId id, Message msg, double now) {
 // Diagnostics and queries
 
 // `what` quotes the client's own text (names, patterns, types): escaped here, once, so a
-// refusal can never end a log line or forge one (issue 12).
+// refusal can never end a log line or forge one.
 void Database::refuse(ClientId id, const std::string& what) {
   Client& client = clients_.at(id);
   ++client.refusals;

@@ -1,4 +1,4 @@
-// MOOSDB rule: the DB's own variables (../shared/spec/moos-wire-protocol.md 5.7). Contract in
+// MOOSDB rule: the DB's own variables (docs/protocol.md 5.7). Contract in
 // include/moos/database.hpp. They take the clients' NOTIFY path (database_notify.cpp).
 
 #include "moos/database.hpp"
@@ -30,7 +30,7 @@ std::string Database::client_list() const {
 }
 
 std::string Database::rw_summary() const {
-  // `client=sub1:sub2&pub1:pub2` entries separated by `,` (spec 5.7).
+  // `client=sub1:sub2&pub1:pub2` entries separated by `,` (protocol.md 5.7).
   std::string text;
   for (const auto& [id, client] : clients_) {
     if (!text.empty()) text += ',';

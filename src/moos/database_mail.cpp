@@ -1,4 +1,4 @@
-// MOOSDB rule: mail, replies and their order (../shared/spec/moos-wire-protocol.md 2.6, 5.6).
+// MOOSDB rule: mail, replies and their order (docs/protocol.md 2.6, 5.6).
 // Contract in include/moos/database.hpp.
 
 #include <utility>
@@ -11,7 +11,7 @@ namespace mt = msg_type;
 namespace dt = data_type;
 
 Message Database::snapshot(const Variable& var) const {
-  // Spec 2.6 "NOTIFY S->C snapshot on REGISTER"; an unwritten variable (the `ALL` answer)
+  // protocol.md 2.6 "NOTIFY S->C snapshot on REGISTER"; an unwritten variable (the `ALL` answer)
   // shows the wire's unset fields.
   Message m;
   m.id = kUnsetId;
@@ -68,7 +68,7 @@ void Database::send_packet(ClientId to, std::vector<Message> messages) {
 }
 
 Message Database::null_reply(double now) const {
-  // Spec 2.6 "NULL S->C": dval carries the server's local warped time, time is -1.
+  // protocol.md 2.6 "NULL S->C": dval carries the server's local warped time, time is -1.
   Message m;
   m.id = kUnsetId;
   m.type = mt::kNull;

@@ -1,4 +1,4 @@
-// MOOSDB rule: NOTIFY, the store and the fan-out (../shared/spec/moos-wire-protocol.md 5.3).
+// MOOSDB rule: NOTIFY, the store and the fan-out (docs/protocol.md 5.3).
 // Contract in include/moos/database.hpp. Clients' NOTIFYs and the DB's own variables take
 // the same path, so subscribers cannot tell them apart.
 
@@ -14,7 +14,7 @@ namespace {
 namespace mt = msg_type;
 namespace dt = data_type;
 
-/// Write-frequency estimate of a variable (dval2 of the `ALL` answer, spec 5.8): writes
+/// Write-frequency estimate of a variable (dval2 of the `ALL` answer, protocol.md 5.8): writes
 /// counted over windows of at least this many MOOS seconds.
 constexpr double kFrequencyWindow_moos_s = 1.0;
 

@@ -1,4 +1,4 @@
-// MOOSDB rules: REGISTER / UNREGISTER and wildcard filters (../shared/spec/moos-wire-protocol.md
+// MOOSDB rules: REGISTER / UNREGISTER and wildcard filters (docs/protocol.md
 // 5.4, 5.5). Contract in include/moos/database.hpp.
 
 #include <algorithm>
@@ -22,13 +22,13 @@ void Database::handle_register(ClientId id, const Message& msg, double now) {
 }
 
 void Database::subscribe(ClientId id, VarId var, double interval_s, double now) {
-  // Add or replace; replacing forgets the last delivery (spec 5.4).
+  // Add or replace; replacing forgets the last delivery (protocol.md 5.4).
   Variable& v = vars_[var];
   Subscription& sub = v.subscribers[id];
   sub = Subscription{interval_s, std::nullopt};
   clients_.at(id).subscribed.insert(var);
   if (v.value) {
-    // Every REGISTER re-sends the current value and starts the throttle window (spec 5.4).
+    // Every REGISTER re-sends the current value and starts the throttle window (protocol.md 5.4).
     sub.last_delivery_moos_s = now;
     queue_mail(id, snapshot(v));
   }
@@ -42,7 +42,7 @@ void Database::handle_unregister(ClientId id, const Message& msg) {
 }
 
 void Database::bind_wildcard_filters(VarId var, const std::string& writer) {
-  // Spec 5.3 step 2, as the reference DB does it: every matching filter (re)subscribes its
+  // protocol.md 5.3 step 2, as the reference DB does it: every matching filter (re)subscribes its
   // client, replacing an explicit REGISTER; the reference walks each client's filters in
   // (app pattern, variable pattern) order, so the greatest matching pair has the last word.
   Variable& v = vars_[var];
@@ -62,7 +62,7 @@ void Database::bind_wildcard_filters(VarId var, const std::string& writer) {
 }
 
 bool Database::matches(const WildcardSpec& spec, const Variable& var) {
-  // An existing variable matches by its last writer (empty if never written), spec 5.5.
+  // An existing variable matches by its last writer (empty if never written), protocol.md 5.5.
   return spec.matches(var.value ? var.value->writer : std::string(), var.name);
 }
 
@@ -88,7 +88,7 @@ void Database::handle_wildcard_unregister(ClientId id, const Message& msg) {
                           "\" refused: " + problem);
   Client& client = clients_.at(id);
   auto& filters = client.filters;
-  // Also the identical filter (documented deviation, spec 5.5 allows it).
+  // Also the identical filter (documented deviation, protocol.md 5.5 allows it).
   const auto same = std::find_if(filters.begin(), filters.end(),
                                  [&](const WildcardSpec& f) { return f.same_patterns(spec); });
   if (same != filters.end()) filters.erase(same);

@@ -1,4 +1,4 @@
-// MOOSDB rule: server requests (../shared/spec/moos-wire-protocol.md 5.8): `ALL` by equality,
+// MOOSDB rule: server requests (docs/protocol.md 5.8): `ALL` by equality,
 // the others by substring. Contract in include/moos/database.hpp.
 
 #include <utility>
@@ -26,7 +26,8 @@ void Database::handle_server_request(ClientId id, const Message& msg, double now
 void Database::answer_all(ClientId id, std::int32_t request_id) {
   for (const Variable& var : vars_) {
     // The snapshot fields, with the request id, the write frequency in dval2 and the time
-    // of the last write relative to the DB start (-1 if never written or negative), spec 5.8.
+    // of the last write relative to the DB start (-1 if never written or negative),
+    // protocol.md 5.8.
     Message m = snapshot(var);
     m.id = request_id;
     m.dval2 = var.frequency.hz;
@@ -66,7 +67,7 @@ void Database::answer_proc_summary(ClientId requester, std::int32_t request_id, 
 }
 
 void Database::clear_db() {
-  // Values, types, writers and counters go; names and subscriptions stay (spec 5.8).
+  // Values, types, writers and counters go; names and subscriptions stay (protocol.md 5.8).
   for (Variable& var : vars_) {
     Variable cleared;
     cleared.name = std::move(var.name);

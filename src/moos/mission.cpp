@@ -1,4 +1,4 @@
-// .moos mission reader. Follows ../shared/spec/moos-wire-protocol.md section 6.1-6.3 (libMOOS
+// .moos mission reader. Follows docs/protocol.md section 6.1-6.3 (libMOOS
 // CMOOSFileReader / CProcessConfigReader behaviour) plus two nsplug habits (`#include`, `$(NAME)`),
 // except for the deliberate choices listed in include/moos/mission.hpp.
 //
@@ -32,7 +32,7 @@ namespace fs = std::filesystem;
 /// Deeper include chains are almost certainly a mistake; the limit keeps recursion bounded.
 constexpr int kMaxIncludeDepth = 32;
 constexpr std::string_view kUtf8Bom = "\xEF\xBB\xBF";
-constexpr std::string_view kDefineMarker = "define:";  // case-sensitive, spec 6.1
+constexpr std::string_view kDefineMarker = "define:";  // case-sensitive, protocol.md 6.1
 constexpr std::string_view kHeaderPrefix = "PROCESSCONFIG=";
 constexpr std::string_view kIncludeDirective = "#include";
 /// nsplug directives other than #include that we do not evaluate.
@@ -46,8 +46,8 @@ struct SourceLine {
   int line = 0;
 };
 
-/// Removes the comment and the first pair of double quotes (libMOOS verbatim quoting, spec 6.1).
-/// A `//` inside that pair does not start a comment.
+/// Removes the comment and the first pair of double quotes (libMOOS verbatim quoting,
+/// protocol.md 6.1). A `//` inside that pair does not start a comment.
 std::string strip_comment_and_quotes(std::string_view raw) {
   const std::string_view lead_trimmed = base::trim(raw);
   if (base::starts_with(lead_trimmed, "//")) return {};
@@ -119,7 +119,7 @@ class Reader {
         else
           defines_[name] = base::remove_blanks(body.substr(eq + 1));  // later duplicate overrides
       }
-      sl.code.clear();  // a define line is not itself a parameter (spec 6.1)
+      sl.code.clear();  // a define line is not itself a parameter (protocol.md 6.1)
     }
     for (auto& sl : lines_) sl.code = substitute_braces(sl.code, sl.file, sl.line);
   }
@@ -228,7 +228,7 @@ class Reader {
     if (errors_) errors_->push_back(MissionError{file, line, std::move(message), std::move(block)});
   }
 
-  /// Header: after deleting blanks, `PROCESSCONFIG=<name>` case-insensitively (spec 6.3).
+  /// Header: after deleting blanks, `PROCESSCONFIG=<name>` case-insensitively (protocol.md 6.3).
   /// The one-line form `ProcessConfig = X {` is reported (libMOOS does not read it) and is not
   /// a header; it stays an ordinary line, as for libMOOS.
   bool parse_header(std::string_view t, std::string& name, const SourceLine& sl) {
@@ -364,7 +364,8 @@ class Reader {
     });
   }
 
-  /// libMOOS `${NAME}`: `define:` values, then the environment, else the bare NAME (spec 6.1).
+  /// libMOOS `${NAME}`: `define:` values, then the environment, else the bare NAME
+  /// (protocol.md 6.1).
   std::string substitute_braces(const std::string& code, const std::string& file, int line) {
     return substitute(code, "${", '}', file, line, [&](const std::string& name) {
       if (auto it = defines_.find(name); it != defines_.end())

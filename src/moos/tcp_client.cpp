@@ -1,4 +1,4 @@
-// Asynchronous MOOS client over TCP. Follows ../shared/spec/moos-wire-protocol.md sections 1.4-1.9,
+// Asynchronous MOOS client over TCP. Follows docs/protocol.md sections 1.4-1.9,
 // 4.1, 4.3, 4.4 and the advice of 4.6; deliberate deviations are listed in tcp_client.hpp.
 //
 // Structure: one comms thread owns the socket (non-blocking) and runs
@@ -35,7 +35,7 @@ namespace moos {
 
 namespace {
 
-/// The hostname token of WELCOME's source aux (spec 1.6).
+/// The hostname token of WELCOME's source aux (protocol.md 1.6).
 constexpr std::string_view kHostnameToken = "hostname";
 constexpr double kMsPerSecond = 1000.0;
 /// A longest poll wait, so a missed wake-up can never stall the thread for long.
@@ -84,7 +84,7 @@ std::optional<in_addr> resolve_ipv4(const std::string& host, std::string* error)
   }
   if (inet_pton(AF_INET, host.c_str(), &addr) == 1) return addr;
   addrinfo hints{};
-  hints.ai_family = AF_INET;  // libMOOS is IPv4 only (spec 1.1)
+  hints.ai_family = AF_INET;  // libMOOS is IPv4 only (protocol.md 1.1)
   hints.ai_socktype = SOCK_STREAM;
   addrinfo* result = nullptr;
   const int rc = getaddrinfo(host.c_str(), nullptr, &hints, &result);
@@ -299,7 +299,7 @@ bool TcpClient::connect_socket() {
     return false;
   }
   const int one = 1;
-  setsockopt(socket_, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);  // spec 1.1
+  setsockopt(socket_, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);  // protocol.md 1.1
   set_nonblocking(socket_);
   sockaddr_in sa{};
   sa.sin_family = AF_INET;
@@ -333,7 +333,7 @@ bool TcpClient::connect_socket() {
 }
 
 bool TcpClient::handshake() {
-  if (options_.skew_policy != SkewPolicy::kNever) skew_s_ = 0.0;  // spec 1.8
+  if (options_.skew_policy != SkewPolicy::kNever) skew_s_ = 0.0;  // protocol.md 1.8
   Message ident;
   ident.type = msg_type::kData;
   ident.data_type = data_type::kString;
@@ -380,7 +380,7 @@ bool TcpClient::handshake() {
     set_error("handshake: the server's reply holds no message");
     return false;
   }
-  const Message& first = reply.front();  // libMOOS looks only at the first message (spec 1.7)
+  const Message& first = reply.front();  // libMOOS reads only the first message (protocol.md 1.7)
   if (first.type == msg_type::kPoison) {
     std::lock_guard<std::mutex> lock(mutex_);
     last_error_ = "refused by the server: " + first.sval;
@@ -410,7 +410,7 @@ bool TcpClient::handshake() {
     server_hostname_ = db_host;
     state_ = ConnectionState::kConnected;
     ++connections_;
-    // The server forgot our subscriptions: they go first (spec 1.9, 4.6).
+    // The server forgot our subscriptions: they go first (protocol.md 1.9, 4.6).
     std::vector<Message> replay = replay_messages();
     for (auto& m : replay) m.id = next_id_++;
     outbox_.insert(outbox_.begin(), replay.begin(), replay.end());
@@ -450,7 +450,7 @@ void TcpClient::fail_io(const std::string& why) {
 bool TcpClient::app_reads(double now) const {
   if (now >= app_reads_until_.load()) return false;
   // With the skew corrected, a TIMING echo is read the moment it arrives: that moment is the
-  // measurement (spec 4.4).
+  // measurement (protocol.md 4.4).
   const bool echo_due = time_correction_ && awaiting_timing_echo_ && last_timing_sent_ &&
                         now < *last_timing_sent_ + kTimingEchoWindow_real_s;
   return !echo_due;
@@ -479,7 +479,7 @@ TcpClient::PollPlan TcpClient::plan_poll(double now) {
 }
 
 void TcpClient::serve() {
-  // Bytes that followed WELCOME in the same segment belong to normal traffic (spec 5.1a).
+  // Bytes that followed WELCOME in the same segment belong to normal traffic (protocol.md 5.1a).
   bool ok = read_and_announce(&TcpClient::process_buffered);
   while (ok && !stopping_) {
     pollfd p[2] = {{-1, 0, 0}, {wake_read_, POLLIN, 0}};

@@ -1,5 +1,6 @@
 // The receiving half of TcpClient (contract in tcp_client.hpp): a decoded packet from the
-// server goes to the bounded inbox; a TIMING echo at its head refines the skew (spec 4.3, 4.4).
+// server goes to the bounded inbox; a TIMING echo at its head refines the skew
+// (protocol.md 4.3, 4.4).
 // The comms thread reads, or fetch() on the app's own thread; the inbox is shared under `mutex_`.
 
 #include <sys/socket.h>
@@ -21,7 +22,7 @@ std::size_t inbox_cost(const Message& msg) {
          msg.source_aux.size() + msg.community.size();
 }
 
-/// Skew filter weight of the previous value (spec 4.4).
+/// Skew filter weight of the previous value (protocol.md 4.4).
 constexpr double kSkewMemory = 0.9;
 
 }  // namespace
@@ -103,7 +104,7 @@ bool TcpClient::process_buffered() {
 void TcpClient::handle_packet(std::vector<Message> messages) {
   if (messages.empty()) return;
   auto begin = messages.begin();
-  if (begin->type == msg_type::kTiming) {  // consumed by the comms layer (spec 4.3)
+  if (begin->type == msg_type::kTiming) {  // consumed by the comms layer (protocol.md 4.3)
     refine_skew(*begin);
     awaiting_timing_echo_ = false;
     ++begin;
@@ -141,7 +142,8 @@ void TcpClient::refine_skew(const Message& echo) {
   }
   if (async) server_delay_s_ = std::max(0.0, echo.dval2);
   if (!time_correction_) return;
-  // Spec 4.4: measured = Ts - (Tq + Tr) / 2; exponential filter unless the skew is exactly 0.
+  // protocol.md 4.4: measured = Ts - (Tq + Tr) / 2; exponential filter unless the skew is
+  // exactly 0.
   const double tq = echo.time;
   const double ts = echo.dval;
   const double tr = local_time();

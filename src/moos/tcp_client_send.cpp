@@ -1,6 +1,6 @@
 // The sending half of TcpClient (contract in tcp_client.hpp): posted messages wait in the outbox
-// and leave as one packet per send slot, a TIMING at its head when one is due (spec 4.3). The
-// comms thread sends, or the app's own thread when it releases a batch and the slot is open.
+// and leave as one packet per send slot, a TIMING at its head when one is due (protocol.md 4.3).
+// The comms thread sends, or the app's own thread when it releases a batch and the slot is open.
 
 #include <sys/socket.h>
 
@@ -20,7 +20,7 @@ bool TcpClient::transmit(Message msg) {
   {
     std::lock_guard<std::mutex> lock(mutex_);
     if (state_ != ConnectionState::kConnected) return false;
-    msg.id = next_id_++;  // every posted message consumes an id (spec 2.5)
+    msg.id = next_id_++;  // every posted message consumes an id (protocol.md 2.5)
     first_of_batch = outbox_.empty() && !holding_sends_;
     outbox_.push_back(std::move(msg));
   }
@@ -63,7 +63,7 @@ std::unique_lock<std::mutex> TcpClient::lock_io_for_app() {
 }
 
 Message TcpClient::timing_message() const {
-  Message m;  // id -1, source "" (spec 2.6, vector I)
+  Message m;  // id -1, source "" (protocol.md 2.6, vector I)
   m.type = msg_type::kTiming;
   m.data_type = data_type::kDouble;
   m.key = kTimingKey;
@@ -81,7 +81,7 @@ bool TcpClient::start_packet_if_due(double now) {
     // Held messages wait for the release, unless a TIMING goes out anyway.
     if (!timing_due && (outbox_.empty() || holding_sends_)) return false;
     batch.reserve(outbox_.size() + 1);
-    if (timing_due) batch.push_back(timing_message());  // TIMING first (spec 4.3 step 2)
+    if (timing_due) batch.push_back(timing_message());  // TIMING first (protocol.md 4.3 step 2)
     for (auto& m : outbox_) batch.push_back(std::move(m));
     outbox_.clear();
     ++packets_sent_;
@@ -111,7 +111,8 @@ bool TcpClient::write_pending() {
   if (!write_buffer_.empty()) {
     write_buffer_.clear();
     write_offset_ = 0;
-    // Pause after each send (spec 4.3 step 4): the server's requested delay or the warp delay.
+    // Pause after each send (protocol.md 4.3 step 4): the server's requested delay or the warp
+    // delay.
     const double warp_delay_s = options_.time_warp > 1
                                     ? options_.time_warp * options_.tw_delay_factor_ms / kMsPerSecond
                                     : 0.0;

@@ -1,6 +1,6 @@
-// Wildcard pattern matching and the wildcard registration string (wire spec 4.1, 5.5).
+// Wildcard pattern matching and the wildcard registration string (docs/protocol.md 4.1, 5.5).
 //
-// Matching runs in time linear in the text for a bounded pattern (issue 12: the classic greedy
+// Matching runs in time linear in the text for a bounded pattern (the classic greedy
 // matcher with a backtrack point is O(|pattern| x |text|), and a long pattern against a long
 // name stalled the server). The pattern is split at its '*'s into segments. Without a '*' the
 // text must match the one segment exactly. Otherwise the first segment must match at the start,

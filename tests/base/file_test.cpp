@@ -1,5 +1,5 @@
-// Bounded reading of input files (issue 12, "Special files"): only regular files, never more
-// than the bound, never blocking on a FIFO. WholeFile (issue 14): a regular file mapped, a pipe
+// Bounded reading of input files ("Special files"): only regular files, never more
+// than the bound, never blocking on a FIFO. WholeFile: a regular file mapped, a pipe
 // read to its end, the rest refused.
 #include <gtest/gtest.h>
 #include <sys/stat.h>
@@ -55,13 +55,13 @@ TEST_F(ReadRegularFile, AMissingFileSaysWhy) {
   EXPECT_EQ(read.problem, "cannot be opened: No such file or directory");
 }
 
-TEST_F(ReadRegularFile, ADirectoryIsRefused_Issue12) {
+TEST_F(ReadRegularFile, ADirectoryIsRefused_Hardening) {
   const FileText read = read_regular_file(dir_.string());
   EXPECT_FALSE(read.text.has_value());
   EXPECT_EQ(read.problem, "is a directory");
 }
 
-TEST_F(ReadRegularFile, AFifoWithoutWriterIsRefusedAtOnce_Issue12) {
+TEST_F(ReadRegularFile, AFifoWithoutWriterIsRefusedAtOnce_Hardening) {
   const std::string fifo = (dir_ / "fifo").string();
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
   const FileText read = read_regular_file(fifo);  // would block forever without O_NONBLOCK
@@ -69,7 +69,7 @@ TEST_F(ReadRegularFile, AFifoWithoutWriterIsRefusedAtOnce_Issue12) {
   EXPECT_EQ(read.problem, "is a FIFO, not a regular file");
 }
 
-TEST_F(ReadRegularFile, ADeviceIsRefusedNotReadUntilMemoryRunsOut_Issue12) {
+TEST_F(ReadRegularFile, ADeviceIsRefusedNotReadUntilMemoryRunsOut_Hardening) {
   const FileText read = read_regular_file("/dev/zero");
   EXPECT_FALSE(read.text.has_value());
   EXPECT_EQ(read.problem, "is a device, not a regular file");

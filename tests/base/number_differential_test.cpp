@@ -1,6 +1,6 @@
 // The fast paths of the text grammar against their references, on many generated inputs
-// (issue 14): parse_number (std::from_chars, strtod when it refuses) against the grammar of the
-// rulings ("Numbers") checked by a regular expression and converted by strtod; fix and fmt
+// (the speed work): parse_number (std::from_chars, strtod when it refuses) against the grammar of
+// the rulings ("Numbers") checked by a regular expression and converted by strtod; fix and fmt
 // (integer arithmetic, std::to_chars when a tie is too close to call) against C printf.
 #include <gtest/gtest.h>
 
@@ -88,7 +88,7 @@ std::string printf_fixed(double value, int decimals) {
   return text;
 }
 
-// The reference of fmt: printf, trailing zeros and point dropped, "-0" read as "0" (spec 0).
+// The reference of fmt: printf, trailing zeros and point dropped, "-0" read as "0".
 std::string printf_fmt(double value, int decimals) {
   std::string s = printf_fixed(value, decimals);
   if (s.find('.') != std::string::npos) {

@@ -1,4 +1,4 @@
-// The text layer: FMT/FIX (spec 0), strict numbers (rulings "Numbers"), words, lists, angles (N3).
+// The text layer: FMT/FIX, strict numbers (rulings "Numbers"), words, lists, angles (N3).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -83,7 +83,7 @@ TEST(Text, BracesProtectCommasWhenAsked) {
   EXPECT_EQ(base::split_key_values("pts={1,2:3,4},label=x").size(), 4u);
 }
 
-// The edges of the brace rule (issue 14 rewrote the scan): nesting, an unmatched '}' (an
+// The edges of the brace rule (the speed work rewrote the scan): nesting, an unmatched '}' (an
 // ordinary byte), an unclosed '{' (the rest is one piece), '=' only inside braces.
 TEST(Text, BraceEdgesSplitAsBefore) {
   const auto kv = base::split_key_values(" a={x,{y,z}},b}=1,c , {d=2,e} ,f={g", ',', true);
@@ -235,7 +235,7 @@ TEST(Text, GeneralAndShortestFormats) {
   EXPECT_EQ(base::format_shortest(2.5), "2.5");
 }
 
-TEST(Text, EscapeForLogKeepsOneLineAndUtf8_Issue12) {
+TEST(Text, EscapeForLogKeepsOneLineAndUtf8_Hardening) {
   EXPECT_EQ(base::escape_for_log("plain text, 1.5"), "plain text, 1.5");
   EXPECT_EQ(base::escape_for_log("a\nb\rc\td"), "a\\x0Ab\\x0Dc\\x09d");
   EXPECT_EQ(base::escape_for_log(std::string("n\0ul", 4)), "n\\x00ul");
@@ -244,7 +244,7 @@ TEST(Text, EscapeForLogKeepsOneLineAndUtf8_Issue12) {
   EXPECT_EQ(base::escape_for_log("caf\xc3\xa9"), "caf\xc3\xa9");
 }
 
-TEST(Text, LogExcerptCutsThenEscapes_Issue12) {
+TEST(Text, LogExcerptCutsThenEscapes_Hardening) {
   EXPECT_EQ(base::log_excerpt("a\nb"), "a\\x0Ab");
   const std::string long_text = std::string(200, 'x') + "\x1b";
   EXPECT_EQ(base::log_excerpt(long_text), base::escape_for_log(base::excerpt(long_text)));

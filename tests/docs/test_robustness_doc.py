@@ -1,11 +1,11 @@
 #!/usr/bin/env python3
-"""docs/robustness.md against the test sources (issue 12).
+"""docs/robustness.md against the test sources.
 
 - Every test the document names (`Suite.Name` or `Suite.*` in code spans) is a GoogleTest test
   (or suite) of tests/; a file it names under tests/ exists.
 - Every row of the bad-input tables (the sections headed "Bad input: ...") names at least one
   test, no two rows name the same tests, and the count the document gives is the number of rows
-  (at least the 80 kinds the issue asks for).
+  (at least 80 kinds).
 
 Usage: test_robustness_doc.py <repository root>
 """

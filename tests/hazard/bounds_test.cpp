@@ -1,4 +1,4 @@
-// Bounds on what outside input can make grow (issue 12; engine.hpp kMaxVehicles,
+// Bounds on what outside input can make grow (engine.hpp kMaxVehicles,
 // kMaxClassifyQueue, kMaxCreditsPerObject): each is reached here, and reaching it gives a run
 // warning naming it and a counted drop, never growth.
 #include <gtest/gtest.h>

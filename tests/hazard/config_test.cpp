@@ -195,7 +195,7 @@ TEST(Config, UnknownParameterAndEmptyValueWarn) {
 
 // A mission line may hold any byte but a newline: keys, values and file names reach the
 // warnings (and the terminal report) escaped, so an ESC sequence cannot repaint a terminal.
-TEST(Config, ControlBytesOfTheMissionAreEscapedInWarnings_Issue12) {
+TEST(Config, ControlBytesOfTheMissionAreEscapedInWarnings_Hardening) {
   const std::string esc = "\x1b[2J";
   const EngineSetup s = setup_from("swath_length = 5" + esc + "\nbo" + esc + "gus = 1\n" +
                                    "hazard_file = gone" + esc + ".txt\n" +

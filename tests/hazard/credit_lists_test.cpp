@@ -1,4 +1,4 @@
-// A vehicle's credit pool (credit_lists.hpp; rulings "Credits (D7)", issue 12).
+// A vehicle's credit pool (credit_lists.hpp; rulings "Credits (D7)").
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -56,7 +56,7 @@ TEST(CreditLists, ReturnedCreditsGoBackInPassOrder_RulingsClear) {
   EXPECT_EQ(passes(pool, list).back(), 8u);
 }
 
-TEST(CreditLists, TakenSlotsAreReusedSoThePoolHoldsThePeakOnly_Issue12) {
+TEST(CreditLists, TakenSlotsAreReusedSoThePoolHoldsThePeakOnly_Hardening) {
   CreditLists pool;
   std::vector<CreditList> lists(100);
   std::uint32_t pass = 0;

@@ -1,4 +1,4 @@
-// Counter-based dice (rulings "Passes, dice and reproducibility"; spec 10 quantisation, N7).
+// Counter-based dice (docs/differences.md, "Random numbers and reproducibility").
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,4 +1,5 @@
-// Effects chosen from the scene, and the report body (spec 11, D32; rulings "Seeds").
+// Effects chosen from the scene, and the report body (docs/uFldHazardSensor.md, D32; seeds:
+// docs/configuration.md).
 #include <gtest/gtest.h>
 
 #include "hazard/report.hpp"
@@ -109,8 +110,8 @@ TEST(Report, HazardFileLabels) {
   EXPECT_NE(format_report(d).find("Effects: none"), std::string::npos);
 }
 
-// A file name from the mission may hold control bytes: escaped in the report (issue 12).
-TEST(Report, HazardFileNamesAreEscaped_Issue12) {
+// A file name from the mission may hold control bytes: escaped in the report.
+TEST(Report, HazardFileNamesAreEscaped_Hardening) {
   ReportData d;
   d.hazard_files = {{"a\x1b[2J.txt", true, {}}, {"b\r.txt", false, {}}};
   EXPECT_NE(format_report(d).find("Hazard File: (a\\x1B[2J.txt, Error reading: b\\x0D.txt) \n"),

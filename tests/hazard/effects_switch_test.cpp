@@ -1,4 +1,4 @@
-// Only the effects a scene calls for (issue 6; effects.hpp): for every effect, a scene that does
+// Only the effects a scene calls for (effects.hpp): for every effect, a scene that does
 // not use it gives byte-identical outputs (every posting, event and warning of every call) with
 // the effect's switch on or off, and a scene that uses it changes exactly the outcomes it should.
 // An effect that is off allocates nothing.

@@ -175,7 +175,7 @@ TEST(EngineClassify, AnswersFollowTheDiceAndFormats_D25_D19) {
     EXPECT_EQ(circles[0], "x=" + x + ",y=0,radius=10,vertices=5,edge_color=" + colour +
                               ",fill_color=" + colour + ",time=0,vertex_size=0,edge_size=1,"
                               "fill_transparency=0.3");  // never a duration
-    // Order: the per-vehicle variable first (spec 9.4).
+    // Order: the per-vehicle variable first.
     EXPECT_EQ(out.postings[out.postings.size() - 3].variable, "UHZ_HAZARD_REPORT_V");
   }
   EXPECT_EQ(d.vehicle("v").counters.answers, 40);

@@ -1,5 +1,5 @@
 // Mail at the edge: malformed mail warns and changes nothing else; start-up and PMV_CONNECT
-// visuals; the options summary; the interface lists (spec 5; rulings "Visuals", D21).
+// visuals; the options summary; the interface lists (docs/messages.md; rulings "Visuals", D21).
 #include <gtest/gtest.h>
 
 #include "scenario.hpp"

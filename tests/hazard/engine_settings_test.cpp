@@ -11,7 +11,7 @@ using testing::contains;
 using testing::Driver;
 using testing::values_of;
 
-// The original m10_jake options (spec D33): widths 5/10/25/50.
+// The original m10_jake options (D33): widths 5/10/25/50.
 const std::string kJakeOriginal =
     "sensor_config = width=50, exp=2, pclass=0.55\n"
     "sensor_config = width=25, exp=4, pclass=0.63\n"
@@ -170,7 +170,7 @@ TEST(EngineSettings, InactiveHoldersDoNotFillAWidth_D20) {
   EXPECT_EQ(d.vehicle("b").setting->width_m, 5);
 }
 
-// Issue 13 (rulings "Width choice", amended): a max=1 width is held from the moment it is
+// The held width (docs/differences.md D20): a max=1 width is held from the moment it is
 // granted, before any sensor request, until kWidthHoldWindow_s pass with no configuration or
 // sensor request from its holder. `max_width` carries max=1; the vehicles only send node reports.
 struct HeldWidthRun {
@@ -210,21 +210,21 @@ HeldWidthRun held_width_run(const std::string& max_width) {
   return r;
 }
 
-TEST(EngineSettings, AGrantedMaxWidthIsHeldBeforeAnySensorRequest_Issue13) {
+TEST(EngineSettings, AGrantedMaxWidthIsHeldBeforeAnySensorRequest) {
   const HeldWidthRun r = held_width_run("25");
   EXPECT_EQ(r.b_width_m, 10);        // the next lower free width
   EXPECT_EQ(r.c_width_before_m, 10);
   EXPECT_EQ(r.d_width_m, 25);  // A's hold ended: granted
 }
 
-TEST(EngineSettings, AHeldSmallestWidthGivesTheNextHigher_Issue13) {
+TEST(EngineSettings, AHeldSmallestWidthGivesTheNextHigher) {
   const HeldWidthRun r = held_width_run("5");
   EXPECT_EQ(r.b_width_m, 10);  // nothing lower is free: the next higher
   EXPECT_EQ(r.c_width_before_m, 10);
   EXPECT_EQ(r.d_width_m, 5);
 }
 
-TEST(EngineSettings, ConfigurationAndSensorRequestsRenewTheHold_Issue13) {
+TEST(EngineSettings, ConfigurationAndSensorRequestsRenewTheHold) {
   Driver d(kJakeOriginal + "min_reset_interval = 0\n");
   d.mail("UHZ_CONFIG_REQUEST", "vname=a,width=5,pd=0.9");
   d.now = 500;

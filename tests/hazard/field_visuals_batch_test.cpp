@@ -1,4 +1,4 @@
-// The field's visuals in bounded batches (issue 14): a big field's markers arrive over several
+// The field's visuals in bounded batches: a big field's markers arrive over several
 // iterations, none above kFieldVisualsPerIteration objects, in load order, the same every run;
 // PMV_CONNECT and Driver::restart_field_visuals start them again from the first object.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Geodesy (issue 6; geodesy.hpp): LAT/LON-only node reports and lat/lon hazard lines placed
+// Geodesy (geodesy.hpp): LAT/LON-only node reports and lat/lon hazard lines placed
 // around the mission's LatOrigin/LongOrigin with the chosen projection, against GeographicLib's
 // own classes as the reference; without a usable origin the original's behaviour, with a reason.
 #include <gtest/gtest.h>
@@ -176,7 +176,7 @@ TEST(Geodesy, WithoutAUsableOriginLatLonOnlyInputIsRejectedWithTheReason_T9) {
       {MissionOrigin{std::nullopt, -71.0, std::string("north"), std::string("-71")},
        "the mission's LatOrigin value 'north' is not a number"},
       {MissionOrigin{std::nullopt, -71.0, std::string("4\x1b[2J"), std::string("-71")},
-       "the mission's LatOrigin value '4\\x1B[2J' is not a number"},  // escaped (issue 12)
+       "the mission's LatOrigin value '4\\x1B[2J' is not a number"},  // escaped
       {origin_of(95, -71), "the mission's LatOrigin value '95' is outside [-90, 90]"},
       {MissionOrigin{42.0, std::nullopt, std::string("42"), std::nullopt},
        "the mission's LatOrigin is given without LongOrigin"},

@@ -1,4 +1,4 @@
-// Hazard files and the field (rulings "Hazard lines"; spec 4.3, T8) and the spatial grid.
+// Hazard files and the field (rulings "Hazard lines"; docs/hazard-file.md) and the spatial grid.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -168,7 +168,7 @@ TEST(SpatialGrid, DegenerateFieldsWork) {
   empty.for_each_in_box(Box{0, 0, 1, 1}, [&](std::uint32_t, glm::dvec2) { ADD_FAILURE(); });
 }
 
-// Issue 12: two finite positions whose distance exceeds the largest double (the field's extent
+// A known crash: two finite positions whose distance exceeds the largest double (the field's extent
 // overflowed to infinity, the cell counts became NaN and their cast to int aborted start-up).
 TEST(SpatialGrid, FieldWiderThanTheLargestDoubleIsIndexed) {
   const std::vector<glm::dvec2> far{{9e307, 0}, {-9e307, 0}, {0, 9e307}, {0, -9e307}, {1, 1}};
@@ -191,7 +191,7 @@ TEST(SpatialGrid, FieldWiderThanTheLargestDoubleIsIndexed) {
 // now refused at the line (kMaxObjectCoordinate_m), and the grid itself indexes a field wider
 // than the largest double (SpatialGrid.FieldWiderThanTheLargestDoubleIsIndexed), so neither
 // layer alone can crash.
-TEST(HazardFile, ObjectsAtOppositeEndsOfTheDoubleRangeAreRefusedWithoutACrash_Issue12) {
+TEST(HazardFile, ObjectsAtOppositeEndsOfTheDoubleRangeAreRefusedWithoutACrash_Hardening) {
   HazardField field;
   std::vector<std::string> warnings;
   load_hazard_file_text("hazard = x=9e307,y=0,label=a,type=hazard\n"
@@ -214,7 +214,7 @@ TEST(HazardFile, ObjectsAtOppositeEndsOfTheDoubleRangeAreRefusedWithoutACrash_Is
 namespace hazard {
 namespace {
 
-// The compact tables give back every field of every object as it was added (issue 14).
+// The compact tables give back every field of every object as it was added.
 TEST(HazardField, TablesGiveBackEachObjectAsAdded) {
   HazardField field;
   std::vector<HazardObject> added(3);

@@ -1,4 +1,4 @@
-// Hazard file text from outside (issue 12): control bytes in a label are refused naming file and
+// Hazard file text from outside: control bytes in a label are refused naming file and
 // line, a UTF-8 byte-order mark at the start is accepted, and echoed text is escaped.
 #include <gtest/gtest.h>
 
@@ -76,7 +76,7 @@ TEST(HazardFileText, UnrecognisedLinesAreEscapedInWarnings) {
       << warnings[0];
 }
 
-// Line ends from other systems (issue 12): CR LF loads as LF does; a file with CR alone has one
+// Line ends from other systems: CR LF loads as LF does; a file with CR alone has one
 // line, refused with its value named (never silently half-loaded).
 TEST(HazardFileText, CrLfLineEndsLoadLikeLf) {
   HazardField field;
@@ -102,7 +102,7 @@ TEST(HazardFileText, CrOnlyLineEndsAreOneLineRefusedNamingTheValue) {
 }
 
 // A label is posted in every report about its object: bounded (ranges.hpp, kMaxLabelBytes).
-TEST(HazardFileText, ALabelOverTheBoundRejectsTheLine_Issue12) {
+TEST(HazardFileText, ALabelOverTheBoundRejectsTheLine_Hardening) {
   HazardField field;
   std::vector<std::string> warnings;
   const std::string at_bound(kMaxLabelBytes, 'a');

@@ -1,4 +1,4 @@
-// Turn rate (manual 8, spec 8.2, T5, N4).
+// Turn rate (manual 8).
 #include <gtest/gtest.h>
 
 #include "hazard/heading_history.hpp"

@@ -1,4 +1,4 @@
-// Numerically delicate angles (spec 16 N3, N4, N6; rulings "Numbers", "Defects we fix"): the
+// Numerically delicate angles (rulings "Numbers", "Defects we fix"): the
 // 0/360 seam in turn rate and aspect, huge and negative headings, non-finite input, and the edges
 // of the aspect window. Each test name states the rule it pins.
 #include <gtest/gtest.h>

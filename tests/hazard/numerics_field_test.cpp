@@ -1,6 +1,7 @@
 // A field of one million objects on one spot, and a vehicle inside all of them at once (design
-// "Scale"; spec 17). The spatial grid degenerates to one cell, every object is a candidate, each
-// one is a sensor event with its own die, and the per-(vehicle, object) state holds a million
+// "Scale"; docs/performance.md). The spatial grid degenerates to one cell, every object is a
+// candidate, each one is a sensor event with its own die, and the per-(vehicle, object) state holds
+// a million
 // entries; the outcomes still follow the rules (one pass per entry, rates within 5 sigma).
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Physically meaningful ranges (issue 12, ranges.hpp): configuration values and mail fields
+// Physically meaningful ranges (ranges.hpp): configuration values and mail fields
 // beyond them are refused with a warning naming the value; the boundary itself is accepted.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Sweeping and sub-stepping (issue 6; sensing_track.hpp's rule): objects the swath passed over
+// Sweeping and sub-stepping (sensing_track.hpp's rule): objects the swath passed over
 // between two node reports, passes across reports, per-report gates, iteration-rate
 // independence, the heading used for credits, and the error bound of turning segments.
 #include <gtest/gtest.h>

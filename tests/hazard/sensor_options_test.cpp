@@ -78,7 +78,7 @@ TEST(SensorOptionsTable, RequestPicksExactElseNextLower_D3) {
   auto width = [&](double req) { return t.option(*t.choose(req, kNoneFull)).width_m; };
   EXPECT_EQ(width(30), 30);
   EXPECT_EQ(width(32), 30);
-  EXPECT_EQ(width(45), 30);  // next lower, not closest (spec's 50)
+  EXPECT_EQ(width(45), 30);  // next lower, not the closest (50)
   EXPECT_EQ(width(49.999), 30);
   EXPECT_EQ(width(5), 18);   // below the smallest: the smallest
   EXPECT_EQ(width(100), 80);

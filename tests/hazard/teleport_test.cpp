@@ -1,4 +1,4 @@
-// Teleports under swath_sweep and swath_substeps (issue 12; engine.hpp kMaxSweepJump_m,
+// Teleports under swath_sweep and swath_substeps (engine.hpp kMaxSweepJump_m,
 // sensing_track.hpp "Teleports").
 #include <gtest/gtest.h>
 
@@ -13,7 +13,7 @@ using testing::contains;
 using testing::Driver;
 using testing::quiet_block;
 
-// Issue 12: a vehicle that jumps 10 km between two reports does not sweep the jump (a dense
+// Hostile input: a vehicle that jumps 10 km between two reports does not sweep the jump (a dense
 // line of objects lies under it); the arrival is sensed like a start pose, and the jump is
 // one run warning and one counted drop.
 TEST(SensingTrackEngine, ATeleportIsNotSweptOnlyItsArrivalIsSensed) {

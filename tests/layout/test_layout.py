@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The architecture's rules, checked on the source tree (issue 11, docs/architecture.md).
+"""The architecture's rules, checked on the source tree (docs/architecture.md).
 
 - Libraries use only what lies below them: base uses nothing of ours; hazard and moos use base
   and never each other; mission uses base and hazard; no library includes a header of an app.

@@ -57,7 +57,7 @@ TEST(ManagerConfigTable, ParametersAreValidatedAndNamed_Spec13) {
   ManagerConfig c = archie_config();
   EXPECT_EQ(apply_manager_param(c, "Swath_Width", "10"), "");
   EXPECT_EQ(c.swath_width_m, 10);
-  EXPECT_EQ(apply_manager_param(c, "pd", "0.75"), "");  // spec 13 alias of sensor_pd
+  EXPECT_EQ(apply_manager_param(c, "pd", "0.75"), "");  // uFldHazardMgr's alias of sensor_pd
   EXPECT_EQ(c.pd, 0.75);
   EXPECT_EQ(apply_manager_param(c, "sensor_pd", "1.5"),
             "parameter sensor_pd=1.5 must be in [0, 1]");
@@ -358,8 +358,8 @@ TEST(Manager, DetectionBeforeAnyAckIsCountedButNotWeighed) {
   EXPECT_EQ(m.belief("a")->own.detections, 1);
 }
 
-// Issue 12 (found under -fsanitize=undefined,float-cast-overflow): detections anywhere, even at
-// positions no grid cell index can hold, and at negative coordinates (cell indices below zero,
+// Hostile input (found under -fsanitize=undefined,float-cast-overflow): detections anywhere, even
+// at positions no grid cell index can hold, and at negative coordinates (cell indices below zero,
 // whose key was a left shift of a negative number), are indexed without undefined behaviour.
 TEST(Manager, DetectionsAtAnyPositionAreIndexedWithoutOverflow) {
   HazardManager m(archie_config());

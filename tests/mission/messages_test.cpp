@@ -280,7 +280,7 @@ TEST(Handover, BadHeaderIsAnErrorAndBadObjectsAreSkippedWithAWarning) {
             "HAZARD_HANDOVER object 'label=3,x=1,y=1': missing field 'evidence'");
 }
 
-// Issue 12 (found by fuzz/mission_mail): an empty header part has no key=value pair at all; it
+// Hostile input (found by fuzz/mission_mail): an empty header part has no key=value pair at all; it
 // used to throw std::out_of_range out of the parser (and terminate pHazardMgr).
 TEST(Handover, EmptyHeaderPartsAreErrorsNotExceptions) {
   EXPECT_EQ(parse_handover("##").error, "HAZARD_HANDOVER first part '' is not source=<vehicle>");

@@ -7,7 +7,7 @@
 namespace mission {
 namespace {
 
-// The Jake hazard file (manual 2.3) with gen_hazards' header and region line (spec 4.3).
+// The Jake hazard file (manual 2.3) with gen_hazards' header and region line.
 constexpr const char* kJakeHazards =
     "// gen_hazards --polygon=-150,-75:-150,-400:400,-400:400,-75 --objects=5,hazard "
     "--objects=10,benign\n"

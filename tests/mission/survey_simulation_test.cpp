@@ -1,5 +1,5 @@
 // The mission-side pieces together, against a minimal stand-in for the shoreside sensor that
-// follows the sensor's rules (spec 8.4-8.6 without resemblance or aspect, rulings D1/D2/D7): the
+// follows the sensor's rules (without resemblance or aspect; docs/differences.md D1, D2, D7): the
 // survey vehicle flies a lawnmower, the stand-in rolls a die when an object enters the swath
 // while the sensor is on, the manager keeps its beliefs from the detections, its own passes and
 // the classification answers. If the manager's pass bookkeeping counted passes the sensor never

@@ -113,7 +113,7 @@ TEST(Vehicle, InvalidParametersAreNamed) {
   EXPECT_EQ(validate(VehicleParams{}), "");
 }
 
-// The survey as the sensor sees it: sampled at 4 Hz, the sensor is on while the spec-8.2 turn
+// The survey as the sensor sees it: sampled at 4 Hz, the sensor is on while the 2 s turn
 // rate is at most 1.5 deg/s, and an object is sensed when inside the swath rectangle (W across,
 // 5 m along in total, rulings D1). Every point of the region must be sensed with the sensor on.
 void expect_flown_survey_covers_region(const VehicleParams& p, double heading_deg, double w_m) {

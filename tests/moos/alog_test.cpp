@@ -60,7 +60,7 @@ TEST(Alog, ABadTimeIsQuotedEscapedAndCut) {
   EXPECT_NE(p.error.find("(5001 bytes)"), std::string::npos) << p.error;
 }
 
-TEST(AlogLine, NamesFromClientsCannotForgeRecords_Issue12) {
+TEST(AlogLine, NamesFromClientsCannotForgeRecords_Hardening) {
   const AlogEntry forged{1.0, "X\n  2.000 UHZ_CLASSIFY_REQUEST", "evil client", "v"};
   const std::string line = format_alog_line(forged);
   EXPECT_EQ(line.find('\n'), line.size() - 1) << line;  // one posting, one line

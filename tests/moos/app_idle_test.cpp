@@ -2,7 +2,7 @@
 // AppTick slots, mail ends the skipping at the slot it would have had, every cycle stays on the
 // AppTick grid, and without the option every slot is a cycle. After each cycle an app tells its
 // comms when it will fetch again (Comms::expect_fetch_within), so a TcpClient can leave reading
-// to it (issue 14); while it skips slots it promises nothing, so mail still wakes it.
+// to it; while it skips slots it promises nothing, so mail still wakes it.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -240,21 +240,21 @@ std::vector<double> promises_of(QuietApp& app, std::optional<double> idle_app_ti
 
 constexpr double kPeriod_real_s = 1.0 / kAppTickHz / PromiseRecorder::kWarp;
 
-TEST(AppFetchPromise, EveryCyclePromisesTheNextSlotInRealSeconds_Issue14) {
+TEST(AppFetchPromise, EveryCyclePromisesTheNextSlotInRealSeconds) {
   QuietApp app;
   const auto promises = promises_of(app, std::nullopt, 5.0);
   ASSERT_EQ(promises.size(), 21u);  // one per cycle: 0, 0.25, ..., 5
   for (double p : promises) EXPECT_NEAR(p, kPeriod_real_s, 1e-9);
 }
 
-TEST(AppFetchPromise, AnAppThatSkipsSlotsPromisesNothing_Issue14) {
+TEST(AppFetchPromise, AnAppThatSkipsSlotsPromisesNothing) {
   QuietApp app;  // quiet for ever: cycles every 2 MOOS s
   const auto promises = promises_of(app, 0.5, 5.0);
   ASSERT_EQ(promises.size(), 3u);  // 0, 2, 4
   for (double p : promises) EXPECT_EQ(p, 0.0);
 }
 
-TEST(AppFetchPromise, AnIdleTickAppThatIsNeverQuietStillPromises_Issue14) {
+TEST(AppFetchPromise, AnIdleTickAppThatIsNeverQuietStillPromises) {
   QuietApp app;
   app.quiet_until = 0.0;  // quiet_until_moos_s returns now: never quiet
   const auto promises = promises_of(app, 0.5, 1.0);

@@ -1,4 +1,5 @@
-// The application base on the in-process bus with a manual clock (wire spec 6.2-6.4, 7.1, 7.2).
+// The application base on the in-process bus with a manual clock (docs/protocol.md 6.2-6.4,
+// 7.1, 7.2).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -71,7 +72,7 @@ class AppOnBus : public ::testing::Test {
   EchoApp app;
 };
 
-// ---- settings (spec 6.2-6.4) ------------------------------------------------------------------
+// ---- settings (protocol.md 6.2-6.4) -------------------------------------------------------------
 
 MissionFile mission(const std::string& text, std::vector<MissionError>* errors) {
   return MissionFile::parse(text, "m.moos", {}, errors);
@@ -163,7 +164,7 @@ TEST(AppSettingsResolve, BadFrameworkValuesAreWarningsNamingThePlace) {
   EXPECT_EQ(s.max_appcast_events, 50u);
 }
 
-TEST(AppSettingsResolve, AppTicksThatStallOrBusyLoopAreRefused_Issue12) {
+TEST(AppSettingsResolve, AppTicksThatStallOrBusyLoopAreRefused_Hardening) {
   for (const char* tick : {"1e-300", "0", "-4", "1e300", "1000.5"}) {
     std::vector<MissionError> errors;
     const auto m = mission(std::string("ProcessConfig = pEcho\n{\n AppTick = ") + tick + "\n}\n", &errors);
@@ -179,7 +180,7 @@ TEST(AppSettingsResolve, AppTicksThatStallOrBusyLoopAreRefused_Issue12) {
                 .app_tick_hz, 1000.0);
 }
 
-TEST(AppSettingsResolve, MissionTextInWarningsIsEscaped_Issue12) {
+TEST(AppSettingsResolve, MissionTextInWarningsIsEscaped_Hardening) {
   std::vector<MissionError> errors;
   const auto m = mission("ProcessConfig = pEcho\n{\n AppTick = 4\x1b[2J\n IterateMode = 1\x7f\n}\n", &errors);
   const auto s = resolve_app_settings(AppTraits{"pEcho", 4.0}, parse_command_line({"pEcho", "m.moos"}), &m);
@@ -248,7 +249,7 @@ TEST(AppSettingsResolve, WithoutAMissionThereAreNoGlobals) {
   EXPECT_FALSE(s.global_double("LatOrigin").has_value());
 }
 
-// ---- the main loop on the bus (spec 7.1) -------------------------------------------------------
+// ---- the main loop on the bus (protocol.md 7.1) -------------------------------------------------
 
 TEST_F(AppOnBus, StartUpSeesConfigAndRegistersAppCastRequests_7_2) {
   AppSettings s = settings_for();

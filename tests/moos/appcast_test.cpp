@@ -1,5 +1,5 @@
-// AppCast string (wire spec 7.2, its two examples byte for byte), terminal frame (hazard spec 11,
-// manual section 12) and APPCAST_REQ parsing (7.2).
+// AppCast string (docs/protocol.md 7.2, its two examples byte for byte), terminal frame
+// (docs/uFldHazardSensor.md, manual section 12) and APPCAST_REQ parsing (7.2).
 #include <gtest/gtest.h>
 
 #include "moos/appcast.hpp"

@@ -1,5 +1,5 @@
-// In-process bus: MOOSDB semantics of wire spec section 5 (moos::Database), through the Comms
-// interface.
+// In-process bus: MOOSDB semantics of docs/protocol.md section 5 (moos::Database), through the
+// Comms interface.
 #include <gtest/gtest.h>
 
 #include "moos/bus.hpp"
@@ -50,7 +50,7 @@ TEST_F(BusTest, LiveNotifyReachesEverySubscriberIncludingThePublisher_5_3) {
   EXPECT_TRUE(m.is_double());
   EXPECT_EQ(m.dval, 12.5);
   EXPECT_EQ(m.source, "pA");
-  EXPECT_EQ(m.community, "alpha");  // empty community filled with the bus's (spec 5.3 step 4)
+  EXPECT_EQ(m.community, "alpha");  // an empty community becomes the bus's (protocol.md 5.3)
   EXPECT_DOUBLE_EQ(m.time, 2000.0);
   EXPECT_TRUE(a->fetch().empty());  // fetch empties the inbox
 }
@@ -78,7 +78,7 @@ TEST_F(BusTest, RegisterSendsASnapshotOfTheLastWrite_5_4) {
   EXPECT_EQ(mail[0].source_aux, "aux=1");
   EXPECT_EQ(mail[0].time, 1234.5);  // the write's own time stamp
   EXPECT_EQ(mail[0].dval, kUnsetDouble);
-  // Every REGISTER sends the snapshot again (spec 5.4).
+  // Every REGISTER sends the snapshot again (protocol.md 5.4).
   b->register_variable("MODE");
   EXPECT_EQ(b->fetch().size(), 1u);
 }
@@ -145,7 +145,7 @@ TEST_F(BusTest, UnregisterStopsDelivery_5_4) {
   EXPECT_TRUE(b->unregister_variable("X"));
   a->notify("X", 2.0);
   EXPECT_EQ(b->fetch().size(), 1u);
-  EXPECT_FALSE(b->unregister_variable("NEVER_REGISTERED"));  // nothing to send (spec 4.1)
+  EXPECT_FALSE(b->unregister_variable("NEVER_REGISTERED"));  // nothing to send (protocol.md 4.1)
 }
 
 TEST_F(BusTest, WildcardMatchesExistingVariablesByNameAndLastWriter_5_5) {
@@ -198,7 +198,7 @@ TEST_F(BusTest, WildcardUnregisterRemovesSubscriptionsAndTheFilter_5_5) {
   b->fetch();
   EXPECT_TRUE(b->unregister_wildcard("NAV_*"));
   a->notify("NAV_X", 2.0);
-  a->notify("NAV_NEW", 3.0);  // the filter is gone too (documented deviation, spec 5.5)
+  a->notify("NAV_NEW", 3.0);  // the filter is gone too (documented deviation, protocol.md 5.5)
   EXPECT_TRUE(b->fetch().empty());
 }
 

@@ -1,4 +1,4 @@
-// Codec and framing tests against the byte vectors of ../shared/spec/moos-wire-protocol.md
+// Codec and framing tests against the byte vectors of docs/protocol.md
 // section 8, which were produced by libMOOS itself and by pymoos2.
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Command-line conventions: wire spec 6.4 and hazard spec 2.
+// Command-line conventions: docs/protocol.md 6.4 and docs/uFldHazardSensor.md.
 #include <gtest/gtest.h>
 
 #include <set>
@@ -107,7 +107,7 @@ TEST(CommandLine, ArgcArgvEntryPointMatchesTheVectorOne) {
   EXPECT_EQ(cl.moos_port, 9001);
 }
 
-// ---- information switches (hazard spec 2) ------------------------------------------------------
+// ---- information switches (docs/uFldHazardSensor.md) --------------------------------------------
 
 TEST(InformationSwitch, EveryFormOfTheMoosIvpConvention_Spec2) {
   for (const char* a : {"-e", "--example", "-example"})
@@ -121,7 +121,7 @@ TEST(InformationSwitch, EveryFormOfTheMoosIvpConvention_Spec2) {
 }
 
 TEST(InformationSwitch, OnlyWholeWordsInTheirExactCaseCount_Spec2) {
-  // Spec 2: there is no one-dash -interface.
+  // docs/uFldHazardSensor.md, "Usage": there is no one-dash -interface.
   for (const char* a : {"-interface", "--Help", "-H", "--help=yes", "--versions", "help", "-", ""})
     EXPECT_FALSE(information_switch(a).has_value()) << a;
 }

@@ -1,4 +1,5 @@
-// The Comms base: messages built exactly as libMOOS builds them (wire spec 2.6, vectors D and L
+// The Comms base: messages built exactly as libMOOS builds them (docs/protocol.md 2.6, vectors D
+// and L
 // of section 8), the subscription book and its replay, and the wildcard pattern language (4.1, 5.5).
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // Unit tests of moos::Database: REGISTER / UNREGISTER and wildcard filters
-// (../shared/spec/moos-wire-protocol.md 5.4, 5.5).
+// (docs/protocol.md 5.4, 5.5).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,7 +12,7 @@ namespace moos::test {
 namespace {
 
 // ---------------------------------------------------------------------------------------
-// REGISTER / UNREGISTER (spec 5.4)
+// REGISTER / UNREGISTER (protocol.md 5.4)
 
 TEST_F(DatabaseTest, EveryRegisterSendsASnapshotOfTheLastWrite_5_4) {
   connect(kA, "writer", true);
@@ -69,7 +69,7 @@ TEST_F(DatabaseTest, DisconnectRemovesSubscriptionsAndUndeliveredMail_1_9) {
 }
 
 // ---------------------------------------------------------------------------------------
-// Wildcards (spec 5.5)
+// Wildcards (protocol.md 5.5)
 
 TEST_F(DatabaseTest, WildcardCommaFormSubscribesExistingAndNewVariables_5_5) {
   connect(kA, "reader", true);

@@ -1,5 +1,5 @@
 // Unit tests of moos::Database: DB variables, server requests and limits
-// (../shared/spec/moos-wire-protocol.md 5.7, 5.8).
+// (docs/protocol.md 5.7, 5.8).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,7 +12,7 @@ namespace moos::test {
 namespace {
 
 // ---------------------------------------------------------------------------------------
-// DB variables (spec 5.7)
+// DB variables (protocol.md 5.7)
 
 TEST_F(DatabaseTest, DbVariablesAreWrittenAtStartSoEarlyRegistrationsGetSnapshots_5_7) {
   connect(kA, "reader", true);
@@ -48,7 +48,7 @@ TEST_F(DatabaseTest, RefreshWritesTimeUptimeClientsAndRwSummary_5_7) {
 }
 
 // ---------------------------------------------------------------------------------------
-// Server requests (spec 5.8)
+// Server requests (protocol.md 5.8)
 
 TEST_F(DatabaseTest, VarSummaryIsOneAnswerWithRequestIdAndAllNames_5_8) {
   connect(kA, "logger", true);
@@ -161,10 +161,10 @@ TEST(DatabaseLimits, PendingBytesCountTheMailASyncClientHasNotCollected) {
   EXPECT_EQ(db.pending_bytes(kC), 0u);
 }
 
-// The store is bounded (issue 12): new names and larger values that would take it beyond
+// The store is bounded: new names and larger values that would take it beyond
 // max_stored_bytes are refused with a logged reason, the client stays, smaller writes and the
 // DB's own variables go on, and DB_CLEAR gives the room back.
-TEST(DatabaseLimits, WritesAndRegistrationsBeyondTheStoreBoundAreRefused_Issue12) {
+TEST(DatabaseLimits, WritesAndRegistrationsBeyondTheStoreBoundAreRefused_Hardening) {
   DatabaseConfig config;
   config.max_stored_bytes = 64 * 1024;
   std::vector<std::string> logs;

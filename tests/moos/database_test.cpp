@@ -1,5 +1,5 @@
 // Unit tests of moos::Database without sockets: handshake, delivery rules and NOTIFY
-// (../shared/spec/moos-wire-protocol.md 1, 5.2, 5.3, 5.6).
+// (docs/protocol.md 1, 5.2, 5.3, 5.6).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,7 +12,7 @@ namespace moos::test {
 namespace {
 
 // ---------------------------------------------------------------------------------------
-// Handshake (spec 1.6, 1.8)
+// Handshake (protocol.md 1.6, 1.8)
 
 TEST_F(DatabaseTest, WelcomeCarriesHostCommunitySkewAndAsynchronous_1_6) {
   const double ident_time = kT0 - 0.25;
@@ -61,8 +61,8 @@ TEST_F(DatabaseTest, IdentificationWithoutMessageGetsFailedToReadPoison_1_5) {
   EXPECT_EQ(packets[0][0].sval, "Failed to read receive client's name");
 }
 
-// A name is repeated in DB_CLIENTS, DB_EVENT and the log: bounded (issue 12).
-TEST_F(DatabaseTest, ANameOverTheBoundGetsPoisonAndTheBoundItselfConnects_Issue12) {
+// A name is repeated in DB_CLIENTS, DB_EVENT and the log: bounded.
+TEST_F(DatabaseTest, ANameOverTheBoundGetsPoisonAndTheBoundItselfConnects_Hardening) {
   const std::string at_bound(kMaxClientNameBytes, 'n');
   const std::string over(10 * 1024, 'o');
   EXPECT_EQ(db_.handshake_refusal({identification(over, true)}),
@@ -112,7 +112,7 @@ TEST_F(DatabaseTest, ConnectAndDisconnectPublishDbEventAndDbClientsAtOnce_5_7) {
 }
 
 // ---------------------------------------------------------------------------------------
-// Delivery rules (spec 5.2, 5.6)
+// Delivery rules (protocol.md 5.2, 5.6)
 
 TEST_F(DatabaseTest, SyncClientGetsExactlyOneReplyStartingWithNull_5_6) {
   connect(kA, "sync", false);
@@ -123,7 +123,7 @@ TEST_F(DatabaseTest, SyncClientGetsExactlyOneReplyStartingWithNull_5_6) {
   const Message& n = out[0].messages[0];
   EXPECT_EQ(n.type, mt::kNull);
   EXPECT_EQ(n.id, -1);
-  EXPECT_EQ(n.dval, kT0 + 5);  // server time (spec 2.6 "NULL S->C")
+  EXPECT_EQ(n.dval, kT0 + 5);  // server time (protocol.md 2.6 "NULL S->C")
   EXPECT_EQ(n.time, -1.0);
   EXPECT_EQ(n.source, "");
 }
@@ -226,7 +226,7 @@ TEST_F(DatabaseTest, MailOrderIsPreservedPerClient_5_6) {
 }
 
 // ---------------------------------------------------------------------------------------
-// NOTIFY (spec 5.3)
+// NOTIFY (protocol.md 5.3)
 
 TEST_F(DatabaseTest, PublisherReceivesItsOwnPostWithIdKeptAndCommunityFilled_5_3) {
   connect(kA, "async", true);
@@ -324,7 +324,7 @@ TEST_F(DatabaseTest, MalformedMessagesAreRefusedWithReasonAndTheRestIsProcessed)
 }
 
 // Client text in a refusal (name, variable, type byte, pattern) cannot end a log line or
-// forge one: control bytes and backslashes are escaped (issue 12).
+// forge one: control bytes and backslashes are escaped.
 TEST_F(DatabaseTest, RefusalsEscapeTheClientsText) {
   connect(kA, "p\nEvil", true);
   Message bad_type = notify_double("KEY\nmoosdb-lite: forged", 1, "p\nEvil");

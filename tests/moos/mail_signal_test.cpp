@@ -1,4 +1,4 @@
-// The wake-up of a thread that waits for mail (issue 12, "A missed wake-up"): mail recorded
+// The wake-up of a thread that waits for mail ("A missed wake-up"): mail recorded
 // between a fetch and the wait ends the wait at once.
 #include <gtest/gtest.h>
 
@@ -13,7 +13,7 @@ namespace {
 using Clock = MailSignal::Clock;
 constexpr auto kLongWait = std::chrono::seconds(30);
 
-TEST(MailSignal, MailRecordedBeforeTheWaitEndsItAtOnce_Issue12) {
+TEST(MailSignal, MailRecordedBeforeTheWaitEndsItAtOnce_Hardening) {
   MailSignal signal;
   signal.take();    // the watcher's turn: forget, then fetch ...
   signal.notify();  // ... mail arrives after the fetch, before the wait

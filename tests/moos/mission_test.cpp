@@ -1,4 +1,5 @@
-// Mission reader: wire spec section 6.1-6.3 plus the nsplug habits of include/moos/mission.hpp.
+// Mission reader: docs/protocol.md section 6.1-6.3 plus the nsplug habits of
+// include/moos/mission.hpp.
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
@@ -39,7 +40,7 @@ std::string write_in(const test_support::ScratchDir& dir, const std::string& nam
   return (dir / name).string();
 }
 
-// ---- globals (spec 6.2) -----------------------------------------------------------------------
+// ---- globals (protocol.md 6.2) ------------------------------------------------------------------
 
 TEST(MissionGlobals, FirstOccurrenceWinsCaseInsensitiveWithBlanksRemoved_6_2) {
   std::vector<MissionError> errors;
@@ -84,7 +85,7 @@ TEST(MissionGlobals, GlobalLineNamesItsPlace) {
   EXPECT_EQ(m.global("moostimewarp"), "10");
 }
 
-// ---- blocks (spec 6.3) ------------------------------------------------------------------------
+// ---- blocks (protocol.md 6.3) -------------------------------------------------------------------
 
 TEST(MissionBlocks, ParametersInFileOrderWithDuplicatesAndPlaces_6_3) {
   std::vector<MissionError> errors;
@@ -196,7 +197,7 @@ TEST(MissionBlocks, LineWithoutEqualsIsReportedWithFileLineAndBlock) {
   EXPECT_EQ(m.block("pA")->lines.size(), 1u);
 }
 
-// ---- comments, quoting, line ends (spec 6.1) --------------------------------------------------
+// ---- comments, quoting, line ends (protocol.md 6.1) ---------------------------------------------
 
 TEST(MissionText, CommentsWholeLineAndTrailing_6_1) {
   std::vector<MissionError> errors;
@@ -233,7 +234,7 @@ TEST(MissionText, CrLfLineEndsAndByteOrderMarkAreAccepted) {
   EXPECT_EQ(m.block("pA")->lines.at(0).line, 4);
 }
 
-// ---- ${NAME} and define: (spec 6.1) -----------------------------------------------------------
+// ---- ${NAME} and define: (protocol.md 6.1) ------------------------------------------------------
 
 TEST(MissionDefines, DefineValuesSubstituteEverywhereLaterDuplicateWins_6_1) {
   std::vector<MissionError> errors;
@@ -261,9 +262,9 @@ TEST(MissionDefines, UnknownBraceNameBecomesTheBareNameWithAnError_6_1) {
   EXPECT_TRUE(has_error(errors, "test.moos", 2, "${NOPE}")) << dump(errors);
 }
 
-// Defines that name themselves or each other (issue 12): one pass, so no loop and no growth; the
+// Defines that name themselves or each other: one pass, so no loop and no growth; the
 // inner name stays as written.
-TEST(MissionDefines, SelfAndMutualReferencesAreNotExpandedAgain_Issue12) {
+TEST(MissionDefines, SelfAndMutualReferencesAreNotExpandedAgain_Hardening) {
   std::vector<MissionError> errors;
   MissionOptions options;
   options.use_environment = false;
@@ -431,7 +432,7 @@ TEST(MissionInclude, MissingIncludedFileIsAnErrorAtTheIncludeLine) {
 
 // A device, a directory or a FIFO as an included file: refused at once naming the kind, never
 // read (a FIFO without a writer would block, /dev/zero would never end).
-TEST(MissionInclude, ASpecialFileIsRefusedAtTheIncludeLine_Issue12) {
+TEST(MissionInclude, ASpecialFileIsRefusedAtTheIncludeLine_Hardening) {
   const test_support::ScratchDir dir;
   const std::string fifo = (dir / "pipe").string();
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
@@ -518,7 +519,7 @@ TEST(MissionFiles, UnreadableFileReturnsNulloptWithAnError) {
             "cannot be opened: No such file or directory");
 }
 
-TEST(MissionFiles, ADirectoryAsMissionFileIsRefusedWithTheReason_Issue12) {
+TEST(MissionFiles, ADirectoryAsMissionFileIsRefusedWithTheReason_Hardening) {
   std::vector<MissionError> errors;
   EXPECT_FALSE(MissionFile::load(fs::temp_directory_path().string(), {}, &errors).has_value());
   ASSERT_EQ(errors.size(), 1u);

@@ -1,4 +1,4 @@
-// TcpClient's I/O on the app's own thread (issue 14, tcp_client.hpp): after a promise, fetch()
+// TcpClient's I/O on the app's own thread (tcp_client.hpp): after a promise, fetch()
 // reads what the socket holds and the comms thread leaves it the reading; release_sends() writes
 // the batch itself; a failure the app's thread meets is handed to the comms thread.
 #include <atomic>
@@ -57,7 +57,7 @@ class TcpClientAppIo : public TcpClientTest {
   static void settle() { std::this_thread::sleep_for(std::chrono::milliseconds(100)); }
 };
 
-TEST_F(TcpClientAppIo, AfterAPromiseTheCommsThreadLeavesTheMailToFetch_Issue14) {
+TEST_F(TcpClientAppIo, AfterAPromiseTheCommsThreadLeavesTheMailToFetch) {
   TcpClient client(uncorrected());
   ASSERT_NO_FATAL_FAILURE(connect_counting_mail(client));
   client.expect_fetch_within(30.0);
@@ -71,7 +71,7 @@ TEST_F(TcpClientAppIo, AfterAPromiseTheCommsThreadLeavesTheMailToFetch_Issue14) 
   EXPECT_EQ(announced.load(), 0) << "mail fetch() read for itself is not announced";
 }
 
-TEST_F(TcpClientAppIo, WithoutAPromiseTheCommsThreadReadsAndAnnouncesMail_Issue14) {
+TEST_F(TcpClientAppIo, WithoutAPromiseTheCommsThreadReadsAndAnnouncesMail) {
   TcpClient client(uncorrected());
   ASSERT_NO_FATAL_FAILURE(connect_counting_mail(client));
   client.expect_fetch_within(30.0);
@@ -84,7 +84,7 @@ TEST_F(TcpClientAppIo, WithoutAPromiseTheCommsThreadReadsAndAnnouncesMail_Issue1
   EXPECT_EQ(got[0].key, "B");
 }
 
-TEST_F(TcpClientAppIo, ABrokenPromiseEndsAfterTheGrace_Issue14) {
+TEST_F(TcpClientAppIo, ABrokenPromiseEndsAfterTheGrace) {
   TcpClient client(uncorrected());
   ASSERT_NO_FATAL_FAILURE(connect_counting_mail(client));
   const double promised_at = steady_now_s();
@@ -96,7 +96,7 @@ TEST_F(TcpClientAppIo, ABrokenPromiseEndsAfterTheGrace_Issue14) {
   EXPECT_GE(steady_now_s() - promised_at, 0.01 + TcpClient::kAppReadGrace_real_s - 0.002);
 }
 
-TEST_F(TcpClientAppIo, AReleasedBatchIsWrittenByTheAppsOwnThread_Issue14) {
+TEST_F(TcpClientAppIo, AReleasedBatchIsWrittenByTheAppsOwnThread) {
   TcpClient client(uncorrected());
   ASSERT_NO_FATAL_FAILURE(connect_and_settle(client));
   settle();  // the comms thread may still be finishing the loop that sent that TIMING
@@ -115,7 +115,7 @@ TEST_F(TcpClientAppIo, AReleasedBatchIsWrittenByTheAppsOwnThread_Issue14) {
   EXPECT_EQ(keys, (std::vector<std::string>{"X", "Y"}));
 }
 
-TEST_F(TcpClientAppIo, WhileTheAppSendsTheTimingRidesInItsPackets_Issue14) {
+TEST_F(TcpClientAppIo, WhileTheAppSendsTheTimingRidesInItsPackets) {
   TcpClient client(uncorrected());
   ASSERT_NO_FATAL_FAILURE(connect_and_settle(client));
   const double end = steady_now_s() + 3.0;
@@ -136,7 +136,7 @@ TEST_F(TcpClientAppIo, WhileTheAppSendsTheTimingRidesInItsPackets_Issue14) {
   EXPECT_LE(alone, 1);
 }
 
-TEST_F(TcpClientAppIo, AFetchThatFindsTheConnectionClosedHandsItToTheCommsThread_Issue14) {
+TEST_F(TcpClientAppIo, AFetchThatFindsTheConnectionClosedHandsItToTheCommsThread) {
   TcpClient client(uncorrected());
   ASSERT_NO_FATAL_FAILURE(connect_and_settle(client));
   client.expect_fetch_within(30.0);

@@ -1,5 +1,5 @@
-// TcpClient's bounds and batching against the fake server: the inbox bounds (issue 12) and one
-// packet per app cycle (Comms::hold_sends, issue 14).
+// TcpClient's bounds and batching against the fake server: the inbox bounds and one
+// packet per app cycle (Comms::hold_sends).
 #include "tcp_client_fixture.hpp"
 
 namespace moos {
@@ -39,7 +39,7 @@ TEST_F(TcpClientTest, HeldSendsLeaveTogetherInOnePacket) {
   EXPECT_EQ(packets[0], (std::vector<std::string>{"A", "B", "C"}));
 }
 
-TEST_F(TcpClientTest, AFullInboxDropsTheOldestMailAndCountsIt_Issue12) {
+TEST_F(TcpClientTest, AFullInboxDropsTheOldestMailAndCountsIt_Hardening) {
   TcpClientOptions o = options();
   o.max_inbox_messages = 8;
   TcpClient client(o);
@@ -57,7 +57,7 @@ TEST_F(TcpClientTest, AFullInboxDropsTheOldestMailAndCountsIt_Issue12) {
   EXPECT_EQ(kept.front().dval, 20.0 - static_cast<double>(kept.size()));
 }
 
-TEST_F(TcpClientTest, TheInboxByteBoundHoldsForLargeMessages_Issue12) {
+TEST_F(TcpClientTest, TheInboxByteBoundHoldsForLargeMessages_Hardening) {
   TcpClientOptions o = options();
   o.max_inbox_bytes = 64 * 1024;
   TcpClient client(o);
@@ -74,7 +74,7 @@ TEST_F(TcpClientTest, TheInboxByteBoundHoldsForLargeMessages_Issue12) {
   EXPECT_EQ(kept.back().sval[0], 'j');  // the newest survives
 }
 
-TEST_F(TcpClientTest, AnAppShowsTheDroppedMailAsOneStandingRunWarning_Issue12) {
+TEST_F(TcpClientTest, AnAppShowsTheDroppedMailAsOneStandingRunWarning_Hardening) {
   TcpClientOptions o = options();
   o.max_inbox_messages = 8;
   TcpClient client(o);

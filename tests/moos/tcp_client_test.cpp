@@ -1,4 +1,5 @@
-// TcpClient against a scripted fake server on 127.0.0.1 (wire spec 1.4-1.9, 4.3, 4.4, 4.6 and the
+// TcpClient against a scripted fake server on 127.0.0.1 (docs/protocol.md 1.4-1.9, 4.3, 4.4, 4.6
+// and the
 // vectors E, F, I, N of section 8). Every wait is bounded; the server socket is closed by RAII.
 #include "tcp_client_fixture.hpp"
 
@@ -97,7 +98,7 @@ TEST_F(TcpClientTest, RegistrationsAndNotificationsGoOutWithIncreasingIds_2_5) {
   while (got.size() < 4 && steady_now_s() < deadline) {
     auto pkt = server.read_packet(deadline - steady_now_s());
     ASSERT_TRUE(pkt.has_value());
-    ASSERT_FALSE(pkt->empty());  // never an empty packet (spec 3.4)
+    ASSERT_FALSE(pkt->empty());  // never an empty packet (protocol.md 3.4)
     for (auto& m : *pkt)
       if (m.type != msg_type::kTiming) got.push_back(m);
   }
@@ -234,7 +235,7 @@ TEST_F(TcpClientTest, ReconnectsAndResendsEveryRegistrationFirst_1_9) {
   const double deadline = steady_now_s() + kWait_s;
   while (client.is_connected() && steady_now_s() < deadline) std::this_thread::sleep_for(std::chrono::milliseconds(5));
   EXPECT_FALSE(client.is_connected());
-  EXPECT_FALSE(client.notify("X", 1.0));  // posting while disconnected fails (spec 1.9)
+  EXPECT_FALSE(client.notify("X", 1.0));  // posting while disconnected fails (protocol.md 1.9)
 
   handshake();
   ASSERT_TRUE(client.wait_until_connected(kWait_s));

@@ -1,4 +1,4 @@
-// Wildcard registration strings (wire spec 5.5, 9.2): the lenient reading the reference DB
+// Wildcard registration strings (docs/protocol.md 5.5, 9.2): the lenient reading the reference DB
 // does, plus the description of what was skipped, which moosdb-lite uses to refuse with a reason.
 
 #include <gtest/gtest.h>
@@ -110,7 +110,7 @@ TEST(WildcardMatch, AgreesWithAReferenceOnEveryShortCase) {
   EXPECT_GT(checked, 100000);
 }
 
-TEST(WildcardSpecProblem, OverlongPatternsAreRefusedAndMatchNothing_Issue12) {
+TEST(WildcardSpecProblem, OverlongPatternsAreRefusedAndMatchNothing_Hardening) {
   const std::string long_pattern(kMaxWildcardPatternChars + 1, '*');
   std::string problem;
   const WildcardSpec spec = parse_wildcard_spec("AppPattern=*,VarPattern=" + long_pattern, &problem);

@@ -1,7 +1,7 @@
 #pragma once
 // Message builders shared by the MOOSDB tests (moos::Database in tests/moos, moosdb-lite in
 // tests/apps/moosdb_lite): what libMOOS and pymoos2 clients send
-// (../shared/spec/moos-wire-protocol.md 1.5, 2.6).
+// (docs/protocol.md 1.5, 2.6).
 
 #include <string>
 #include <vector>
@@ -10,10 +10,10 @@
 
 namespace moos::test {
 
-/// A fixed MOOS time for unit tests (1700000000.0, spec 8).
+/// A fixed MOOS time for unit tests (1700000000.0, protocol.md 8).
 inline constexpr double kT0 = 1700000000.0;
 
-/// Identification message (spec 1.5): name in the string value, key `asynchronous` or "".
+/// Identification message (protocol.md 1.5): name in the string value, key `asynchronous` or "".
 inline moos::Message identification(const std::string& name, bool async, double time = kT0) {
   moos::Message m;
   m.id = moos::kUnsetId;
@@ -58,7 +58,7 @@ inline moos::Message unregistration(const std::string& key, const std::string& s
   return m;
 }
 
-/// WILDCARD_REGISTER / UNREGISTER with a verbatim specification string (spec 2.6, 5.5).
+/// WILDCARD_REGISTER / UNREGISTER with a verbatim specification string (protocol.md 2.6, 5.5).
 inline moos::Message wildcard(const std::string& spec, const std::string& source,
                               char type = moos::msg_type::kWildcardRegister) {
   moos::Message m;
@@ -83,7 +83,7 @@ inline moos::Message server_request(const std::string& request, const std::strin
   return m;
 }
 
-/// Client TIMING (spec 2.6, vector I): source "", key `_async_timing`, dval 0.
+/// Client TIMING (protocol.md 2.6, vector I): source "", key `_async_timing`, dval 0.
 inline moos::Message timing(double local_time) {
   moos::Message m;
   m.id = moos::kUnsetId;
@@ -95,7 +95,7 @@ inline moos::Message timing(double local_time) {
   return m;
 }
 
-/// Client NULL keep-alive (spec 2.6, vector G).
+/// Client NULL keep-alive (protocol.md 2.6, vector G).
 inline moos::Message null_message(const std::string& source) {
   moos::Message m;
   m.id = moos::kUnsetId;

@@ -9,7 +9,7 @@ from .layout import (
 
 
 def turn_rate_flags(track):
-    """Per track sample: was the sensor on (spec 8.2 turn rate over 2 s, speed limit)?
+    """Per track sample: was the sensor on (turn rate over 2 s, speed limit)?
 
     The turn inside the window [j, i] is turned[i] - turned[j], with turned[] the running sum of
     the absolute heading changes; j only moves forward, so the whole track costs O(n)."""

@@ -13,13 +13,13 @@ GOLDEN_ANGLE_DEG = 137.508                          # hue step of the colours pa
 SWATH_OPACITY = 0.18
 LIGHT_LUMINANCE = 0.8                               # relative luminance above which a name on
                                                     # the light panel gets a dark outline
-DETECTION_RADIUS_M = 10.0                           # D19 / spec 5.3
+DETECTION_RADIUS_M = 10.0                           # D19; docs/messages.md
 DEFAULT_MARKER_WIDTH_M = 8.0                        # manual 7.6
 MIN_MARKER_PX = 7.0                                 # objects mode: a marker is never smaller
 REPORT_RING_M = 15.0                                # drawn outside the radius-10 cues
 SENSOR_MAX_TURN_RATE_DPS = 1.5                      # manual 8
 SENSOR_MAX_SPEED_MPS = 2.0                          # rulings D14
-TURN_WINDOW_S = 2.0                                 # spec 8.2
+TURN_WINDOW_S = 2.0                                 # the 2 s turn-rate window
 TRACK_STEP_PX = 1.0                                 # track points closer than this are dropped
 SIMPLIFY_TOLERANCE_PX = 0.4                         # Douglas-Peucker: invisible at 1200 x 900
 # Consecutive swath rectangles join into one strip while their centres are at most one swath

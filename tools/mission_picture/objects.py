@@ -21,7 +21,7 @@ def object_style(run, o, opts):
     width = parse_number(style.get("width")) or o["width"] or DEFAULT_MARKER_WIDTH_M
     opacity = 1.0
     if not hazard:
-        # Spec 5.4: a benign marker's fill_transparency (the viewer's alpha) is 1 - hr, 0.5
+        # A benign marker's fill_transparency (the viewer's alpha) is 1 - hr, 0.5
         # without hr. The edge is always drawn, so a fully clear fill still shows the shape.
         alpha = parse_number(style.get("fill_transparency"))
         if alpha is None:

@@ -1,5 +1,5 @@
 #pragma once
-// The hazard object line (manual 5, spec 4.1/4.4, rulings "Hazard lines" and validation table).
+// The hazard object line (manual 5, docs/hazard-file.md; docs/differences.md, "Hazard files").
 //
 // Example: x=37,y=-207,label=99,type=benign,hr=0.73,aspect=57,aspect_min=20,aspect_max=45
 // (in a hazard file or a configuration block it follows `hazard = `).
@@ -36,7 +36,8 @@ HazardLineParse parse_hazard_line(std::string_view spec);
 HazardLineParse parse_hazard_line(std::string_view spec, const GeoPlacement* placement);
 
 /// Renders in the order x, y, label, type, color, shape, width, hr, aspect, aspect_min,
-/// aspect_max (spec 4.4; the original's shape bug fixed). x and y use FMT(.,2), the rest FMT.
+/// aspect_max (docs/hazard-file.md; the original's shape bug fixed). x and y use FMT(.,2), the
+/// rest FMT.
 /// hr is written for benign objects only.
 std::string format_hazard_line(const HazardObject& object);
 

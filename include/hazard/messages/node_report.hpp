@@ -1,5 +1,5 @@
 #pragma once
-// NODE_REPORT (spec 6): a vehicle's pose, from the vehicle, bridged to the shoreside.
+// NODE_REPORT (docs/messages.md): a vehicle's pose, from the vehicle, bridged to the shoreside.
 //
 // Example: NAME=archie,X=10,Y=-5,LAT=43.8,LON=-70.3,SPD=1.5,HDG=90,TIME=123,TYPE=kayak
 //

@@ -1,5 +1,6 @@
 #pragma once
-// UHZ_SENSOR_REQUEST (spec 8.1, ruling D12): the vehicle keeps its sensor on (600 s per request).
+// UHZ_SENSOR_REQUEST (docs/differences.md D12): the vehicle keeps its sensor on
+// (600 s per request).
 //
 // Example: vname=archie
 

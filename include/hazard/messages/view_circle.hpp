@@ -1,5 +1,5 @@
 #pragma once
-// VIEW_CIRCLE (spec 5.3, rulings D19, D5 "Visuals"): detection and classification cues.
+// VIEW_CIRCLE (docs/messages.md; docs/differences.md D5, D19): detection and classification cues.
 //
 // Examples: detection      x=-52,y=-290,radius=10,vertices=12,duration=60,edge_color=white,
 //                          fill_color=white,time=12.5,vertex_size=0,edge_size=1,

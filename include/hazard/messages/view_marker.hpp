@@ -1,6 +1,6 @@
 #pragma once
-// VIEW_MARKER (spec 5.4, manual 7.6): one object of the field, drawn at start-up and on each
-// PMV_CONNECT when show_hazards is true.
+// VIEW_MARKER (docs/messages.md, manual 7.6): one object of the field, drawn at start-up and on
+// each PMV_CONNECT when show_hazards is true.
 //
 // Examples: x=-52,y=-290,width=8,primary_color=green,type=triangle,label=75
 //           x=-41,y=-246,width=8,primary_color=light_blue,type=triangle,label=82,

@@ -1,5 +1,5 @@
 #pragma once
-// VIEW_POLYGON (spec 5.3, manual 7.5): a vehicle's sensor swath for pMarineViewer.
+// VIEW_POLYGON (docs/messages.md, manual 7.5): a vehicle's sensor swath for pMarineViewer.
 //
 // Example: pts={25,2.5:25,-2.5:-25,-2.5:-25,2.5},label=sensor_swath_archie,msg=0.90,
 //          edge_color=green,fill_color=white,vertex_size=0,edge_size=0,fill_transparency=0.2

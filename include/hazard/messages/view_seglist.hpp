@@ -1,5 +1,5 @@
 #pragma once
-// VIEW_SEGLIST (spec 5.4, rulings "Visuals"): the aspect axis of an object, drawn with the
+// VIEW_SEGLIST (docs/messages.md, rulings "Visuals"): the aspect axis of an object, drawn with the
 // markers for every object that has an aspect (0 included).
 //
 // Example: pts={37,-192:37,-222},edge_color=gray70,vertex_size=0,edge_size=1

@@ -1,5 +1,5 @@
 #pragma once
-// HAZARD_SEARCH_START and HAZARD_SEARCH_SCORE (spec 14.2).
+// HAZARD_SEARCH_START and HAZARD_SEARCH_SCORE (docs/mission-logic.md).
 //
 // Examples: HAZARD_SEARCH_START = true      (any value: the grader's search clock starts at the
 //                                            time the mail is handled)

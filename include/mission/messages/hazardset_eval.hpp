@@ -1,6 +1,6 @@
 #pragma once
 // HAZARDSET_EVAL, HAZARDSET_EVAL_<SRC>, HAZARDSET_EVAL_FULL, HAZARDSET_EVAL_FULL_<SRC>
-// (spec 14.2): the grader's verdict on one HAZARDSET_REPORT.
+// (docs/mission-logic.md): the grader's verdict on one HAZARDSET_REPORT.
 //
 // Example (short, one line):
 //   vname=archie,report_name=archie,total_score=20,norm_score=86.67,score_missed_hazards=0,

@@ -1,11 +1,13 @@
 #pragma once
-// HAZARDSET_REPORT (spec 14.2): a vehicle's final answer, the set of objects it declares hazards.
+// HAZARDSET_REPORT (docs/mission-logic.md): a vehicle's final answer, the set of objects it
+// declares hazards.
 //
 // Example: source=archie#name=archie#x=-52,y=-290,label=75#x=41,y=-108,label=53
 //
 // Format: '#'-separated parts. `source=<vehicle>` first, then optional `name=<report name>`,
 // optional `xpath=FMT(x,1)` (the minimum-hazard transit lane), optional `search_region=pts={...}`
-// (final reports omit it), then one part per reported object: the object spec of spec 4.4 with
+// (final reports omit it), then one part per reported object: the object spec of
+// docs/hazard-file.md with
 // hr, type, width and color suppressed, i.e. `x=FMT(x,2),y=FMT(y,2),label=<label>` followed by
 // `aspect=FMT,aspect_min=FMT,aspect_max=FMT` for the aspect fields the object has (the
 // detection report carries them, rulings "Report payloads"). Shape is never known vehicle-side.
@@ -48,7 +50,7 @@ struct HazardsetReport {
   std::optional<std::string> search_region; ///< `pts={...}` text, when present
   std::vector<ReportedObject> objects;
 
-  /// True if some object carries this label (the grader's match rule, spec 14.2).
+  /// True if some object carries this label (the grader's match rule, docs/mission-logic.md).
   bool has_label(std::string_view label) const;
 };
 

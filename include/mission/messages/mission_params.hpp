@@ -1,5 +1,6 @@
 #pragma once
-// UHZ_MISSION_PARAMS (spec 14.2): the grader tells the vehicles how they will be scored.
+// UHZ_MISSION_PARAMS (docs/mission-logic.md): the grader tells the vehicles how they will be
+// scored.
 //
 // Example: penalty_missed_hazard=100,penalty_nonopt_hazard=50,penalty_false_alarm=10,
 //          penalty_max_time_over=0,max_time=0,penalty_max_time_rate=0,transit_path_width=20,
@@ -9,8 +10,8 @@
 // has a convex region.
 //
 // Parsing: keys case-insensitive, commas inside {...} do not split; a missing key keeps its
-// default (uFldHazardMetric's, spec 14.1); a key whose value is not a number is an error naming
-// the key and value; unknown keys are ignored (a later grader may add some).
+// default (uFldHazardMetric's, docs/mission-logic.md); a key whose value is not a number is an
+// error naming the key and value; unknown keys are ignored (a later grader may add some).
 
 #include <optional>
 #include <string>
@@ -24,7 +25,7 @@ inline constexpr const char* kMissionParamsVar = "UHZ_MISSION_PARAMS";
 
 struct MissionParams {
   double penalty_missed_hazard = 100.0;
-  double penalty_nonopt_hazard = 50.0;  ///< echoed only; never scored (spec 14.1)
+  double penalty_nonopt_hazard = 50.0;  ///< echoed only; never scored (docs/mission-logic.md)
   double penalty_false_alarm = 10.0;
   double penalty_max_time_over = 0.0;
   double max_time_s = 0.0;              ///< 0 = no limit

@@ -21,7 +21,7 @@ constexpr std::uint64_t kDrawsPerAttempt = 4;
 constexpr double kTenthsPerDeg = 10.0;
 constexpr long kFullTurnTenths = 3600;
 constexpr long kMaxWindowTenths = 900;
-/// Growth factor of the label bound (spec 12.3 step 2: 100, 1000, 10000, ...).
+/// Growth factor of the label bound (100, 1000, 10000, ...).
 constexpr std::uint64_t kLabelBoundGrowth = 10;
 
 /// Uniform in [0, 1) for (object, purpose, counter) under the run's seed.
@@ -37,7 +37,7 @@ std::uint64_t scaled_index(double u, std::uint64_t n) {
   return std::min(k, n - 1);
 }
 
-/// Unique integer labels (spec 12.3 step 2, without `label_error`).
+/// Unique integer labels (as the original draws them, without `label_error`).
 class LabelPool {
  public:
   LabelPool(std::uint64_t seed, int max_draws) : seed_(seed), max_draws_(max_draws) {}
@@ -146,8 +146,8 @@ std::optional<GenerationError> check_fill(const Region& region, double min_fill_
 
 long tenths(double deg) { return std::lround(deg * kTenthsPerDeg); }
 
-/// Spec 12.3 step 4 with the decisions of docs/gen_hazards.md: aspect modulo 360 (a value that
-/// rounds to 360.0 becomes 0 rather than being dropped), aspect_max from its own base, and a
+/// The original's aspect draw with the decisions of docs/gen_hazards.md: aspect modulo 360 (a value
+/// that rounds to 360.0 becomes 0 rather than being dropped), aspect_max from its own base, and a
 /// window that breaks min + max <= 90 resolved instead of printed as an error line.
 void draw_aspect(const AspectOptions& a, std::uint64_t seed, std::uint64_t object_index,
                  hazard::HazardObject& object) {
@@ -213,7 +213,7 @@ std::optional<GenerationError> generate(const GeneratorConfig& config,
       GeneratedObject out;
       out.drawn_m = *point;
       out.set_index = s;
-      out.object.x_m = std::round(point->x);  // whole metres, halves away from zero (spec 12.3)
+      out.object.x_m = std::round(point->x);  // whole metres, halves away from zero
       out.object.y_m = std::round(point->y);
       out.object.label = std::to_string(labels.next(index));
       out.object.type = set.type;

@@ -1,5 +1,5 @@
 #pragma once
-// The hazard-field generator (spec 12.2, 12.3; rulings D30, D31; docs/gen_hazards.md).
+// The hazard-field generator (docs/gen_hazards.md; docs/differences.md D30, D31).
 //
 // Contract
 // - Deterministic: the output is a pure function of the configuration and the seed, the same
@@ -10,15 +10,15 @@
 //   with probability proportional to its area, a point is drawn uniformly in its bounding box
 //   and kept if the region contains it; where k regions overlap the point is kept with
 //   probability 1/k, which makes the density uniform over the union. The kept point is then
-//   rounded to whole metres (the original's habit, spec 12.3 step 1), so each coordinate can
+//   rounded to whole metres (the original's habit), so each coordinate can
 //   move up to 0.5 m, possibly outside the region (N16).
 // - Never a hang: a region that fills less than `min_fill_fraction` of its bounding box is
 //   rejected before any draw, and each object gets at most `max_attempts` tries.
-// - Labels: random integers below a bound that grows with the labels issued so far (spec 12.3
-//   step 2), unique across all sets; after `max_label_draws` collisions the smallest free
+// - Labels: random integers below a bound that grows with the labels issued so far (as in
+//   the original), unique across all sets; after `max_label_draws` collisions the smallest free
 //   integer below the bound is used (never `label_error`).
 // - Resemblance (manual 6.3): hr = q^exp with q uniform on {0, 0.001, ..., 0.999}.
-// - Aspect (manual 7, spec 12.3 step 4): values in tenths of a degree, so every written value
+// - Aspect (manual 7): values in tenths of a degree, so every written value
 //   is exact to 0.1 and the window checks of the hazard-line parser hold on the written text.
 // Rejected alternative: sampling in the bounding box of all regions (the original) wastes
 // almost every draw when two small regions lie far apart.
@@ -48,9 +48,9 @@ struct GeneratorLimits {
   double min_fill_fraction = 1e-3;       ///< region area / bounding-box area
   int max_label_draws = kMaxLabelDraws;  ///< label draws before the smallest free label
 };
-/// Steps of the resemblance base q (spec 12.3 step 3): q = k / 1000, k in [0, 999].
+/// Steps of the resemblance base q, as in the original: q = k / 1000, k in [0, 999].
 inline constexpr int kResemblanceSteps = 1000;
-/// The smallest label bound (spec 12.3 step 2); it grows tenfold as labels are issued.
+/// The smallest label bound (the original's); it grows tenfold as labels are issued.
 inline constexpr std::uint64_t kFirstLabelBound = 100;
 
 /// One generated object.

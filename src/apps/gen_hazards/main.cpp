@@ -1,4 +1,4 @@
-// gen_hazards: writes a random hazard field (docs/gen_hazards.md, spec 12, rulings D30/D31).
+// gen_hazards: writes a random hazard field (docs/gen_hazards.md; docs/differences.md D30, D31).
 // main reads the command line, picks the seed, builds the whole file in memory and writes it
 // only when everything succeeded, so a bad argument never leaves a half-written file.
 // Exit codes: see options.hpp (0 ok, 1 output not writable, 2 bad input).

@@ -281,7 +281,8 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
       apply_argument(arg, cli);
     }
   }
-  // Spec 12.4: the original read uninitialised bounds here; objects need somewhere to go. A
+  // The original read uninitialised bounds here (docs/gen_hazards.md, D31); objects need
+  // somewhere to go. A
   // --polygon that was rejected has its own error already.
   const bool polygon_given = std::any_of(args.begin(), args.end(), [](const std::string& arg) {
     return arg == "--polygon" || arg.rfind("--polygon=", 0) == 0;

@@ -1,5 +1,5 @@
 #pragma once
-// gen_hazards' command line (spec 12.1, rulings D30/D31 and the lead's decisions in
+// gen_hazards' command line (docs/differences.md D30, D31, and the decisions in
 // docs/gen_hazards.md): one table of options (name, value, default, range, meaning) that the
 // parser, --help and the docs test all read (style practice 5).
 //
@@ -32,15 +32,15 @@ inline constexpr int kExitBadInput = 2;
 /// --exp range (manual 6.3, rulings D31); values outside are errors.
 inline constexpr double kMinResemblanceExp = 0.01;
 inline constexpr double kMaxResemblanceExp = 10.0;
-/// --aspect_range: the spread of optimal aspects, at most a full turn (spec 12.1).
+/// --aspect_range: the spread of optimal aspects, at most a full turn.
 inline constexpr double kMaxAspectRangeDeg = 360.0;
-/// --aspect_{min,max}_{base,range}: each in [0, 90] (spec 12.1).
+/// --aspect_{min,max}_{base,range}: each in [0, 90].
 inline constexpr double kMaxAspectWindowDeg = 90.0;
 /// Most objects one run may generate (all sets together): the largest field the design plans
 /// for (design.md "Scale"). Larger requests are an error rather than a long wait for memory.
 inline constexpr std::uint64_t kMaxTotalObjects = 1'000'000;
 
-/// Aspect defaults of the original (spec 12.1): aspect uniform over the full circle, window
+/// Aspect defaults of the original: aspect uniform over the full circle, window
 /// half-width 15 deg, no spread.
 inline constexpr double kDefaultAspectBaseDeg = 0.0;
 inline constexpr double kDefaultAspectRangeDeg = 360.0;
@@ -61,7 +61,7 @@ struct ObjectSet {
   std::string argument;
 };
 
-/// Aspect generation (manual 7, spec 12.3 step 4), all in degrees. Present when any aspect
+/// Aspect generation (manual 7), all in degrees. Present when any aspect
 /// option is given.
 struct AspectOptions {
   double base_deg = kDefaultAspectBaseDeg;          ///< any finite value, used modulo 360

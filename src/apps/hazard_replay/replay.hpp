@@ -1,6 +1,6 @@
 #pragma once
-// hazard_replay: the options and the replay loop (the command line: args.hpp) (issue 2; rulings "hazard_replay
-// output", "Release timing", "Seeds").
+// hazard_replay: the options and the replay loop (the command line: args.hpp; the rules:
+// docs/differences.md, "hazard_replay", and docs/configuration.md, "Running offline").
 //
 // With --seeds=A..B the same replay runs once per seed and, instead of the .alog, writes one
 // JSON line per seed: {"seed":S,"detections":D,"classifications":C}, with ,"score":X before the

@@ -1,5 +1,5 @@
 #pragma once
-// hazard_replay --seeds=A..B --score: the metric's score of the report in the input (issue 14).
+// hazard_replay --seeds=A..B --score: the metric's score of the report in the input.
 //
 // Contract: the grader is libmission's HazardMetric, configured from the mission file's
 // `ProcessConfig = uFldHazardMetric` block line by line as uFldHazardMetric configures it

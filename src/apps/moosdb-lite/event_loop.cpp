@@ -31,7 +31,7 @@ namespace {
 
 /// Longest sleep in poll(): the granularity of timeouts and the DB-variable timer.
 constexpr int kPollInterval_ms = 50;
-/// Listen backlog of the reference DB (spec 1.1).
+/// Listen backlog of the reference DB (protocol.md 1.1).
 constexpr int kListenBacklog = 50;
 /// One recv() call; and the most read from one connection in one round (fairness).
 constexpr std::size_t kReadChunkBytes = 64 * 1024;

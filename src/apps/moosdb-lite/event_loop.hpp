@@ -8,14 +8,14 @@
 //   so a reader never sees a partial number).
 // - run() serves until `stop_requested` becomes non-zero (the signal handler also writes a
 //   byte to `wake_fd` so poll() returns at once). Every accepted socket gets TCP_NODELAY
-//   (spec 1.1). Reads are bounded per connection per round, so one flooding client cannot
+//   (protocol.md 1.1). Reads are bounded per connection per round, so one flooding client cannot
 //   starve the others.
 // - Each connection has an output buffer. Back-pressure first: while its unsent bytes exceed
 //   kPauseReadingOutputBytes (or half of `max_output_bytes` if less) the connection is not
 //   read (it cannot make more replies, the client is slowed down, a warning says its
 //   messages are delayed); reading resumes below half of that. Only if its unsent bytes
 //   exceed `max_output_bytes`, or nothing could be written for kSendStall_s while bytes were
-//   waiting (the reference DB's 6 s send timeout, spec 1.1), is the connection dropped with
+//   waiting (the reference DB's 6 s send timeout, protocol.md 1.1), is the connection dropped with
 //   a logged reason.
 // - Global memory budget: the unsent output of all connections, their incomplete packets and
 //   the mail the database keeps for them stay within `memory_budget_bytes`. Above it, the
@@ -41,7 +41,7 @@
 
 namespace moosdb_lite {
 
-/// The reference DB sets a 6 s SO_SNDTIMEO; a stuck write ends the connection (spec 1.1).
+/// The reference DB sets a 6 s SO_SNDTIMEO; a stuck write ends the connection (protocol.md 1.1).
 inline constexpr double kSendStall_s = 6.0;
 /// Time given to a closing connection to take a POISON or its last reply.
 inline constexpr double kCloseGrace_s = 2.0;

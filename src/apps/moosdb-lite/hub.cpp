@@ -1,4 +1,4 @@
-// Connection state machine (spec 5.1a). See hub.hpp for the contract.
+// Connection state machine (protocol.md 5.1a). See hub.hpp for the contract.
 //
 // Each connection holds its state, the banner bytes seen so far and a PacketReader that
 // reassembles packets from arbitrary segments. receive() first completes the banner, then
@@ -60,7 +60,7 @@ void Hub::receive(ConnectionId id, std::string_view bytes, double now_real_s) {
   if (it == connections_.end()) return;
   Connection& conn = it->second;
   // Liveness is judged by what the client sent: any byte counts, so a large packet that
-  // takes many reads to arrive keeps its sender alive (issue 12).
+  // takes many reads to arrive keeps its sender alive.
   if (!bytes.empty()) conn.last_input_real_s = now_real_s;
   if (conn.state == State::kBanner) {
     process_banner(id, conn, bytes, now_real_s);

@@ -1,5 +1,5 @@
 #pragma once
-// The connection state machine of moosdb-lite (../shared/spec/moos-wire-protocol.md 5.1a),
+// The connection state machine of moosdb-lite (docs/protocol.md 5.1a),
 // between raw bytes and moos::Database (include/moos/database.hpp), without sockets.
 //
 // Contract:
@@ -16,7 +16,7 @@
 //   judged by what the client sent (any byte, so a large packet arriving over many reads
 //   keeps its sender alive) at the time the transport last looked at its socket: tick()'s
 //   `now_real_s` must be the time of that look (the poll's return), never a later time, so a
-//   server busy for seconds does not count its own stall as the clients' silence (issue 12).
+//   server busy for seconds does not count its own stall as the clients' silence.
 //   heard() moves the start of a connection's silence to when its input was processed.
 //   A connection whose reading the transport paused (set_reading_paused) is not judged; its
 //   silence counts again from the resumption. A wrong banner
@@ -54,19 +54,19 @@ inline constexpr std::size_t kDefaultServerMaxPacketBytes = 256u * 1024u * 1024u
 static_assert(kDefaultMaxPendingBytes >= 2 * kDefaultServerMaxPacketBytes,
               "a client's output must hold the echo of one maximal packet plus one more");
 
-/// Banner and identification limits (spec 1.5: the DB reads the identification with a
+/// Banner and identification limits (protocol.md 1.5: the DB reads the identification with a
 /// 5-second timeout; the banner gets the same).
 inline constexpr double kDefaultBannerTimeout_s = 5.0;
 inline constexpr double kDefaultHandshakeTimeout_s = 5.0;
-/// Inactivity limit of the reference DB (spec 1.9, mission global ClientTimeout).
+/// Inactivity limit of the reference DB (protocol.md 1.9, mission global ClientTimeout).
 inline constexpr double kDefaultClientTimeout_s = 5.0;
 /// DB_TIME, DB_UPTIME, DB_CLIENTS, DB_RWSUMMARY are rewritten this often (real seconds;
-/// spec 5.6 SHOULD asks for 1-2 s).
+/// protocol.md 5.6 SHOULD asks for 1-2 s).
 inline constexpr double kDbVariableRefreshInterval_s = 1.0;
 
 struct HubConfig {
   moos::DatabaseConfig database;
-  double time_warp = 1.0;  ///< MOOS time = unix time x warp (spec 0.3), 0 < warp <= 400
+  double time_warp = 1.0;  ///< MOOS time = unix time x warp (protocol.md 1.10), 0 < warp <= 400
   double banner_timeout_s = kDefaultBannerTimeout_s;
   double handshake_timeout_s = kDefaultHandshakeTimeout_s;
   std::optional<double> client_timeout_s = kDefaultClientTimeout_s;  ///< nullopt: never

@@ -63,8 +63,9 @@ std::string host_name() {
 
 bool file_exists(const std::string& path) { return ::access(path.c_str(), F_OK) == 0; }
 
-// Loads the mission file named on the command line, or Mission.moos if it exists (spec
-// 5.11). Returns false if a named file cannot be read. Parse problems are warnings.
+// Loads the mission file named on the command line, or Mission.moos if it exists
+// (docs/protocol.md 5.11). Returns false if a named file cannot be read. Parse problems are
+// warnings.
 bool load_mission(const CommandLine& cli, std::optional<moos::MissionFile>& mission) {
   std::string path;
   if (cli.mission_file) {

@@ -57,7 +57,7 @@ const moos::SwitchRule& rule_named(const std::string& name) {
   throw std::logic_error("moosdb-lite has no switch " + name);  // a typo in this file
 }
 
-// Mission globals of the reference MOOSDB that moosdb-lite ignores (spec 5.11).
+// Mission globals of the reference MOOSDB that moosdb-lite ignores (protocol.md 5.11).
 struct IgnoredGlobal {
   std::string_view name;
   std::string_view why;
@@ -163,7 +163,7 @@ const moos::SwitchTable& switch_table() {
         switch_rule("--moos_file", SwitchKind::kText, kEmptyFileName),
         moos::help_switch_rule(),
         version_row(),
-        // Switches of the reference MOOSDB (spec 5.11) that moosdb-lite accepts and ignores.
+        // Switches of the reference MOOSDB (protocol.md 5.11) that moosdb-lite accepts and ignores.
         switch_rule("--response", SwitchKind::kIgnored,
                     "per-client response delays are not implemented"),
         switch_rule("-s", SwitchKind::kIgnored, kOneMode),
@@ -285,7 +285,7 @@ ServerOptions resolve_options(const CommandLine& cli, const std::string& mission
   if (cli.max_stored_bytes) options.max_stored_bytes = *cli.max_stored_bytes;
   if (cli.banner_timeout_s) options.banner_timeout_s = *cli.banner_timeout_s;
   if (cli.handshake_timeout_s) options.handshake_timeout_s = *cli.handshake_timeout_s;
-  // ClientTimeout 0 means "never" (spec 1.9 has no such value; we say it explicitly).
+  // ClientTimeout 0 means "never" (protocol.md 1.9 has no such value; we say it explicitly).
   if (options.client_timeout_s && *options.client_timeout_s == 0.0)
     options.client_timeout_s.reset();
   return options;

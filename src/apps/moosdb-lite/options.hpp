@@ -1,6 +1,6 @@
 #pragma once
 // moosdb-lite's configuration: the reference MOOSDB's command line and mission globals
-// (../shared/spec/moos-wire-protocol.md 5.11) plus our own switches, in one table
+// (docs/protocol.md 5.11) plus our own switches, in one table
 // (style practice 5: the parser and --help read the same rows).
 //
 // Contract:
@@ -27,7 +27,7 @@
 
 namespace moosdb_lite {
 
-/// Defaults of the reference MOOSDB (spec 5.11, 1.1) and our own.
+/// Defaults of the reference MOOSDB (protocol.md 5.11, 1.1) and our own.
 inline constexpr int kDefaultPort = 9000;
 inline constexpr const char* kDefaultBindAddress = "127.0.0.1";
 inline constexpr const char* kDefaultMissionFile = "Mission.moos";

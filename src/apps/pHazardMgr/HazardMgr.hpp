@@ -1,6 +1,6 @@
 #pragma once
 // HazardMgr: the pHazardMgr MOOS application, the vehicle-side hazard manager (the role of the
-// original uFldHazardMgr, spec 13), a thin adapter around libmission's HazardManager
+// original uFldHazardMgr; docs/mission-logic.md), a thin adapter around libmission's HazardManager
 // (mission/hazard_manager.hpp), which holds every decision: setting requests, beliefs,
 // classification priorities, the reported set, the hand-over and the reacquisition route.
 //

@@ -1,4 +1,4 @@
-// pHazardMgr: the vehicle-side hazard manager as a MOOS application (issue 5; docs/missions.md).
+// pHazardMgr: the vehicle-side hazard manager as a MOOS application (docs/missions.md).
 // main reads the command line, prints an information text or runs the app until SIGINT or
 // SIGTERM (exit codes: moos::launch).
 

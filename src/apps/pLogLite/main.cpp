@@ -1,4 +1,4 @@
-// pLogLite: a logger writing pLogger's .alog format (issue 5; docs/missions.md). main reads the
+// pLogLite: a logger writing pLogger's .alog format (docs/missions.md). main reads the
 // command line, prints an information text or runs the app until SIGINT or SIGTERM (exit codes:
 // moos::launch).
 

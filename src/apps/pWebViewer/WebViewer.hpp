@@ -1,5 +1,5 @@
 #pragma once
-// WebViewer: the pWebViewer MOOS application (issue 15, docs/viewer.md). It subscribes to the
+// WebViewer: the pWebViewer MOOS application (docs/viewer.md). It subscribes to the
 // watched variables, keeps the retained state and serves the page over HTTP with server-sent
 // events from threads of its own.
 //

@@ -1,5 +1,5 @@
 #pragma once
-// An httplib::Server whose memory stays bounded whatever a client sends (issue 12).
+// An httplib::Server whose memory stays bounded whatever a client sends.
 //
 // Why: cpp-httplib 0.11 keeps every request header line with no count limit (a client sending
 // 8 kB header lines for 8 s took pWebViewer from 9 MB to 775 MB), reads a chunked or

@@ -1,5 +1,5 @@
 #pragma once
-// The httplib::Stream through which BoundedHttpServer serves one connection (issue 12): it
+// The httplib::Stream through which BoundedHttpServer serves one connection: it
 // gives httplib at most a bounded number of bytes per request, so that nothing a client sends
 // can make httplib keep more.
 //

@@ -7,7 +7,7 @@
 //   max_clients + kSpareThreads threads, so that max_clients event streams never starve requests
 //   for files (a browser fetches up to 6 at once); idle keep-alive connections close after
 //   kKeepAliveIdle_s. It returns false (with `error`) when the address cannot be bound.
-// - Memory stays bounded whatever a client sends (issue 12): a request head of at most
+// - Memory stays bounded whatever a client sends: a request head of at most
 //   BoundedHttpServer::kMaxRequestHeadBytes (400 beyond it), a body of at most
 //   kMaxRequestBodyBytes (413), at most kMaxWaitingConnections connections waiting for a thread
 //   (503 beyond them); bounded_http_server.hpp.
@@ -43,7 +43,7 @@ class HttpServer {
   static constexpr int kStartWaitSteps = 5000;
   static constexpr double kKeepAlive_s = 1.0;
   static constexpr int kWriteTimeout_s = 5;
-  /// The largest request body accepted, bytes (issue 12). Only a button press has a body, and
+  /// The largest request body accepted, bytes. Only a button press has a body, and
   /// it needs none; without a bound httplib keeps whatever body a client sends in memory.
   static constexpr std::size_t kMaxRequestBodyBytes = 4096;
 

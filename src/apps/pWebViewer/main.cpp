@@ -1,4 +1,4 @@
-// pWebViewer: a live and replayable mission view in a browser (issue 15; docs/viewer.md). main
+// pWebViewer: a live and replayable mission view in a browser (docs/viewer.md). main
 // reads the command line: --replay / --export run without a MOOSDB (offline.hpp); otherwise it
 // prints an information text or runs the app until SIGINT or SIGTERM (moos::launch).
 

@@ -1,7 +1,7 @@
 #pragma once
 // HazardMetricApp: the uFldHazardMetric MOOS application, the shoreside grader, a thin adapter
 // around libmission's HazardMetric (mission/metric.hpp), which holds the parameters, messages and
-// score formula of the original (spec 14, N17 fixed).
+// score formula of the original (docs/mission-logic.md, "The grader"), its division by zero fixed.
 //
 // Contract
 // - Configuration: every line of the block goes to HazardMetric::configure in file order; its
@@ -25,7 +25,7 @@
 namespace ufld_hazard_metric {
 
 inline constexpr const char* kAppName = "uFldHazardMetric";
-/// The original's AppTick (spec 14: UHZ_MISSION_PARAMS every 50 iterations, 12.5 s).
+/// The original's AppTick (UHZ_MISSION_PARAMS every 50 iterations, 12.5 s).
 inline constexpr double kDefaultAppTick_hz = 4.0;
 
 moos::AppTraits metric_traits();

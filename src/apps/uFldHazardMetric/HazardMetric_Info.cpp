@@ -10,7 +10,7 @@ std::string help_text() {
   return mission_app::help_text(
       kAppName,
       "The shoreside grader of hazard searches, a drop-in for MOOS-IvP's\n"
-      "uFldHazardMetric: the same parameters, messages and score formula (spec 14).\n"
+      "uFldHazardMetric: the same parameters, messages and score formula.\n"
       "It reads the ground truth (the sensor's hazard file), grades every\n"
       "HAZARDSET_REPORT and posts HAZARD_SEARCH_SCORE and HAZARDSET_EVAL. One fix: with\n"
       "nothing to lose (no objects, or zero penalties) the score is 100 or 0, never NaN\n"
@@ -20,7 +20,7 @@ std::string help_text() {
 std::string example_text() {
   return mission_app::example_text(
       kAppName, mission_app::example_body(kDefaultAppTick_hz,
-                                          {{"The grader (spec 14.1)", &mission::metric_parameters()}},
+                                          {{"The grader", &mission::metric_parameters()}},
                                           {{"hazard_file", "hazards.txt"}}));
 }
 

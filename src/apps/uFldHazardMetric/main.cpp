@@ -1,4 +1,5 @@
-// uFldHazardMetric: the shoreside grader as a MOOS application (issue 5; spec 14; docs/missions.md).
+// uFldHazardMetric: the shoreside grader as a MOOS application (docs/mission-logic.md,
+// docs/missions.md).
 // main reads the command line, prints an information text or runs the app until SIGINT or
 // SIGTERM (exit codes: moos::launch).
 

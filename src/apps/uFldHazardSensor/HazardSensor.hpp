@@ -26,7 +26,8 @@
 //   (settings, credits, queues): only the database was lost, not the mission. The connection
 //   that start-up already served gets nothing twice.
 // - Idle (IdleAppTick, opt-in): the app is quiet until Engine::quiet_until_s.
-// - build_report: hazard::format_report (spec 11, seed and active effects in its header).
+// - build_report: hazard::format_report (docs/uFldHazardSensor.md; seed and active effects in its
+//   header).
 // The app therefore posts exactly what the engine decided; hazard_replay drives the same engine
 // the same way (start, mail before the iteration of its time, step per AppTick).
 
@@ -44,7 +45,7 @@
 
 namespace ufld_hazard_sensor {
 
-/// Events kept in the AppCast unless max_appcast_events says otherwise (spec 3.4).
+/// Events kept in the AppCast unless max_appcast_events says otherwise (the original's 20).
 inline constexpr std::size_t kDefaultMaxAppCastEvents = 20;
 
 /// Pseudo-variables of the verbose .alog stream for what is not a posting.

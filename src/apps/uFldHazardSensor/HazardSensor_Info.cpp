@@ -29,9 +29,10 @@ std::string rule() { return std::string(kRuleWidth, '=') + "\n"; }
 
 std::string banner(const std::string& title) { return rule() + title + "\n" + rule(); }
 
-/// Example values of the framework lines of --example (manual listing 10.3; wire spec 6.3, 7.2).
+/// Example values of the framework lines of --example (manual listing 10.3;
+/// docs/protocol.md 6.3, 7.2).
 constexpr const char* kExampleCommsTick = "4";
-/// core-moos AppCasting's default (wire spec 7.2).
+/// core-moos AppCasting's default (docs/protocol.md 7.2).
 constexpr const char* kExampleTermReportInterval = "0.4";
 
 /// Example values of the repeatable parameters, which have no default (manual 2.2, 4.5, 5).

@@ -1,5 +1,6 @@
 #pragma once
-// The texts of uFldHazardSensor's information switches (manual 10.1, 11, listing 11.4; spec 2):
+// The texts of uFldHazardSensor's information switches (manual 10.1, 11, listing
+// 11.4; docs/uFldHazardSensor.md):
 // --help, --example, --interface and --version. Each function returns the text; main decides
 // what to print and the exit code (style.md: Info functions produce text, they never exit).
 //

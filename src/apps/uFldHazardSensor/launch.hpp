@@ -1,14 +1,14 @@
 #pragma once
 // uFldHazardSensor's own switch, --verbose, plugged into the one start-up sequence of every MOOS
-// app (moos::launch; manual 11, listing 11.4; spec 2; D29).
+// app (moos::launch; manual 11, listing 11.4; docs/uFldHazardSensor.md; D29).
 //
 // Contract: `--verbose` and `--verbose=true` turn verbose on, `--verbose=false` off (case-
 // insensitive; the last one wins); any other value is a usage error naming the argument, which
 // beats every information switch. Everything else is moos::launch's: the first information
 // switch decides, without one and without a mission file the help is shown, the mission file,
-// the run alias (argv[2] or --alias=) and the --moos_* switches are parse_command_line's (wire
-// spec 6.4). A `--verbose` is never a run alias (the original took it for one when it came
-// second, D29). Other arguments are ignored, as in the original.
+// the run alias (argv[2] or --alias=) and the --moos_* switches are parse_command_line's
+// (docs/protocol.md 6.4). A `--verbose` is never a run alias (the original took it for one when
+// it came second, D29). Other arguments are ignored, as in the original.
 
 #include <string>
 

@@ -1,4 +1,5 @@
-// uFldHazardSensor: the simulated hazard sensor as a MOOS application (manual; spec 2; issue 4).
+// uFldHazardSensor: the simulated hazard sensor as a MOOS application (manual;
+// docs/uFldHazardSensor.md).
 // main is moos::launch with the app's texts and its --verbose switch (launch.hpp): it prints an
 // information text or runs the app until SIGINT or SIGTERM. Exit codes: see help_text() (0, 1
 // from moos::run_app, moos::kExitUsageError).

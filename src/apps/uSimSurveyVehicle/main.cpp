@@ -1,4 +1,4 @@
-// uSimSurveyVehicle: a simulated survey vehicle as a MOOS application (issue 5; docs/missions.md).
+// uSimSurveyVehicle: a simulated survey vehicle as a MOOS application (docs/missions.md).
 // main reads the command line, prints an information text or runs the app until SIGINT or
 // SIGTERM (exit codes: moos::launch).
 

@@ -14,7 +14,8 @@ Result parse_config_request(std::string_view text) {
   if (!vname) return Result::fail(error);
   ConfigRequest r;
   r.vname = std::move(*vname);
-  // An empty width ("width=,pd=0.8") is a pd-only update, as in the original (spec 7.2).
+  // An empty width ("width=,pd=0.8") is a pd-only update, as in the original
+  // (docs/messages.md, UHZ_CONFIG_REQUEST).
   const auto width_text = f.get("width");
   if (width_text && !width_text->empty()) r.width_m = f.number("width", error);
   r.pd = f.number("pd", error);

@@ -61,7 +61,7 @@ struct LineReader {
     } else if (key == "y") {
       y = number(key, value);
     } else if (key == "label") {
-      // A label reaches postings, variable payloads and logs: no control bytes (issue 12).
+      // A label reaches postings, variable payloads and logs: no control bytes.
       if (detail::has_control_byte(value)) {
         reject(field_value(key, value) + " contains a control byte");
       }

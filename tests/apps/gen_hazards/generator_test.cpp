@@ -1,4 +1,4 @@
-// The generator (spec 12.2, 12.3; rulings D30, "gen_hazards (D30)", the hazard-line validation
+// The generator (docs/gen_hazards.md; docs/differences.md D30; the hazard-line validation
 // table; docs/gen_hazards.md): properties over many seeds, the formulas, the fallbacks.
 
 #include <gtest/gtest.h>
@@ -25,7 +25,8 @@ constexpr std::uint64_t kPropertySeeds = 200;
 constexpr std::uint64_t kDistributionDraws = 100'000;
 /// Tolerance of a rate check, in binomial standard deviations (team rules).
 constexpr double kSigmas = 5.0;
-/// The documented rounding (spec 12.3 step 1, N16): each coordinate moves at most this much.
+/// The documented rounding (docs/gen_hazards.md, "How a field is drawn"): each coordinate moves at
+/// most this much.
 constexpr double kRoundingLimit_m = 0.5;
 
 std::string joined(const std::vector<std::string>& lines) {
@@ -65,7 +66,7 @@ void expect_binomial(std::uint64_t count, std::uint64_t n, double p, const std::
       << what << ": " << count << " of " << n << ", expected " << expected << " (p " << p << ")";
 }
 
-// Everything a generated object must satisfy, whatever the seed (D30, spec 12.3, rulings'
+// Everything a generated object must satisfy, whatever the seed (D30, docs/gen_hazards.md, the
 // validation table).
 void check_object(const GeneratedObject& g, const GeneratorConfig& config, const std::string& ctx) {
   bool inside = false;
@@ -104,7 +105,7 @@ void check_field(const std::vector<std::string>& args, const std::string& name) 
       EXPECT_GE(g.set_index, previous_set) << ctx;
       previous_set = g.set_index;
       ++per_set[g.set_index];
-      // Labels: unique integers below the bound in force when issued (spec 12.3 step 2).
+      // Labels: unique integers below the bound in force when issued.
       EXPECT_TRUE(labels.insert(g.object.label).second) << ctx << ": label " << g.object.label;
       EXPECT_LT(std::stoull(g.object.label), label_bound(i)) << ctx;
       EXPECT_EQ(std::to_string(std::stoull(g.object.label)), g.object.label) << ctx;
@@ -420,7 +421,7 @@ TEST(GenHazardsGenerator, FileHasHeaderOneRegionLinePerPolygonThenObjects_D30) {
   ASSERT_EQ(lines.size(), 6u);
   EXPECT_EQ(lines[0], "// gen_hazards x --seed=3");
   EXPECT_EQ(lines[1], "region = pts={0,0:100,0:100,100}");
-  EXPECT_EQ(lines[2], "region = pts={12.3,0:20,0:20,8}");  // FMT(.,1), spec 12.2
+  EXPECT_EQ(lines[2], "region = pts={12.3,0:20,0:20,8}");  // FMT(.,1)
   for (std::size_t i = 3; i < 6; ++i) EXPECT_EQ(lines[i].rfind("hazard = x=", 0), 0u) << lines[i];
   EXPECT_NE(lines[3].find("type=hazard"), std::string::npos);
   EXPECT_NE(lines[5].find("type=benign"), std::string::npos);

@@ -1,4 +1,4 @@
-// The command line of gen_hazards (spec 12.1, rulings D30/D31, docs/gen_hazards.md).
+// The command line of gen_hazards (docs/gen_hazards.md; docs/differences.md D30, D31).
 
 #include <gtest/gtest.h>
 
@@ -41,8 +41,8 @@ TEST(GenHazardsOptions, BadPolygonsAreErrorsNamingTheArgument_Spec12_4) {
                              "--polygon=0,0:10,10");
 }
 
-// Objects beyond the sensor's coordinate bound would be refused by every reader (issue 12).
-TEST(GenHazardsOptions, APolygonBeyondTheObjectBoundIsAnErrorNamingIt_Issue12) {
+// Objects beyond the sensor's coordinate bound would be refused by every reader.
+TEST(GenHazardsOptions, APolygonBeyondTheObjectBoundIsAnErrorNamingIt_Hardening) {
   expect_single_error_naming({"--polygon=0,0:1e300,0:1e300,1e300"},
                              "--polygon=0,0:1e300,0:1e300,1e300");
   const CommandLine far = parse({"--polygon=0,0:2e8,0:2e8,2e8"});

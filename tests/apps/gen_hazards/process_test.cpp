@@ -1,5 +1,5 @@
 // The gen_hazards binary: golden outputs (D30), reproducibility from the header, --output,
-// properties of real output files, and bad input (spec 12.4, D31): an error naming the
+// properties of real output files, and bad input (docs/gen_hazards.md, D31): an error naming the
 // argument on standard error, a non-zero exit, nothing on standard output, no file, no hang.
 
 #include <gtest/gtest.h>
@@ -33,7 +33,8 @@ constexpr double kBadInputDeadline_s = 1.0;
 constexpr double kRunDeadline_s = 30.0;
 /// Seeds of the property test on real output files.
 constexpr std::uint64_t kFileSeeds = 25;
-/// The documented rounding (spec 12.3, N16): each coordinate moves at most this much.
+/// The documented rounding (docs/gen_hazards.md, "How a field is drawn"): each coordinate moves at
+/// most this much.
 constexpr double kRoundingLimit_m = 0.5;
 
 const std::string kManualBox = "--polygon=-150,-75:-150,-400:400,-400:400,-75";
@@ -144,7 +145,7 @@ TEST(GenHazardsProcess, UnwritableOutputExitsOneNamingTheFile) {
   EXPECT_TRUE(dir.entries().empty());
 }
 
-// Some polygon contains a point within 0.5 m of (x, y) in each coordinate (spec 12.3, N16).
+// Some polygon contains a point within 0.5 m of (x, y) in each coordinate (the rounding above).
 bool within_rounding_of_a_region(double x, double y,
                                  const std::vector<mission::ConvexPolygon>& regions) {
   for (const auto& region : regions) {

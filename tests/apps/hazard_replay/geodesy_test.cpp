@@ -1,4 +1,4 @@
-// hazard_replay hands the mission's LatOrigin/LongOrigin to the engine (issue 6, geodesy):
+// hazard_replay hands the mission's LatOrigin/LongOrigin to the engine (geodesy):
 // LAT/LON-only node reports and lat/lon hazard lines are placed; without an origin they are
 // refused with a warning that says why.
 #include <gtest/gtest.h>

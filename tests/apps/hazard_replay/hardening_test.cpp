@@ -1,5 +1,5 @@
-// hazard_replay on the issue 12 examples (the engine's bad input): a 10 km jump under
-// swath_sweep over a dense field, a negative speed, a 1e308 width, and a hazard file with a
+// hazard_replay on the hostile examples (the engine's bad input, docs/robustness.md): a 10 km jump
+// under swath_sweep over a dense field, a negative speed, a 1e308 width, and a hazard file with a
 // byte-order mark and a NUL byte in a label. Each run ends normally with a warning naming the
 // value on standard error.
 #include <gtest/gtest.h>

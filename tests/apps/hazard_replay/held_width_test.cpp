@@ -1,5 +1,5 @@
-// Issue 13 through the hazard_replay binary: a width limited by max=1 is held from the moment
-// it is granted (rulings "Width choice", amended), so replaying a log gives what the sensor gives.
+// The held width through the hazard_replay binary: a width limited by max=1 is held from the moment
+// it is granted (docs/differences.md D20), so replaying a log gives what the sensor gives.
 #include <gtest/gtest.h>
 
 #include <map>
@@ -26,7 +26,7 @@ std::string width_request(const std::string& vname) {
   return "vname=" + vname + ",width=25,pd=0.9";
 }
 
-TEST(ReplayHeldWidth, AMaxWidthIsHeldFromItsGrantUntil600sWithoutARequest_Issue13) {
+TEST(ReplayHeldWidth, AMaxWidthIsHeldFromItsGrantUntil600sWithoutARequest) {
   ScratchDir dir;
   write_file(dir / "m.moos", mission("  AppTick = 1\n"
                                      "  sensor_config = width=10, exp=4, pclass=0.8\n"

@@ -88,7 +88,7 @@ TEST(ReplayProcess, MissingFilesAndBlockExitOneNamingThem) {
             std::string::npos);
 }
 
-TEST(ReplayProcess, ALogThatIsNoFileOrPipeIsRefusedWithTheReason_Issue14) {
+TEST(ReplayProcess, ALogThatIsNoFileOrPipeIsRefusedWithTheReason) {
   ScratchDir dir;
   make_mission(dir);
   auto r = run(dir, {"m.moos", "/dev/zero"});  // would be read until memory ran out
@@ -103,7 +103,7 @@ TEST(ReplayProcess, ALogThatIsNoFileOrPipeIsRefusedWithTheReason_Issue14) {
 }
 
 // A regular log is mapped, a pipe is read to its end: the same replay either way.
-TEST(ReplayProcess, ALogFromAPipeReplaysAsTheFileDoes_Issue14) {
+TEST(ReplayProcess, ALogFromAPipeReplaysAsTheFileDoes) {
   ScratchDir dir;
   make_mission(dir);
   const std::string fifo = (dir / "pipe.alog").string();

@@ -1,4 +1,4 @@
-// libmoos's TcpClient against a real moosdb-lite process (wire spec sections 1, 4 and 5):
+// libmoos's TcpClient against a real moosdb-lite process (docs/protocol.md sections 1, 4 and 5):
 // two of our clients exchange 10,000 messages of each data type in order; registration
 // snapshots, wildcard subscriptions and throttled intervals behave as section 5 says; a client
 // survives the server being killed and restarted and gets its subscriptions back.
@@ -81,7 +81,7 @@ TEST_F(ClientWithServer, TenThousandMessagesOfEachTypeArriveInOrder_5_3) {
   ASSERT_TRUE(b->register_variable("D_VAR"));
   ASSERT_TRUE(b->register_variable("S_VAR"));
   ASSERT_TRUE(b->register_variable("B_VAR"));
-  ASSERT_TRUE(a->register_variable("D_VAR"));  // the publisher hears itself (spec 5.3 step 6)
+  ASSERT_TRUE(a->register_variable("D_VAR"));  // the publisher hears itself (protocol.md 5.3)
   ASSERT_TRUE(b->flush(kConnect_s) && a->flush(kConnect_s));
   std::this_thread::sleep_for(std::chrono::milliseconds(200));  // registrations processed
   for (int i = 0; i < kMessagesPerType; ++i) {

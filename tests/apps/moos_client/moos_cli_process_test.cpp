@@ -130,7 +130,7 @@ TEST(CliWithoutServer, AHostThatDoesNotResolveMeansExitThreeNamingIt) {
 }
 
 // The longest wait allowed still waits: its deadline does not overflow.
-TEST_F(CliWithServer, TheLongestTimeoutsStillWaitForTheMessage_Issue12) {
+TEST_F(CliWithServer, TheLongestTimeoutsStillWaitForTheMessage_Hardening) {
   auto watch = Child::spawn(MOOS_CLI_PATH, {"watch", port_arg, "--name=patient", "--count=1",
                                             "--timeout=1e8", "--connect-timeout=1e8", "LATE"});
   ASSERT_TRUE(watch.has_value());

@@ -80,8 +80,8 @@ TEST(MoosCliOptions, EachSwitchProblemNamesSwitchAndValue) {
 }
 
 // A wait beyond kMaxRealWait_s overflowed the steady clock's deadline: moos-cli gave up at
-// once (issue 12). The bound itself is accepted.
-TEST(MoosCliOptions, WaitsBeyondTheLargestAreRefused_Issue12) {
+// once. The bound itself is accepted.
+TEST(MoosCliOptions, WaitsBeyondTheLargestAreRefused_Hardening) {
   std::string error;
   EXPECT_FALSE(parse_options({"watch", "A", "--timeout=1e300"}, &error));
   EXPECT_EQ(error, "bad timeout: --timeout=1e300");

@@ -1,5 +1,6 @@
 // The socket loop in-process, with limits a test can reach quickly: the global memory budget
-// (issue 12). The loop runs in a thread on a free port and is stopped through its wake pipe.
+// (docs/robustness.md, "Server bounds"). The loop runs in a thread on a free port and is stopped
+// through its wake pipe.
 
 #include <gtest/gtest.h>
 #include <fcntl.h>

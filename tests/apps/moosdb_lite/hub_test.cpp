@@ -1,4 +1,4 @@
-// Unit tests of the connection state machine (spec 5.1a) without sockets: bytes in, actions
+// Unit tests of the connection state machine (protocol.md 5.1a) without sockets: bytes in, actions
 // out. Timeouts are driven by the `now` given to tick().
 
 #include <gtest/gtest.h>
@@ -257,7 +257,7 @@ TEST_F(HubTest, InactiveClientIsDroppedAfterClientTimeoutAndActiveOneIsKept_1_9)
 }
 
 // Liveness is what the client sent, not complete packets: the first bytes of a large packet
-// that is still arriving keep its sender alive (issue 12).
+// that is still arriving keep its sender alive.
 TEST_F(HubTest, AnyByteReceivedKeepsAClientAlive) {
   const ConnectionId id = connected("pBig", true);
   const std::string packet = moos::encode_packet({notify_string("BIG", "0123456789", "pBig")});
@@ -283,7 +283,7 @@ TEST_F(HubTest, PausedConnectionIsNotJudgedSilentUntilResumed) {
   EXPECT_FALSE(hub_.database().is_connected(id));
 }
 
-// A newline in a client name cannot end a log line (issue 12).
+// A newline in a client name cannot end a log line.
 TEST_F(HubTest, ClientNameIsEscapedInTheLog) {
   const ConnectionId id = connected("p\nEvil\nforged", true);
   EXPECT_EQ(hub_.describe(id), "client \"p\\x0AEvil\\x0Aforged\" (127.0.0.1:p\nEvil\nforged)");

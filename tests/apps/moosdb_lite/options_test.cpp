@@ -1,4 +1,4 @@
-// moosdb-lite's command line and mission globals (spec 5.11) and its help text.
+// moosdb-lite's command line and mission globals (protocol.md 5.11) and its help text.
 
 #include <gtest/gtest.h>
 
@@ -134,7 +134,7 @@ TEST(Options, BadSwitchesAreErrorsNamingTheArgument) {
   EXPECT_EQ(cli.alias, "alias");
 }
 
-TEST(Options, EverySwitchOfTheReferenceMoosdbHelpWorksOrIsIgnoredWithANote_Issue12) {
+TEST(Options, EverySwitchOfTheReferenceMoosdbHelpWorksOrIsIgnoredWithANote_Hardening) {
   // MOOSDB --help (core-moos), switch by switch.
   const std::vector<std::string> ignored = {
       "--moos_suicide_channel=127.0.0.1", "--moos_suicide_port=9020", "--moos_suicide_phrase=x",

@@ -347,8 +347,8 @@ TEST(MoosdbLiteBadInput, FloodOfOneHundredThousandMessagesLosesNothing) {
   others.expect_everything_received();
 }
 
-// A name is repeated in DB_CLIENTS, DB_EVENT and every log line about its client (issue 12).
-TEST(MoosdbLiteBadInput, ATenKilobyteClientNameIsPoisonedNamingTheBound_Issue12) {
+// A name is repeated in DB_CLIENTS, DB_EVENT and every log line about its client.
+TEST(MoosdbLiteBadInput, ATenKilobyteClientNameIsPoisonedNamingTheBound_Hardening) {
   MoosdbServer server(MOOSDB_LITE_PATH, {kPatientClients});
   ASSERT_TRUE(server.ok());
   Bystanders others;
@@ -415,8 +415,8 @@ TEST(MoosdbLiteBadInput, PartOfAHeaderThenSilenceIsDroppedAtTheClientTimeout) {
 }
 
 // Ever new variable names: the store is bounded (--max-stored-bytes); beyond it a write is
-// refused with a logged reason, the writer stays, and the others are served (issue 12).
-TEST(MoosdbLiteBadInput, NewVariablesBeyondTheStoreBoundAreRefusedAndTheWriterStays_Issue12) {
+// refused with a logged reason, the writer stays, and the others are served.
+TEST(MoosdbLiteBadInput, NewVariablesBeyondTheStoreBoundAreRefusedAndTheWriterStays_Hardening) {
   MoosdbServer server(MOOSDB_LITE_PATH, {"--max-stored-bytes=200000", kPatientClients});
   ASSERT_TRUE(server.ok());
   Bystanders others;

@@ -1,4 +1,4 @@
-// Hardening of the real server (issue 12): a server stall does not drop healthy clients,
+// Hardening of the real server: a server stall does not drop healthy clients,
 // descriptor exhaustion neither spins nor floods the log, client text cannot forge log lines,
 // and a client whose output piles up is slowed down and warned before it is dropped.
 

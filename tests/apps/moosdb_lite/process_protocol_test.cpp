@@ -1,5 +1,5 @@
 // Process tests: the moosdb-lite binary on a free port, spoken to in raw MOOS protocol over
-// real sockets (../shared/spec/moos-wire-protocol.md 1, 5). Each test starts its own server.
+// real sockets (docs/protocol.md 1, 5). Each test starts its own server.
 
 #include <gtest/gtest.h>
 
@@ -48,7 +48,7 @@ std::vector<std::string> keys_of(const std::vector<Message>& messages) {
 }
 
 // ---------------------------------------------------------------------------------------
-// Handshake (spec 1.4-1.8)
+// Handshake (protocol.md 1.4-1.8)
 
 TEST(MoosdbLiteProcess, WelcomeCarriesHostnameCommunitySkewAndAsynchronous_1_6) {
   MoosdbServer server(MOOSDB_LITE_PATH, {"--moos_community=alpha"});
@@ -104,7 +104,7 @@ TEST(MoosdbLiteProcess, ReconnectingClientFindsItsNameFreeImmediately_1_9) {
 }
 
 // ---------------------------------------------------------------------------------------
-// Delivery rules (spec 5.6)
+// Delivery rules (protocol.md 5.6)
 
 TEST(MoosdbLiteProcess, SyncClientGetsOneReplyPerPacketStartingWithNullAndNothingUnsolicited_5_6) {
   MoosdbServer server(MOOSDB_LITE_PATH);
@@ -203,7 +203,7 @@ TEST(MoosdbLiteProcess, PacketSentJustBeforeClosingIsProcessed_5_6) {
 }
 
 // ---------------------------------------------------------------------------------------
-// NOTIFY, REGISTER, wildcards (spec 5.3-5.5)
+// NOTIFY, REGISTER, wildcards (protocol.md 5.3-5.5)
 
 TEST(MoosdbLiteProcess, RegisterGetsSnapshotWithWriterIdAndOriginalTime_5_4) {
   MoosdbServer server(MOOSDB_LITE_PATH, {"--moos_community=alpha"});
@@ -284,7 +284,7 @@ TEST(MoosdbLiteProcess, WildcardCommaAndSpaceFormsBothWork_5_5) {
 }
 
 // ---------------------------------------------------------------------------------------
-// DB variables and server requests (spec 5.7, 5.8)
+// DB variables and server requests (protocol.md 5.7, 5.8)
 
 TEST(MoosdbLiteProcess, DbVariablesExistAtOnceAndAreRefreshedByTimer_5_7) {
   MoosdbServer server(MOOSDB_LITE_PATH, {"--moos_community=alpha", "--moos_timeout=60"});

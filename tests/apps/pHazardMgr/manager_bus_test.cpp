@@ -83,7 +83,7 @@ class MgrOnBus : public ::testing::Test {
 
 const std::string kArchie = "  vname = archie\n";
 
-// ---- setting and sensor requests (spec 13; D12) ------------------------------------------
+// ---- setting and sensor requests (docs/mission-logic.md; D12) -------------------------------
 
 TEST_F(MgrOnBus, AsksForItsSettingThenKeepsTheSensorOnOnceAcked) {
   ASSERT_TRUE(start(kArchie + "  swath_width = 25\n  sensor_pd = 0.9\n"));

@@ -1,4 +1,4 @@
-// Hostile requests against the viewer's HTTP side (issue 12): any local process can reach the
+// Hostile requests against the viewer's HTTP side: any local process can reach the
 // port, so each request below gets a clear status, nothing outside the embedded page is served,
 // no request body is kept beyond a small bound, and the page is still served afterwards.
 // Raw sockets, so that no client library normalises the request first.
@@ -164,7 +164,7 @@ TEST_F(HostileHttp, AButtonNumberOutsideTheRangeIsNotFoundAndPressesNothing) {
 
 // A body over the bound is refused with 413 and discarded as it arrives, never kept: without
 // the bound httplib keeps every byte a client sends in memory before the handler runs.
-TEST_F(HostileHttp, ARequestBodyOverTheBoundIsRefused_Issue12) {
+TEST_F(HostileHttp, ARequestBodyOverTheBoundIsRefused_Hardening) {
   const std::size_t over = HttpServer::kMaxRequestBodyBytes + 1;
   const std::string reply = raw_exchange(
       port, "POST /button/1 HTTP/1.1\r\nHost: 127.0.0.1\r\nContent-Length: " +
@@ -197,7 +197,7 @@ std::string head_with_lines(std::size_t lines, std::size_t line_bytes) {
 
 // httplib 0.11 kept every header line, with no count limit; the head is now cut at
 // kMaxRequestHeadBytes. A head just under it is served.
-TEST_F(HostileHttp, AHeadWithinTheBoundIsServedAndOneBeyondItIsRefused_Issue12) {
+TEST_F(HostileHttp, AHeadWithinTheBoundIsServedAndOneBeyondItIsRefused_Hardening) {
   constexpr std::size_t kLine = 8000;  // under httplib's 8 KiB per line
   const std::size_t within = BoundedHttpServer::kMaxRequestHeadBytes / kLine - 1;
   EXPECT_EQ(status_of(raw_exchange(port, head_with_lines(within, kLine))), 200);
@@ -206,11 +206,12 @@ TEST_F(HostileHttp, AHeadWithinTheBoundIsServedAndOneBeyondItIsRefused_Issue12) 
   expect_still_serving();
 }
 
-// The flood of issue 12: clients that send 8 kB header lines without end took the viewer from
+// The header flood of docs/robustness.md: clients that send 8 kB header lines without end took the
+// viewer from
 // 9 MB to 775 MB resident. Each flooding connection is now answered 400 (or closed) once its
 // head passes the bound; the process stays within kFloodMemory_kB of where it started and
 // serves the page during and after the flood.
-TEST_F(HostileHttp, AHeaderFloodKeepsMemoryBoundedAndThePageServed_Issue12) {
+TEST_F(HostileHttp, AHeaderFloodKeepsMemoryBoundedAndThePageServed_Hardening) {
   constexpr int kFlooders = 4;
   constexpr double kFlood_s = 4.0;
   constexpr long long kFloodMemory_kB = 50 * 1024;
@@ -263,7 +264,7 @@ TEST_F(HostileHttp, AHeaderFloodKeepsMemoryBoundedAndThePageServed_Issue12) {
 }
 
 // A chunked body is not bounded by httplib 0.11's payload limit: the stream cuts it.
-TEST_F(HostileHttp, AChunkedBodyOverTheBoundIsRefused_Issue12) {
+TEST_F(HostileHttp, AChunkedBodyOverTheBoundIsRefused_Hardening) {
   std::string request =
       "POST /button/1 HTTP/1.1\r\nHost: 127.0.0.1\r\nTransfer-Encoding: chunked\r\n"
       "Connection: close\r\n\r\n";
@@ -279,7 +280,7 @@ TEST_F(HostileHttp, AChunkedBodyOverTheBoundIsRefused_Issue12) {
 // Connections beyond the pool's threads wait, up to kMaxWaitingConnections; beyond those a new
 // connection is answered 503 at once instead of being queued without bound. Whatever the
 // threads' timing, no more than threads + kMaxWaitingConnections connections are kept.
-TEST_F(HostileHttp, ConnectionsBeyondThePoolAndItsWaitingRoomGet503_Issue12) {
+TEST_F(HostileHttp, ConnectionsBeyondThePoolAndItsWaitingRoomGet503_Hardening) {
   const std::size_t threads = HttpOptions{}.max_clients + HttpServer::kSpareThreads;
   const std::size_t kept_at_most = threads + BoundedHttpServer::kMaxWaitingConnections;
   constexpr std::size_t kSurplus = 16;
@@ -316,7 +317,7 @@ TEST_F(HostileHttp, ConnectionsBeyondThePoolAndItsWaitingRoomGet503_Issue12) {
 
 // A client that starts a request and goes silent holds a thread only for httplib's read
 // timeout (5 s), then gets 400 and is closed.
-TEST_F(HostileHttp, AStalledRequestIsClosedAfterTheReadTimeout_Issue12) {
+TEST_F(HostileHttp, AStalledRequestIsClosedAfterTheReadTimeout_Hardening) {
   constexpr double kReadTimeout_s = 5.0;  // CPPHTTPLIB_READ_TIMEOUT_SECOND
   const int fd = connect_to(port);
   ASSERT_GE(fd, 0);

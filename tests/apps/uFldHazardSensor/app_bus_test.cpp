@@ -47,7 +47,7 @@ int warnings_with(const moos::AppCast& cast, const std::string& part) {
   }));
 }
 
-// ---- start-up visuals (manual 7.6, spec 5.4) --------------------------------------------------
+// ---- start-up visuals (manual 7.6, docs/messages.md) ------------------------------------------
 
 TEST_F(SensorOnBus, StartupPostsOneMarkerPerObjectInLoadOrder_7_6) {
   start(std::string(kField) + kOptions);
@@ -119,7 +119,7 @@ TEST_F(SensorOnBus, OptionsSummaryIntervalZeroPostsEveryIteration_4_5) {
   EXPECT_EQ(values_of("UHZ_OPTIONS_SUMMARY").front(), "width=20,exp=2,pclass=1.0:width=10,exp=4,pclass=0.90");
 }
 
-// ---- AppCast (spec 11, wire spec 7.2) -----------------------------------------------------------
+// ---- AppCast (docs/uFldHazardSensor.md, docs/protocol.md 7.2) --------------------------------
 
 TEST_F(SensorOnBus, AppCastOnTheFirstIterationThenOnlyOnRequest_11) {
   start(std::string(kField) + kOptions + "  random_seed = 7\n");
@@ -211,7 +211,7 @@ TEST_F(SensorOnBus, AliasSelectsTheBlockAndAMissingBlockIsAWarning_D26) {
   EXPECT_EQ(values_of("UHZ_OPTIONS_SUMMARY"), std::vector<std::string>{""});
 }
 
-// ---- mail (spec 5.1, style practice 4) ----------------------------------------------------------------
+// ---- mail (docs/messages.md, style practice 4) -------------------------------------------------
 
 TEST_F(SensorOnBus, BadMailGivesARunWarningNamingItAndTheAppKeepsServing) {
   start(std::string(kField) + kOptions);
@@ -372,7 +372,7 @@ TEST_F(SensorOnBus, HazardFilesAreReadRelativeToTheMissionFile_5) {
                            ") \n     Hazard: 1\n     Benign: 2\n"));
 }
 
-// ---- geodesy: the mission's LatOrigin/LongOrigin (issue 6) ------------------------------------------
+// ---- geodesy: the mission's LatOrigin/LongOrigin ----------------------------------------------
 
 TEST_F(SensorOnBus, TheMissionsOriginPlacesLatLonOnlyNodeReports) {
   start_mission("LatOrigin = 42.358436\nLongOrigin = -71.087448\n" +

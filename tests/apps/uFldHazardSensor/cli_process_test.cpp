@@ -1,4 +1,5 @@
-// The uFldHazardSensor binary's command line (manual 10.1, 11, listing 11.4; spec 2; D29):
+// The uFldHazardSensor binary's command line (manual 10.1, 11, listing 11.4;
+// docs/uFldHazardSensor.md; D29):
 // golden --help/--example/--interface/--version texts (golden/, checked by hand against the
 // manual's listings), exit codes, the launch line, --verbose on a live server.
 #include <gtest/gtest.h>
@@ -147,7 +148,7 @@ TEST_F(SensorProcess, TerminalReportWhenAskedAndSigtermExitsZero_12) {
   stop_all();
   EXPECT_EQ(app_exit, 0);
   const std::string out = app->stdout_text();
-  // The terminal frame (spec 11): title, warnings, the body with the seed, the events.
+  // The terminal frame: title, warnings, the body with the seed, the events.
   EXPECT_NE(out.find("uFldHazardSensor shoreside"), std::string::npos) << out;
   EXPECT_NE(out.find("Configuration Warnings: 1"), std::string::npos) << out;
   EXPECT_NE(out.find("unknown parameter 'bogus_param'"), std::string::npos) << out;

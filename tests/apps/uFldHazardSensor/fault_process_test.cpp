@@ -1,4 +1,4 @@
-// uFldHazardSensor under faults (issue 12), as processes on moosdb-lite: the database killed
+// uFldHazardSensor under faults, as processes on moosdb-lite: the database killed
 // and restarted under a running sensor, a vehicle process killed mid-pass, and a client that
 // stops reading. In each the sensor must go on serving everyone else, with its state intact.
 #include <gtest/gtest.h>
@@ -93,7 +93,7 @@ class DatabaseRestart : public SensorProcess {
   }
 };
 
-TEST_F(DatabaseRestart, SensorReconnectsReregistersRepostsItsMarkersAndKeepsItsState_Issue12) {
+TEST_F(DatabaseRestart, SensorReconnectsReregistersRepostsItsMarkersAndKeepsItsState_Hardening) {
   start(kRestartBlock);
   post("UHZ_CONFIG_REQUEST", "vname=alpha,width=10,pd=1");
   ASSERT_TRUE(wait_for_value("UHZ_CONFIG_ACK_ALPHA", "vname=alpha,width=10,pd=1,pfa=1,pclass=1"));
@@ -141,7 +141,7 @@ std::string vehicle_block(const std::string& name, int x_m) {
          "  waypoints = pts={" + n(x_m) + ",0:" + n(x_m) + ",5000}\n}\n";
 }
 
-TEST_F(SensorProcess, AVehicleKilledMidPassLeavesTheOtherServed_Issue12) {
+TEST_F(SensorProcess, AVehicleKilledMidPassLeavesTheOtherServed_Hardening) {
   warp = 40.0;  // 60 m of track per real second
   std::string block = "  AppTick = 4\n  random_seed = 5\n  swath_length = 4\n"
                       "  show_hazards = false\n"
@@ -205,7 +205,7 @@ std::vector<std::string> actions_on(const MoosdbServer& server, const std::strin
   return out;
 }
 
-TEST_F(SensorProcess, AClientThatStopsReadingIsDroppedAloneAndTheSensorGoesOn_Issue12) {
+TEST_F(SensorProcess, AClientThatStopsReadingIsDroppedAloneAndTheSensorGoesOn_Hardening) {
   // A small output bound, so that the stuck client reaches it in a second.
   server_extra_args = {"--max-output-bytes=300000", "--moos_timeout=60"};
   std::string block = "  AppTick = 4\n  random_seed = 5\n  min_reset_interval = 0\n"

@@ -1,4 +1,4 @@
-// uFldHazardSensor's information texts (manual 10.1, 11; spec 2; rulings "--example") and the
+// uFldHazardSensor's information texts (manual 10.1, 11; docs/uFldHazardSensor.md) and the
 // user page: --example is valid as printed and follows the parameter table; every --interface
 // payload is accepted by our parsers; the docs list every parameter and message.
 #include <gtest/gtest.h>
@@ -109,7 +109,7 @@ TEST(Example, ListsEverySensorParameterAtItsTableDefault) {
   EXPECT_EQ(example_value(example, "AppTick"), "4");
   EXPECT_EQ(example_value(example, "CommsTick"), "4");
   EXPECT_EQ(example_value(example, "term_report_interval"), "0.4");
-  EXPECT_EQ(example_value(example, "max_appcast_events"), "20");  // spec 3.4
+  EXPECT_EQ(example_value(example, "max_appcast_events"), "20");  // the original's
   EXPECT_EQ(example_value(example, "max_appcast_run_warnings"), "10");
 }
 

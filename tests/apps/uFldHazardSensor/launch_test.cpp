@@ -1,4 +1,5 @@
-// uFldHazardSensor's command line (manual 11, listing 11.4; spec 2; D29), decided without
+// uFldHazardSensor's command line (manual 11, listing 11.4; D29),
+// decided without
 // running anything.
 #include <gtest/gtest.h>
 
@@ -23,7 +24,7 @@ TEST(Launch, InformationSwitchesInEveryForm_Spec2) {
     EXPECT_EQ(launch_for({a}).action, LaunchAction::kInterface) << a;
   for (const char* a : {"-v", "--version", "-version"})
     EXPECT_EQ(launch_for({a}).action, LaunchAction::kVersion) << a;
-  // Spec 2: there is no one-dash -interface.
+  // There is no one-dash -interface (docs/uFldHazardSensor.md, "Usage").
   EXPECT_EQ(launch_for({"m.moos", "-interface"}).action, LaunchAction::kRun);
 }
 
@@ -58,7 +59,7 @@ TEST(Launch, ABadVerboseValueIsAUsageErrorNamingIt_D29) {
 }
 
 TEST(Launch, VerboseIsNeverTheRunAliasButArgv2Is_D29) {
-  // The original took a second-place --verbose for the process name (spec 2); we do not.
+  // The original took a second-place --verbose for the process name; we do not.
   const auto cl = moos::parse_command_line({"uFldHazardSensor", "m.moos", "--verbose"});
   EXPECT_FALSE(cl.run_alias.has_value());
   EXPECT_EQ(moos::app_name_from(cl, kAppName), "uFldHazardSensor");

@@ -1,4 +1,4 @@
-// uFldHazardSensor when its database connection is lost and made again (issue 12), on the
+// uFldHazardSensor when its database connection is lost and made again, on the
 // in-process bus: the field's visuals are posted again after every reconnect, never twice to
 // the connection start-up served, and the engine's state is kept. The same with real processes
 // and a killed moosdb-lite: fault_process_test.cpp.
@@ -35,7 +35,7 @@ class SensorReconnect : public SensorOnBus {
   }
 };
 
-TEST_F(SensorReconnect, EveryReconnectPostsTheFieldsVisualsAgain_Issue12) {
+TEST_F(SensorReconnect, EveryReconnectPostsTheFieldsVisualsAgain_Hardening) {
   start(block(true));
   run_for(1.0);
   const auto markers = values_of("VIEW_MARKER");
@@ -56,7 +56,7 @@ TEST_F(SensorReconnect, EveryReconnectPostsTheFieldsVisualsAgain_Issue12) {
   EXPECT_EQ(values_of("VIEW_MARKER").size(), 6u);  // once per reconnect, not per iteration
 }
 
-TEST_F(SensorReconnect, WithoutShowHazardsAReconnectPostsNoMarkers_Issue12) {
+TEST_F(SensorReconnect, WithoutShowHazardsAReconnectPostsNoMarkers_Hardening) {
   start(block(false));
   run_for(1.0);
   lose_and_restore_connection();
@@ -64,7 +64,7 @@ TEST_F(SensorReconnect, WithoutShowHazardsAReconnectPostsNoMarkers_Issue12) {
   EXPECT_TRUE(values_of("VIEW_SEGLIST").empty());
 }
 
-TEST_F(SensorReconnect, AReconnectKeepsTheVehiclesSettings_Issue12) {
+TEST_F(SensorReconnect, AReconnectKeepsTheVehiclesSettings_Hardening) {
   start(block(true));
   post("UHZ_CONFIG_REQUEST", "vname=alpha,width=10,pd=0.9");
   run_for(kTick_s);

@@ -1,8 +1,8 @@
-// uFldHazardSensor as a process on moosdb-lite (issue 4): a scripted vehicle drives a straight
+// uFldHazardSensor as a process on moosdb-lite: a scripted vehicle drives a straight
 // track over known objects and sends the request messages; the payloads the app posts are
 // checked against values computed by hand below, and the same inputs replayed through
 // hazard_replay (same seed) give the same postings: the app adds nothing the engine did not
-// decide. Issue 13: a max=1 width is held from its grant, before any sensor request.
+// decide. The held width: a max=1 width is held from its grant, before any sensor request.
 #include <gtest/gtest.h>
 #include <signal.h>
 
@@ -110,7 +110,7 @@ std::map<std::string, std::vector<std::string>> replay(const test_support::Scrat
 // ---- scenario A: certain outcomes, exact payloads ---------------------------------------------------
 
 // pd = 1 and pclass = 1.0 make every outcome certain (detection iff u < pd with u in [0, 1);
-// answer correct iff v <= pclass, spec 10): the payloads below are exact.
+// answer correct iff v <= pclass, docs/differences.md): the payloads below are exact.
 const char* kBlockA =
     "  AppTick = 4\n"
     "  CommsTick = 4\n"
@@ -143,7 +143,8 @@ const std::vector<std::string> kDetectionsA = {"x=5,y=31,label=h1", "x=-12.35,y=
 const std::vector<std::string> kAnswersA = {"x=5,y=31,label=h1,type=hazard",
                                             "x=-12.35,y=61,label=b1,type=benign",
                                             "x=14,y=91.25,label=h2,type=hazard"};
-// Circles (spec 5.3, D19): radius 10; detection 12 vertices, white, duration = show_detections
+// Circles (docs/messages.md; D19): radius 10; detection 12 vertices, white, duration =
+// show_detections
 // (30); classification 5 vertices, yellow (hazard) / green (benign), no duration.
 std::string circle(const std::string& at, int vertices, const std::string& color, bool duration) {
   return at + ",radius=10,vertices=" + n(vertices) + (duration ? ",duration=30" : "") + ",edge_color=" +
@@ -158,7 +159,7 @@ const std::vector<std::string> kMarkersA = {
 // File order, pclass= keys, values as written (D21).
 const std::string kSummaryA = "width=20,exp=2,pclass=1.0:width=10,exp=4,pclass=0.90";
 
-TEST_F(SensorProcess, ScriptedVehicleGetsTheHandComputedPayloads_Issue4) {
+TEST_F(SensorProcess, ScriptedVehicleGetsTheHandComputedPayloads) {
   start(kBlockA);
   post("UHZ_CONFIG_REQUEST", "vname=alpha,width=15,pd=0.9");
   ASSERT_TRUE(wait_for_value("UHZ_CONFIG_ACK_ALPHA", kAck1));
@@ -256,7 +257,7 @@ std::string block_b() {
   return b;
 }
 
-TEST_F(SensorProcess, SameInputsThroughHazardReplayGiveTheSamePostings_Issue4) {
+TEST_F(SensorProcess, SameInputsThroughHazardReplayGiveTheSamePostings) {
   start(block_b());
   post("UHZ_CONFIG_REQUEST", "vname=alpha,width=20,pd=0.6");
   // pfa = 0.6^2 = 0.36 (D23).
@@ -299,9 +300,9 @@ TEST_F(SensorProcess, SameInputsThroughHazardReplayGiveTheSamePostings_Issue4) {
   EXPECT_EQ(comparable(replay(dir, log)), comparable(posted));
 }
 
-// ---- issue 13: a width limited by max=1 is held from the moment it is granted ----------------
+// ---- the held width: a width limited by max=1 is held from the moment it is granted ---------
 
-TEST_F(SensorProcess, AMaxWidthIsHeldFromItsGrantUntil600sWithoutARequest_Issue13) {
+TEST_F(SensorProcess, AMaxWidthIsHeldFromItsGrantUntil600sWithoutARequest) {
   warp = 100.0;  // 600 MOOS seconds in 6 real ones
   start("  sensor_config = width=10, exp=4, pclass=0.8\n"
         "  sensor_config = width=25, exp=4, pclass=0.8, max=1\n"

@@ -51,7 +51,7 @@ inline std::string process_mission(int port, const std::string& block,
 /// The app's name, the source of its postings in the server's log.
 inline constexpr const char* kApp = "uFldHazardSensor";
 
-/// Integers print without decimals under FMT (spec 0): FMT(32, 1) = "32".
+/// Integers print without decimals under FMT: FMT(32, 1) = "32".
 inline std::string n(int v) { return std::to_string(v); }
 
 /// A NODE_REPORT at (x, y), speed 1 m/s, heading `heading` degrees.

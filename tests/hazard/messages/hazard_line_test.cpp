@@ -1,4 +1,4 @@
-// The hazard object line (manual 5, spec 4.1/4.4, rulings "Hazard lines", validation table).
+// The hazard object line (manual 5, docs/hazard-file.md).
 #include <gtest/gtest.h>
 
 #include "hazard/messages/hazard_line.hpp"

@@ -1,9 +1,10 @@
-"""A pymoos2 vehicle plays against uFldHazardSensor on moosdb-lite (issue 4).
+"""A pymoos2 vehicle plays against uFldHazardSensor on moosdb-lite.
 
-pymoos2 0.1.0 is a synchronous client written against the reference MOOSDB (wire spec 9). The
-vehicle asks for a sensor setting, streams node reports and sensor requests along a straight
-track over two objects, requests classifications and an AppCast, and checks every reply against
-values computed by hand below. pd = 1 and pclass = 1.0 make every outcome certain.
+pymoos2 0.1.0 is a synchronous client written against the reference MOOSDB (docs/protocol.md
+section 9). The vehicle asks for a sensor setting, streams node reports and sensor requests
+along a straight track over two objects, requests classifications and an AppCast, and checks
+every reply against values computed by hand below. pd = 1 and pclass = 1.0 make every outcome
+certain.
 
 Usage: python test_hazard_sensor_pymoos2.py --server=/path/to/moosdb-lite
                                             --sensor=/path/to/uFldHazardSensor

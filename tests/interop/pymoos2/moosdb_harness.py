@@ -9,7 +9,7 @@ Contract:
   SIGKILL after a bounded wait).
 - pymoos2_client() returns a started pymoos2 MOOSCommClient that is stopped at exit.
 - wait_until() polls a condition with a bounded timeout; every wait in these tests is bounded.
-- An exception in a pymoos2 comms thread silently ends that client (wire spec 9.2: e.g. a
+- An exception in a pymoos2 comms thread silently ends that client (docs/protocol.md 9.2: e.g. a
   string that is not UTF-8). Such exceptions are recorded in `thread_errors` so a test can
   fail on them; only the known race of pymoos2's own stop() (it clears the socket while its
   thread is still reading) is ignored, for clients that were stopped on purpose.
@@ -192,7 +192,7 @@ def confirm_processed(client, box):
     """Returns once the server has processed everything `client` queued before this call.
 
     The client registers for a fresh variable and then posts it; the server handles one
-    client's messages in order and delivers a publisher's own posts (spec 5.3), so seeing the
+    client's messages in order and delivers a publisher's own posts (protocol.md 5.3), so seeing the
     post come back proves that the earlier messages were handled. `box` keeps collecting.
     """
     key = "SYNC_POINT_%d" % next(_sync_points)

@@ -20,7 +20,7 @@ from moosdb_harness import (ARRIVAL_TIMEOUT_S, MoosdbLite, Mailbox, confirm_proc
 
 SERVER = None
 CLI = None
-TIME_STAMP = 1700000000.25  # exactly representable (spec 8); differences print exactly
+TIME_STAMP = 1700000000.25  # exactly representable (protocol.md 8); differences print exactly
 WATCH_TIMEOUT_S = 20
 PROCESS_TIMEOUT_S = 30
 
@@ -112,7 +112,7 @@ class MoosCliAndPymoos2(unittest.TestCase):
     def test_moos_cli_wildcard_watch_sees_pymoos2_posts(self):
         watch = self.start_watch("cliWild", 2, "PYC_W_*")
         # No need to wait for the wildcard registration: one that arrives after the posts
-        # still delivers them, as snapshots in the same order (spec 5.5).
+        # still delivers them, as snapshots in the same order (protocol.md 5.5).
         self.py.notify("PYC_OTHER", 1.0)
         self.py.notify("PYC_W_1", 2.0)
         self.py.notify("PYC_W_2", "two")

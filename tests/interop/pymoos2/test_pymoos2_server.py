@@ -1,7 +1,7 @@
 """pymoos2 0.1.0 (a foreign, pure-Python MOOS client) against moosdb-lite.
 
 These tests are the proof that moosdb-lite speaks the MOOS protocol rather than a private
-dialect: pymoos2 was written against the reference MOOSDB (wire spec section 9), and here
+dialect: pymoos2 was written against the reference MOOSDB (docs/protocol.md section 9), and here
 two pymoos2 clients exchange doubles, strings and binary data through our server, with
 exact values, types, sources, time stamps and order.
 
@@ -23,9 +23,9 @@ from moosdb_harness import (MoosdbLite, Mailbox, confirm_processed, pymoos2_clie
 
 SERVER = None
 COMMUNITY = "interop"
-# Same host, same clock: the WELCOME skew must be small (wire spec 1.8).
+# Same host, same clock: the WELCOME skew must be small (docs/protocol.md 1.8).
 SKEW_TOLERANCE_S = 1.0
-TIME_STAMP = 1700000000.25  # a fixed, exactly representable time stamp (spec 8)
+TIME_STAMP = 1700000000.25  # a fixed, exactly representable time stamp (protocol.md 8)
 
 
 def connected_pair(server):

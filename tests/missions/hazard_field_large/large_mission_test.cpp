@@ -1,4 +1,4 @@
-// The large hazard field end to end (issue 5): missions/hazard_field_large/launch.sh at warp 400
+// The large hazard field end to end: missions/hazard_field_large/launch.sh at warp 400
 // on moosdb-lite: 10,000 generated objects, four vehicles in parallel, the fleet's answer in
 // deb's report. Checked: the field is the one gen_hazards promises for the seed, every process
 // stopped and none is left, each vehicle was graded, deb's report carries the hand-overs of the

@@ -1,4 +1,4 @@
-// The Jake mission end to end (issue 5; manual 13; rulings D33, D34, "Missions and tests"):
+// The Jake mission end to end (manual 13; rulings D33, D34, "Missions and tests"):
 // missions/jake/launch.sh runs once at a high warp on moosdb-lite, then its run folder is
 // checked:
 // - every process started (connected to the MOOSDB) and stopped (closed its connection), and no
@@ -11,7 +11,7 @@
 //   every pass detects: pfa = 1^exp = 1);
 // - betty's classification answers came at the configured min_classify_interval;
 // - every HAZARDSET_EVAL the grader posted matches the score recomputed here from the logged
-//   HAZARDSET_REPORT and the hazard file (spec 14.2, by hand, not with libmission);
+//   HAZARDSET_REPORT and the hazard file (docs/mission-logic.md; by hand, not with libmission);
 // - summary.json and the picture are in the run folder.
 #include <gtest/gtest.h>
 
@@ -275,7 +275,7 @@ TEST_F(JakeMission, BettysClassificationsCameAtTheConfiguredInterval) {
   }
 }
 
-// ---- the grader (spec 14.2) ----------------------------------------------------------------
+// ---- the grader (docs/mission-logic.md) -------------------------------------------------------
 
 TEST_F(JakeMission, EveryEvaluationMatchesTheScoreRecomputedFromTheLog) {
   constexpr double kMissed = 100.0, kFalseAlarm = 10.0;  // the mission's penalties

@@ -44,7 +44,7 @@ class RenderSynthetic(unittest.TestCase):
         b2 = re.search(r'data-label="b2" points="([^"]*)" fill="[^"]*" fill-opacity="([^"]*)"',
                        self.svg)
         self.assertEqual(len(b2.group(1).split()), 3)         # default benign shape: triangle
-        self.assertEqual(b2.group(2), "0.50")                 # no hr: 1 - 0.5 (spec 5.4)
+        self.assertEqual(b2.group(2), "0.50")                 # no hr: 1 - 0.5 (docs/messages.md)
         h1 = re.search(r'data-label="h1" points="[^"]*" fill="([^"]*)"', self.svg)
         self.assertEqual(h1.group(1), "green")                # D17
 

@@ -12,7 +12,7 @@ export const KIND_OF_VAR = {
 };
 export const KINDS = ['polygon', 'circle', 'seglist', 'marker', 'point'];
 const NODE_REPORT_VARS = new Set(['NODE_REPORT', 'NODE_REPORT_LOCAL']);
-/** uFldHazardMetric's verdict per report (spec 14.2): the score table's rows. */
+/** uFldHazardMetric's verdict per report (docs/mission-logic.md): the score table's rows. */
 const SCORE_VAR = 'HAZARDSET_EVAL';
 /** Bounds: unlabelled postings per kind (a ring of the newest), default trail length. */
 export const MAX_UNLABELLED = 2000;  // pWebViewer's unlabelled_ring default

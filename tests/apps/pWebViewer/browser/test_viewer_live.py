@@ -1,4 +1,4 @@
-"""A live moosdb-lite mission in a real browser, then the replay of its .alog (issue 15).
+"""A live moosdb-lite mission in a real browser, then the replay of its .alog.
 
 moosdb-lite (logging every posting), uFldHazardSensor with four objects, pWebViewer, and a
 pymoos2 vehicle that drives along x = 0 with a certain sensor (pd = 1). The page must show the
