@@ -7,8 +7,9 @@
 //   file in the same folder (`<FILE>.tmp.<pid>.<n>`), which commit() flushes to disk (fsync)
 //   and renames over FILE, so a reader sees the old file or the whole new one, never half of
 //   it; until commit() nothing at FILE changes, and an OutputFile dropped without commit()
-//   removes its temporary. A file that existed keeps its permission bits; a new one gets 0666
-//   minus the umask, as from a shell's redirection. With OutputMode::kInPlace (a log that grows
+//   removes its temporary. A file that existed keeps its permission bits (not its owner, nor
+//   its other hard links, which keep the old content); a new one gets 0666 minus the umask, as
+//   from a shell's redirection. With OutputMode::kInPlace (a log that grows
 //   while it runs, which a reader may follow) FILE itself is created or truncated at open.
 // - A symbolic link: the link is followed (a chain of them too, and a relative target is taken
 //   from the link's folder) and the rule is applied to the path it leads to, so the link stays

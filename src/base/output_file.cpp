@@ -92,7 +92,8 @@ int create_temporary(const std::string& target, std::string& name) {
 }
 
 /// Opens a device or FIFO for writing, never creating or truncating it. Non-blocking, so that a
-/// FIFO without a reader fails (ENXIO) instead of hanging: retried until `wait_s` has passed.
+/// FIFO without a reader fails (ENXIO) instead of hanging: retried until kFifoReaderWait_s has
+/// passed, since a reader started beside the program may open it a moment late.
 int open_through(const std::string& target, bool fifo) {
   const auto give_up = std::chrono::steady_clock::now() +
                        std::chrono::duration<double>(fifo ? kFifoReaderWait_s : 0.0);
@@ -147,7 +148,8 @@ std::string OutputFile::open_target(OutputMode mode) {
   } else if (mode == OutputMode::kReplace) {
     fd_ = create_temporary(target_, temporary_);
     if (fd_ < 0) return std::strerror(errno);
-    // Replacing a file keeps its permissions (the umask applies only to a new one).
+    // Replacing a file keeps its permissions (the umask applies only to a new one). Best
+    // effort: a file of another owner may refuse it, and the new file is still whole.
     if (exists) ::fchmod(fd_, info.st_mode & 07777);
   } else {
     // O_NONBLOCK: should the path have become a FIFO since stat(), this cannot hang.
