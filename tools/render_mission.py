@@ -91,7 +91,7 @@ def main(argv=None):
         return 1
     if opts.no_png:
         return 0
-    return 0 if write_png(opts.svg, opts.png) else 1
+    return 0 if write_png(svg, opts.svg, opts.png) else 1
 
 
 if __name__ == "__main__":

@@ -20,7 +20,8 @@ and prints the score table. Standard library only; the files are read by tools/m
 (the rules of the C++ readers: a value that is not a finite number, `nan` included, is not a
 number; such a field of an evaluation stays text and shows as "-"). Bad lines are skipped and
 counted; a missing evaluation is shown as "-" (the table says which vehicle has none). Exit
-status 0, or 1 when the log or the hazard file cannot be read.
+status 0, or 1 when the log or the hazard file cannot be read or summary.json cannot be written
+(--out follows tools/mission_files/output_file.py: a device, FIFO or link is written through).
 """
 
 import argparse
@@ -32,6 +33,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 from mission_files.alog import read_alog  # noqa: E402  (tools/mission_files)
 from mission_files.hazard_file import read_hazard_file  # noqa: E402
 from mission_files.messages import hazard_handover, hazardset_report  # noqa: E402
+from mission_files.output_file import write_output_file  # noqa: E402
 from mission_files.run_files import read_cpu  # noqa: E402
 from mission_files.text import json_number, key_values  # noqa: E402
 
@@ -163,9 +165,13 @@ def main(argv):
         'vehicles': vehicles,
         'processes': read_cpu(a.cpu) if a.cpu else [],
     }
-    with open(a.out, 'w', encoding='utf-8') as f:
-        json.dump(summary, f, indent=2, sort_keys=True)
-        f.write('\n')
+    try:
+        # The rule of every user-named output: replaced atomically, a device or FIFO written
+        # through, a link kept (tools/mission_files/output_file.py).
+        write_output_file(a.out, json.dumps(summary, indent=2, sort_keys=True) + '\n')
+    except OSError as e:
+        print('mission_summary: %s' % e, file=sys.stderr)
+        return 1
     print()
     print(a.title)
     print('seed %s, warp %g, MOOSDB %s: %s s simulated in %s s' % (

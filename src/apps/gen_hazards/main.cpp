@@ -10,10 +10,10 @@
 
 #include "app_support.hpp"
 #include "base/diagnostics.hpp"
+#include "base/output_file.hpp"
 #include "GenHazards_Info.hpp"
 #include "generator.hpp"
 #include "options.hpp"
-#include "output_file.hpp"
 
 namespace {
 
@@ -49,7 +49,7 @@ int main(int argc, char** argv) {
   }
   const std::string& text = std::get<std::string>(file);
   if (!cli.output_path) return write_stdout(text);
-  if (auto error = write_file_atomically(*cli.output_path, text)) {
+  if (auto error = base::write_output_file(*cli.output_path, text)) {
     print_error(*error);
     return kExitCannotWrite;
   }

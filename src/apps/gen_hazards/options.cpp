@@ -222,8 +222,9 @@ const std::vector<OptionSpec>& option_table() {
        apply_seed, false},
       {"--output",
        {"--output=FILE",
-        "Write the field to FILE instead of standard output. FILE appears complete or not at "
-        "all: it is written to a temporary file in the same folder and renamed.",
+        "Write the field to FILE instead of standard output. A regular FILE appears complete "
+        "or not at all: it is written to a temporary file in the same folder and renamed. A "
+        "device or FIFO is written through; a link is followed and stays a link.",
         "standard output", "a file name"},
        apply_output, false},
   };

@@ -1,12 +1,36 @@
 // hazard_replay: the uFldHazardSensor engine driven offline by an .alog of inputs.
-#include <fstream>
 #include <iostream>
 
 #include "HazardReplay_Info.hpp"
 #include "base/diagnostics.hpp"
 #include "base/version.hpp"
+#include "base/output_file.hpp"
 #include "args.hpp"
 #include "replay.hpp"
+
+namespace {
+
+/// The replay written to --output (base/output_file.hpp): a regular file replaced only when the
+/// replay succeeded (else it stays as it was), a device or FIFO written through.
+int replay_to_file(const hazard_replay::Options& options) {
+  std::string problem;
+  auto file = base::OutputFile::open(*options.output_path, base::OutputMode::kReplace, problem);
+  if (!file) {
+    std::cerr << "hazard_replay: --output: " << problem << "\n";
+    return 1;
+  }
+  base::OutputFileBuffer buffer(*file);
+  std::ostream out(&buffer);
+  const int status = hazard_replay::run(options, out, std::cerr);
+  if (status != 0) return status;
+  if (!file->commit(problem)) {
+    std::cerr << "hazard_replay: --output: " << problem << "\n";
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   // Events can be many (one per detection): buffer standard error instead of one write each.
@@ -31,16 +55,5 @@ int main(int argc, char** argv) {
     return 0;
   }
   if (!options.output_path) return hazard_replay::run(options, std::cout, std::cerr);
-  std::ofstream file(*options.output_path, std::ios::binary | std::ios::trunc);
-  if (!file) {
-    std::cerr << "hazard_replay: cannot write --output file '" << *options.output_path << "'\n";
-    return 1;
-  }
-  const int status = hazard_replay::run(options, file, std::cerr);
-  file.close();
-  if (!file) {
-    std::cerr << "hazard_replay: writing '" << *options.output_path << "' failed\n";
-    return 1;
-  }
-  return status;
+  return replay_to_file(options);
 }

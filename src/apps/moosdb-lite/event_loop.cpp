@@ -23,6 +23,7 @@
 #include <cstring>
 #include <vector>
 
+#include "base/output_file.hpp"
 #include "moos/clock.hpp"
 
 namespace moosdb_lite {
@@ -55,20 +56,12 @@ std::string peer_name(const sockaddr_in& addr) {
   return std::string(host) + ":" + std::to_string(ntohs(addr.sin_port));
 }
 
+/// The bound port, one line, by the rule of every user-named output (base/output_file.hpp): a
+/// script waiting for the file never reads half a number, and a device or FIFO stays one.
 bool write_port_file(const std::string& path, int port, std::string* error) {
-  const std::string temporary = path + ".tmp";
-  std::FILE* f = std::fopen(temporary.c_str(), "w");
-  if (f == nullptr) {
-    *error = "cannot write port file " + temporary + ": " + errno_text();
-    return false;
-  }
-  std::fprintf(f, "%d\n", port);
-  const bool written = std::fclose(f) == 0;
-  if (!written || std::rename(temporary.c_str(), path.c_str()) != 0) {
-    *error = "cannot write port file " + path + ": " + errno_text();
-    return false;
-  }
-  return true;
+  const auto problem = base::write_output_file(path, std::to_string(port) + "\n");
+  if (problem) *error = "--port-file: " + *problem;
+  return !problem;
 }
 
 }  // namespace

@@ -4,8 +4,9 @@
 //
 // Contract:
 // - listen() binds an IPv4 TCP listener (SO_REUSEADDR, backlog 50 as the reference DB),
-//   and writes the bound port to the port file (written to a temporary name, then renamed,
-//   so a reader never sees a partial number).
+//   and writes the bound port to the port file by the rule of every user-named output
+//   (base/output_file.hpp: a regular file is written to a temporary name, then renamed, so a
+//   reader never sees a partial number; a device or FIFO is written through).
 // - run() serves until `stop_requested` becomes non-zero (the signal handler also writes a
 //   byte to `wake_fd` so poll() returns at once). Every accepted socket gets TCP_NODELAY
 //   (protocol.md 1.1). Reads are bounded per connection per round, so one flooding client cannot

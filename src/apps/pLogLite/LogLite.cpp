@@ -38,8 +38,24 @@ LogLite::LogLite() : mission_app::MissionApp(logger_traits()) {}
 LogLite::~LogLite() { close(); }
 
 void LogLite::close() {
-  if (out_) std::fclose(out_);
-  out_ = nullptr;
+  std::string problem;
+  if (out_ && !out_->commit(problem)) write_failed(problem);
+  out_.reset();
+}
+
+void LogLite::write_failed(const std::string& problem) {
+  if (write_failed_) return;
+  write_failed_ = true;
+  report_run_warning(problem);
+}
+
+std::string LogLite::open_log(const std::string& name) {
+  std::string problem;
+  out_ = base::OutputFile::open(file_path_, base::OutputMode::kInPlace, problem);
+  const std::string header = moos::alog_header(name + ".alog", start_time());
+  if (out_ && out_->write(header, problem) && out_->flush(problem)) return "";
+  out_.reset();
+  return problem;
 }
 
 std::string LogLite::apply(const moos::ConfigLine& line) {
@@ -85,13 +101,10 @@ bool LogLite::on_start_up() {
   std::error_code ignored;
   std::filesystem::create_directories(folder, ignored);
   file_path_ = (folder / (name + ".alog")).string();
-  out_ = std::fopen(file_path_.c_str(), "w");
-  if (!out_) {
-    report_config_warning("cannot create the log file '" + file_path_ + "'");
+  if (const std::string problem = open_log(name); !problem.empty()) {
+    report_config_warning("the log file: " + problem);
     return false;
   }
-  const std::string header = moos::alog_header(name + ".alog", start_time());
-  std::fwrite(header.data(), 1, header.size(), out_);
 
   if (wildcard_logging_) register_wildcard("*", "*");
   for (const LogRequest& r : requests_) register_variable(r.variable, r.interval_s);
@@ -109,19 +122,15 @@ void LogLite::on_new_mail(const std::vector<moos::Message>& mail) {
   for (const moos::Message& m : mail) {
     if (omitted(m.key)) continue;
     const std::string line = moos::format_alog_line(moos::alog_entry(m, start_time()));
-    if (std::fwrite(line.data(), 1, line.size(), out_) != line.size() && !write_failed_) {
-      write_failed_ = true;
-      report_run_warning("cannot write to " + file_path_);
-    }
+    std::string problem;
+    if (!out_->write(line, problem)) write_failed(problem);
     ++lines_written_;
   }
 }
 
 void LogLite::on_iterate() {
-  if (out_ && std::fflush(out_) != 0 && !write_failed_) {
-    write_failed_ = true;
-    report_run_warning("cannot write to " + file_path_);
-  }
+  std::string problem;
+  if (out_ && !write_failed_ && !out_->flush(problem)) write_failed(problem);
 }
 
 std::string LogLite::build_report() {

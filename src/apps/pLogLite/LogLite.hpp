@@ -19,13 +19,16 @@
 //   Framework mail the application base consumes (APPCAST_REQ) is not written.
 // - The file is flushed every iteration and closed when the app ends. If it cannot be created,
 //   start-up fails (exit 1) with a message naming the file: a logger that logs nothing must not
-//   look alive.
+//   look alive. It is opened by the rule of every user-named output (base/output_file.hpp,
+//   kInPlace): a regular file grows in place, a device or FIFO named `<file>.alog` is written
+//   through, a link is followed and stays a link, a folder is refused; the header is written at
+//   once, so a full device or a FIFO nobody reads fails at start-up too.
 
-#include <cstdio>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "base/output_file.hpp"
 #include "mission_app.hpp"
 
 namespace plog_lite {
@@ -65,6 +68,10 @@ class LogLite final : public mission_app::MissionApp {
   /// Applies one line of the block: "" when accepted, else the configuration warning.
   std::string apply(const moos::ConfigLine& line);
   bool omitted(const std::string& variable) const;
+  /// Opens file_path_ and writes the header: "" on success, else the problem.
+  std::string open_log(const std::string& name);
+  /// One run warning for the first write error (the log keeps what was written before it).
+  void write_failed(const std::string& problem);
   void close();
 
   std::string path_ = ".";
@@ -74,7 +81,7 @@ class LogLite final : public mission_app::MissionApp {
   std::vector<LogRequest> requests_;
   std::vector<std::string> omit_patterns_;
 
-  std::FILE* out_ = nullptr;
+  std::optional<base::OutputFile> out_;
   std::string file_path_;
   long lines_written_ = 0;
   bool write_failed_ = false;

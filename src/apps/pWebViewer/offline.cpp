@@ -1,10 +1,10 @@
 #include "offline.hpp"
 
 #include <csignal>
-#include <fstream>
 #include <iostream>
 
 #include "WebViewer.hpp"
+#include "base/output_file.hpp"
 #include "export_html.hpp"
 #include "replay_log.hpp"
 #include "web_files.hpp"
@@ -70,11 +70,10 @@ int export_file(const std::string& log_path, const std::string& output, OfflineS
     err << kAppName << ": " << error << "\n";
     return 1;
   }
-  std::ofstream file(output, std::ios::binary);
-  file << *html;
-  file.close();
-  if (!file) {
-    err << kAppName << ": cannot write " << output << "\n";
+  // The rule of every user-named output: a regular file replaced atomically, a device or FIFO
+  // written through, a link followed (base/output_file.hpp).
+  if (const auto problem = base::write_output_file(output, *html)) {
+    err << kAppName << ": --output: " << *problem << "\n";
     return 1;
   }
   out << kAppName << ": wrote " << output << " (" << log->mail.size() << " postings of "

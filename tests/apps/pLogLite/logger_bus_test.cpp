@@ -125,7 +125,8 @@ TEST_F(LoggerOnBus, AFileThatCannotBeCreatedFailsTheStartUp) {
   EXPECT_FALSE(bus.start(*app, kAppName,
                          mission_text(kAppName, "  path = " + (bus.dir / "blocker").string() +
                                                     "\n  wildcard_logging = true\n")));
-  EXPECT_TRUE(any_contains(app->appcast().config_warnings(), "cannot create the log file"));
+  EXPECT_TRUE(any_contains(app->appcast().config_warnings(),
+                           "the log file: cannot write '" + (bus.dir / "blocker").string() + "/"));
 }
 
 TEST(LoggerParse, LogRequests) {
