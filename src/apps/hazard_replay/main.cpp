@@ -3,8 +3,8 @@
 
 #include "HazardReplay_Info.hpp"
 #include "base/diagnostics.hpp"
-#include "base/version.hpp"
 #include "base/output_file.hpp"
+#include "base/version.hpp"
 #include "args.hpp"
 #include "replay.hpp"
 
