@@ -72,13 +72,8 @@ def outside_references(text):
 
 def prose_lines(text):
     """(line number, line) outside fenced code blocks, with code spans blanked."""
-    inside = False
-    for number, line in enumerate(text.splitlines(), 1):
-        if FENCE.match(line):
-            inside = not inside
-            continue
-        if not inside:
-            yield number, CODE_SPAN.sub(lambda m: " " * len(m.group(0)), line)
+    for number, line in prose_lines_keep_code(text):
+        yield number, CODE_SPAN.sub(lambda m: " " * len(m.group(0)), line)
 
 
 def slug(heading):
