@@ -12,7 +12,6 @@
 #include <climits>
 #include <cstdint>
 #include <cstdio>
-#include <cstring>
 #include <iostream>
 #include <mutex>
 #include <streambuf>
@@ -66,7 +65,9 @@ std::size_t piece_length(std::string_view text) {
 }
 
 /// A stream buffer that hands whole lines to standard_writer(fd) (a line longer than the limit
-/// goes in parts). Never destroyed: the streams flush it at exit.
+/// goes in parts) when the stream is flushed (std::cerr flushes after every output, unless a
+/// program turns unitbuf off to gather its lines, as hazard_replay does) or once kGatherBytes
+/// are pending. Never destroyed: the streams flush it at exit.
 class DiagnosticBuffer : public std::streambuf {
  public:
   explicit DiagnosticBuffer(int fd) : fd_(fd) {}
@@ -81,9 +82,7 @@ class DiagnosticBuffer : public std::streambuf {
   std::streamsize xsputn(const char* s, std::streamsize n) override {
     std::lock_guard<std::mutex> lock(mutex_);
     pending_.append(s, static_cast<std::size_t>(n));
-    if (std::memchr(s, '\n', static_cast<std::size_t>(n)) || pending_.size() >= kLongLine) {
-      write_lines();
-    }
+    if (pending_.size() >= kGatherBytes) write_lines();
     return n;
   }
   int sync() override {
@@ -93,6 +92,7 @@ class DiagnosticBuffer : public std::streambuf {
   }
 
  private:
+  static constexpr std::size_t kGatherBytes = 16 * 1024;
   static constexpr std::size_t kLongLine = 64 * 1024;
 
   /// The complete lines pending, or everything once a line is too long to wait for its end.

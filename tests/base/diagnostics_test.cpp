@@ -193,5 +193,29 @@ TEST(Diagnostics, AProgramWhoseStandardErrorNobodyReadsRunsToItsEnd) {
   expect_whole_lines(drain(pipe.read));
 }
 
+// A program that turns unitbuf off (hazard_replay, with an event per detection) gathers its
+// lines: nothing is written until the stream is flushed, then every line at once.
+TEST(Diagnostics, AStreamWithoutUnitbufWritesItsLinesWhenFlushed) {
+  Ends pipe;
+  make_pipe(pipe);
+  const int write_end = pipe.write;
+  const int read_end = pipe.read;
+  const int status = in_child([write_end, read_end] {
+    ::dup2(write_end, STDERR_FILENO);
+    install_nonblocking_diagnostics();
+    std::cerr.unsetf(std::ios::unitbuf);
+    for (int i = 0; i < 10; ++i) std::cerr << kLine;
+    if (!drain(read_end).empty()) std::_Exit(3);
+    std::cerr.flush();
+    if (drain(read_end) != [] {
+          std::string ten;
+          for (int i = 0; i < 10; ++i) ten += kLine;
+          return ten;
+        }())
+      std::_Exit(4);
+  });
+  EXPECT_EQ(status, 0);
+}
+
 }  // namespace
 }  // namespace base
