@@ -42,6 +42,7 @@ DEBIAN_PACKAGES=(
   libcpp-httplib-dev chromium
   clang libclang-rt-14-dev
   help2man dpkg-dev file lintian
+  jq parallel            # docs/performance.md's study examples, run by the docs test
 )
 # playwright drives Debian's chromium in pWebViewer's browser tests (no browser download).
 PYPI_PACKAGES=(pymoos2==0.1.0 playwright==1.65.2)

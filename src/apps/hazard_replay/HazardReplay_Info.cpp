@@ -4,7 +4,7 @@ namespace hazard_replay {
 
 std::string usage_line() {
   return "Usage: hazard_replay CONFIG.moos INPUT.alog [--alias=NAME] "
-         "[--seed=N | --seeds=A..B [--score]] [--until=T] [--output=OUT.alog]";
+         "[--seed=N | --seeds=A..B [--score]] [--until=T] [--output=OUT.alog] [--NAME=value ...]";
 }
 
 std::string help_text() {
@@ -31,6 +31,8 @@ std::string help_text() {
          "                     hazard_file is the truth); left out when no report is accepted\n"
          "  --until=T          stop at time T (input time base) instead of the last input\n"
          "  --output=OUT.alog  write the postings to OUT.alog instead of standard output\n"
+         "  --NAME=value       $(NAME) in CONFIG.moos is value, as on a MOOS app's command\n"
+         "                     line (NAME starts with a capital letter)\n"
          "  --help, -h         this text\n"
          "  --version, -v      the release, then exit\n"
          "\n"

@@ -6,7 +6,9 @@
 // --version (-v, -version). Otherwise the
 // first problem in argument order is the error, naming the argument: a refused value
 // ("--seed needs a whole number in [0, 2^64): '--seed=x'"), an unknown switch or one without
-// its value ("unknown option '--seed'"), then missing or extra files.
+// its value ("unknown option '--seed'"), then missing or extra files. `--NAME=value` with NAME
+// starting with a capital letter is no switch: it gives `$(NAME)` in CONFIG.moos, as a MOOS
+// app's command line does (missions/jake/jake.moos needs --PORT, --WARP, --SEED, --VIEW_PORT).
 
 #include <optional>
 #include <string>

@@ -136,7 +136,10 @@ constexpr double kMaxIterations = 1e8;
 
 int run(const Options& options, std::ostream& out, std::ostream& err) {
   std::vector<moos::MissionError> mission_errors;
-  const auto mission = moos::MissionFile::load(options.config_path, {}, &mission_errors);
+  moos::MissionOptions mission_options;
+  mission_options.substitutions = options.substitutions;
+  const auto mission =
+      moos::MissionFile::load(options.config_path, mission_options, &mission_errors);
   if (!mission) {
     err << "hazard_replay: cannot read mission file '" << options.config_path << "'\n";
     return 1;

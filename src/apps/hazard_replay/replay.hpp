@@ -22,6 +22,7 @@
 #include <cstdint>
 #include <functional>
 #include <iosfwd>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -57,6 +58,9 @@ struct Options {
   bool score = false;
   std::optional<double> until_s;
   std::optional<std::string> output_path;
+  /// `--NAME=value` arguments (NAME starting with a capital letter): `$(NAME)` in CONFIG.moos,
+  /// as a MOOS app takes them from pAntler's command line.
+  std::map<std::string, std::string> substitutions;
   bool help = false;
   bool version = false;  ///< --version: print the release and exit
 };

@@ -1,6 +1,9 @@
 // hazard_replay's command line: exactly the form; each bad option named.
 #include <gtest/gtest.h>
 
+#include <map>
+#include <string>
+
 #include "HazardReplay_Info.hpp"
 #include "args.hpp"
 #include "doc_tables.hpp"
@@ -53,6 +56,25 @@ TEST(ReplayArgs, BadArgumentsAreNamed) {
     const ParsedArgs p = parse_args(c.args);
     EXPECT_FALSE(p.options);
     EXPECT_NE(p.error.find(c.error), std::string::npos) << p.error;
+  }
+}
+
+TEST(ReplayArgs, CapitalisedNameValueArgumentsAreMissionSubstitutions) {
+  const ParsedArgs p =
+      parse_args({"--PORT=9000", "m.moos", "in.alog", "--SEED=3", "--View_2=a=b", "--seed=4"});
+  ASSERT_TRUE(p.options) << p.error;
+  const std::map<std::string, std::string> expected = {
+      {"PORT", "9000"}, {"SEED", "3"}, {"View_2", "a=b"}};
+  EXPECT_EQ(p.options->substitutions, expected);
+  EXPECT_EQ(p.options->seed, 4u);  // the switch, not the macro of the same name in capitals
+  EXPECT_EQ(p.options->config_path, "m.moos");
+}
+
+TEST(ReplayArgs, LowerCaseOrMalformedNameValueArgumentsStayErrors) {
+  for (const char* arg : {"--port=9000", "--P-ORT=1", "--PORT", "--_X=1"}) {
+    const ParsedArgs p = parse_args({"m.moos", "in.alog", arg});
+    EXPECT_FALSE(p.options) << arg;
+    EXPECT_NE(p.error.find(arg), std::string::npos) << p.error;
   }
 }
 
