@@ -7,7 +7,8 @@
 #   ./build.sh test     install dependencies, then every test phase CI runs, in order (each
 #                       builds its own preset): release (the suite, warnings as errors),
 #                       sanitize (the whole suite again under ASan + UBSan, halting), fuzz (each
-#                       fuzz target for HAZARD_FUZZ_SECONDS seconds on its seed corpus, default 20)
+#                       fuzz target for HAZARD_FUZZ_SECONDS seconds on its seed corpus, default 20,
+#                       HAZARD_JOBS at a time)
 #                       HAZARD_TEST_PHASES="release sanitize" runs only the phases named
 #   ./build.sh test-release | test-sanitize | test-fuzz   one phase
 #   ./build.sh build    install dependencies and build only
@@ -172,22 +173,33 @@ test_phase_sanitize() {
   run_tests
 }
 
-# Runs every fuzz target for FUZZ_SECONDS on its seed corpus (fuzz/corpus/<target>); inputs the
+# Runs one fuzz target for FUZZ_SECONDS on its seed corpus (fuzz/corpus/<target>); inputs the
 # run finds go to build/fuzz/corpus/<target>, a crashing input to build/fuzz/artifacts/. Any
-# crash, leak, sanitizer report or input slower than 10 s fails the phase.
+# crash, leak, sanitizer report or input slower than 10 s fails it.
+fuzz_target() {
+  local program="$1" artifacts="$2" target="${1##*/fuzz_}"
+  mkdir -p "$BUILD_DIR/corpus/$target"
+  "$program" -max_total_time="$FUZZ_SECONDS" -timeout=10 -rss_limit_mb=2048 \
+    -print_final_stats=1 -artifact_prefix="$artifacts/$target-" \
+    "$BUILD_DIR/corpus/$target" "$HERE/fuzz/corpus/$target" >"$BUILD_DIR/$target.log" 2>&1
+}
+
+# Every fuzz target, JOBS at a time (each is one process on one core).
 test_phase_fuzz() {
   use_preset fuzz
   configure_and_build
   local artifacts="$BUILD_DIR/artifacts" failed=() program target
+  local -A pids=()
   mkdir -p "$artifacts"
   for program in "$BUILD_DIR"/fuzz/fuzz_*; do
     target="${program##*/fuzz_}"
-    mkdir -p "$BUILD_DIR/corpus/$target"
+    while [ "$(jobs -rp | wc -l)" -ge "$JOBS" ]; do wait -n || true; done
     say "fuzzing $target for ${FUZZ_SECONDS}s"
-    if ! "$program" -max_total_time="$FUZZ_SECONDS" -timeout=10 -rss_limit_mb=2048 \
-          -print_final_stats=1 -artifact_prefix="$artifacts/$target-" \
-          "$BUILD_DIR/corpus/$target" "$HERE/fuzz/corpus/$target" \
-          >"$BUILD_DIR/$target.log" 2>&1; then
+    fuzz_target "$program" "$artifacts" &
+    pids[$target]=$!
+  done
+  for target in "${!pids[@]}"; do
+    if ! wait "${pids[$target]}"; then
       say "fuzz target $target failed (log: $BUILD_DIR/$target.log)"
       tail -n 40 "$BUILD_DIR/$target.log" >&2
       failed+=("$target")
