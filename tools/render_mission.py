@@ -11,7 +11,7 @@ What is drawn (legend in docs/mission-logic.md, "The picture"):
     else UHZ_MISSION_PARAMS `search_region=`);
   - every object of the hazard file in the original's marker styles: VIEW_MARKER postings in the
     log win (they carry the mission's shape, colour, width and benign transparency); otherwise
-    hazards are green triangles and benign objects light_blue triangles (rulings D17/D18,
+    hazards are green triangles and benign objects light_blue triangles (differences.md D17/D18,
     manual 7.6), overridable with --benign-shape/--benign-color; benign fill transparency
     1 - hr (0.5 without hr, docs/messages.md);
   - each vehicle's track from NODE_REPORT X/Y (one colour per vehicle) and its swath coverage:

@@ -100,7 +100,7 @@ BENCHMARK(BM_EngineIteration)
     ->Args({1000000, 10})
     ->Unit(benchmark::kMicrosecond);
 
-// The shared reference survey (style practice 11) replayed at 4 Hz, whole run per iteration.
+// The shared reference survey (tests/support/scenario) replayed at 4 Hz, whole run per iteration.
 void BM_ReferenceSurveyReplay(benchmark::State& state) {
   const hazard::Scenario s = hazard::reference_survey(2.0);
   for (auto _ : state) {

@@ -1,6 +1,6 @@
 // What one (vehicle, object) pair costs (docs/robustness.md "Soak"): the engine keeps,
 // per object a vehicle has had in its swath, its pass count and its unused detection credits
-// (rulings "Credits (D7)"). A harness, not a test: it prints one table row per load.
+// (differences.md "Credits"). A harness, not a test: it prints one table row per load.
 //
 //   build/release/bench/engine/pair_state_bench
 //

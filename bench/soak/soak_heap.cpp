@@ -2,7 +2,7 @@
 // tool, not a benchmark with a target: it replays the mail the sensor received in a soak (the
 // run's .alog, written by moosdb-lite) through hazard::Driver, built from the run's
 // uFldHazardSensor block, stepping at the AppTick, and prints every `--every` simulated seconds
-// the heap and the per-(vehicle, object) state the rulings keep (pass counts and credits).
+// the heap and the per-(vehicle, object) state the sensor keeps (pass counts and credits).
 //
 //   build/release/bench/soak/soak_heap WORK_DIR [--app-tick=4] [--every=1800]
 //

@@ -4,7 +4,7 @@
 // the MOOS layer, the mission logic and the apps (design.md, part 0).
 //
 // Contract:
-// - Numbers follow the rulings ("Numbers"): [+-]digits[.digits][(e|E)[+-]digits] with at least
+// - Numbers follow differences.md "Numbers": [+-]digits[.digits][(e|E)[+-]digits] with at least
 //   one digit in the mantissa, blanks trimmed; anything else, and anything non-finite after
 //   conversion (nan, inf, 1e999), is nullopt. Underflow (1e-400) is finite and reads as 0.
 // - Booleans: true/yes/on and false/no/off in any case (libMOOS).

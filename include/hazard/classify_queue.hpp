@@ -1,5 +1,5 @@
 #pragma once
-// A vehicle's queue of decided, not yet released classification answers (rulings D8, D10).
+// A vehicle's queue of decided, not yet released classification answers (differences.md D8, D10).
 //
 // Contract: pop() returns entries by (top first, newest top first), then by priority (highest
 // first), then first come first served. The order is structural, not the original's priority

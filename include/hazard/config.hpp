@@ -1,14 +1,15 @@
 #pragma once
-// Configuration: the one parameter table (style practice 5) and the loader that turns a list of
+// Configuration: the one parameter table (every reader uses it) and the loader that turns a list of
 // configuration entries (key, value, where written) into typed values. Where the entries come
 // from (a MOOS mission file's ProcessConfig block, read by libmoos) is the program's business.
 //
 // Contract: every parameter is described once in parameter_table() (name, aliases, kind, unit,
 // default, allowed range, help); the defaults of EngineConfig, the parser, the docs table
-// (parameter_table_markdown) and the app's --example all read it. The loader applies the rulings:
-// names case-insensitive, lines in file order, a repeated scalar takes the last value with a
-// warning (D36, whole block); each rejected value keeps the previous value (the default) and
-// produces a config warning naming file, line, parameter and value (validation table, D38);
+// (parameter_table_markdown) and the app's --example all read it. The loader applies the rules of
+// differences.md: names case-insensitive, lines in file order, a repeated scalar takes the last
+// value with a warning (D36, whole block); each rejected value keeps the previous value (the
+// default) and produces a config warning naming file, line, parameter and value ("Validation",
+// D38);
 // hazard files are read through the caller's reader (libhazard does no I/O). Framework keys
 // (AppTick, CommsTick, ...) are accepted silently; AppTick's value is kept for hazard_replay.
 
@@ -116,7 +117,7 @@ struct ParameterSpec {
   std::string_view default_text;  ///< as the docs and --example show it; "" = none
   ValueRange range;
   std::string_view help;          ///< one line
-  std::string_view reference;     ///< manual section or ruling
+  std::string_view reference;     ///< manual section or differences.md entry
   ParamTarget target;
 };
 
@@ -167,7 +168,7 @@ EngineSetup load_configuration(const std::vector<ConfigEntry>& entries,
 EngineSetup load_configuration(const std::vector<ConfigEntry>& entries,
                                const HazardFileReader& read, const MissionOrigin& origin);
 
-/// Where the seed in use came from (rulings "Seeds").
+/// Where the seed in use came from (differences.md "Seeds").
 enum class SeedSource { kCommandLine, kRandomSeed, kOperatingSystem, kFixed };
 struct SeedChoice {
   std::uint64_t seed = 1;

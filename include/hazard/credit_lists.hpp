@@ -1,16 +1,16 @@
 #pragma once
-// CreditLists: one vehicle's unused classification credits (rulings "Credits (D7)"), a list per
+// CreditLists: one vehicle's unused classification credits (differences.md "Credits"), a list per
 // object, all in one pool.
 //
 // Contract: a list (CreditList, kept in the object's record) holds credits in pass order, oldest
 // first. push_back appends a new detection's credit (its pass is above every pass in the list);
 // pop_front takes the oldest; insert_in_pass_order puts back a credit a clear returned. A taken
 // credit's slot is reused by the next credit granted, so the pool holds at most as many slots as
-// the vehicle ever held credits at one time (the rulings keep every unused credit).
-// Data structure: a singly linked list per object through a std::deque of 16-byte nodes {pass,
-// next, heading} (the link fills the padding a Credit has anyway). Memory: 16 bytes per credit
-// plus one 512-byte deque block of slack per vehicle; no allocation per object, so nothing is
-// left behind in the allocator as lists grow (with a std::vector per object the soak's
+// the vehicle ever held credits at one time (every unused credit is kept, differences.md
+// "Credits"). Data structure: a singly linked list per object through a std::deque of 16-byte nodes
+// {pass, next, heading} (the link fills the padding a Credit has anyway). Memory: 16 bytes per
+// credit plus one 512-byte deque block of slack per vehicle; no allocation per object, so nothing
+// is left behind in the allocator as lists grow (with a std::vector per object the soak's
 // heap held 35 bytes more per credit added: its spare capacity and the smaller buffers freed).
 // Costs: push_back, pop_front O(1); insert_in_pass_order and the walks O(list length), which
 // kMaxCreditsPerObject bounds (plus the credits a clear returns).

@@ -1,5 +1,5 @@
 #pragma once
-// Dice: counter-based random numbers (rulings "Passes, dice and reproducibility").
+// Dice: counter-based random numbers (differences.md "Passes, dice and reproducibility").
 //
 // Contract: every die is a pure function of (seed, vehicle name, object label, pass, purpose).
 // No internal id, load order, time, tick rate or message order enters, so the same seed and the
@@ -7,8 +7,8 @@
 // Algorithm: the names are hashed once (FNV-1a 64, stored with the vehicle and the object); the
 // key is folded in with the SplitMix64 finaliser after each component (seed, vehicle, label,
 // pass, purpose), which avalanches every input bit into the 64-bit result.
-// Quantisation keeps the original's (docs/differences.md, "Random numbers"), so probabilities
-// behave as before:
+// Quantisation keeps the original's (docs/differences.md, "Random numbers and
+// reproducibility"), so probabilities behave as before:
 //   detection       u = k / 10000, k in [0, 9999], detect iff u < p
 //   classification  v = k / 10000, k in [0, 10000], correct iff v <= p
 // k is the 64-bit value modulo 10000 (or 10001); the modulo bias is below 1e-15.

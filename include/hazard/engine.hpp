@@ -165,9 +165,9 @@ class Engine {
   /// Vehicle ids in name order.
   const std::vector<VehicleId>& vehicles_by_name() const { return by_name_; }
 
-  /// Checks the engine's internal invariants (style practice 3; run by the tests after each
-  /// step): name order, sorted inside-lists of known objects with a pass each, credits in pass
-  /// order not beyond the passes made, settings consistent with their option. Empty when sound.
+  /// Checks the engine's internal invariants (run by the tests after each step): name order,
+  /// sorted inside-lists of known objects with a pass each, credits in pass order not beyond the
+  /// passes made, settings consistent with their option. Empty when sound.
   std::vector<std::string> invariant_violations() const;
 
   /// Called for every die rolled (tests pin determinism with it). Empty by default.

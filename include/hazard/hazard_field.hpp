@@ -3,9 +3,9 @@
 //
 // Object ids are small integers (load order, 0-based); names (labels) appear only at the message
 // edge. Loading reads text handed in by the caller (libhazard does no I/O): hazard files
-// (rulings "Hazard lines": `hazard =` lines; `region =`, `source =`, comments and blank lines
-// skipped; anything else warned) and inline `hazard =` configuration lines. Every problem names
-// file, line, field and value; a rejected line never stops the others from loading.
+// (differences.md "Hazard lines": `hazard =` lines; `region =`, `source =`, comments and blank
+// lines skipped; anything else warned) and inline `hazard =` configuration lines. Every problem
+// names file, line, field and value; a rejected line never stops the others from loading.
 // A duplicate label keeps the first object and reports the later line.
 
 #include <cstdint>

@@ -19,7 +19,8 @@ struct HazardObject {
   /// Hazard resemblance in [0, 1] (manual 6). Kept on hazards too, where it has no effect.
   std::optional<double> resemblance;
   /// Optimal aspect in [0, 360) deg; full-performance half window and fully-degraded threshold,
-  /// both in [0, 90] deg with min <= max and min + max <= 90 (manual 7, rulings table).
+  /// both in [0, 90] deg with min <= max and min + max <= 90 (manual 7, differences.md
+  /// "Validation").
   std::optional<double> aspect_deg;
   std::optional<double> aspect_min_deg;
   std::optional<double> aspect_max_deg;

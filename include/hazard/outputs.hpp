@@ -1,5 +1,5 @@
 #pragma once
-// What one engine call produced (style practice 8: a step's outputs are one value).
+// What one engine call produced (a step's outputs are one value).
 // The app posts `postings` to MOOS in order; hazard_replay writes them to the .alog.
 
 #include <string>

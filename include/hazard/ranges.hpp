@@ -2,8 +2,8 @@
 // Physically meaningful ranges: the largest values the engine accepts from its
 // configuration and its mail. Each is far beyond any real mission, so only nonsense is refused
 // (with a warning naming the value), and no accepted value can overflow the arithmetic or be
-// posted as a 309-digit number. The rulings' lower bounds ("Validation, one rule per value")
-// stay where they are; these are the upper bounds the rulings leave open (docs/configuration.md).
+// posted as a 309-digit number. The lower bounds (differences.md "Validation") stay where they
+// are; these are the upper bounds, which the manual leaves open (docs/configuration.md).
 // The ROC exponent has none: a huge exp only makes pfa 0 and is posted as written (N5).
 
 #include <cstddef>

@@ -7,9 +7,10 @@
 // - Track. With either mode on, a vehicle's track is the polyline through its node reports,
 //   each kept with its pose and the sensor gates evaluated when it arrived (speed of that
 //   report; turn rate over the 2 s before it). The segment ending at a report is sensed only if
-//   that report's gates pass; over a segment that is not sensed nothing changes (rulings "Pass":
-//   inside/outside frozen, as in a blackout). Between two reports the pose moves linearly in
-//   position and turns linearly along the shorter way (359.9 -> 0.1 is +0.2 deg).
+//   that report's gates pass; over a segment that is not sensed nothing changes
+//   (differences.md "Pass": inside/outside frozen, as in a blackout). Between two reports the
+//   pose moves linearly in position and turns linearly along the shorter way (359.9 -> 0.1 is
+//   +0.2 deg).
 // - Evaluation. At each iteration the engine walks the segments received since the previous one
 //   (so outcomes do not depend on the iteration rate, only on the reports), with the setting in
 //   force at that iteration. A vehicle's first evaluation, and the first after an iteration at

@@ -1,5 +1,5 @@
 #pragma once
-// The sensor model as free functions of plain numbers (style practice 8). Probabilities are in
+// The sensor model as free functions of plain numbers, testable alone. Probabilities are in
 // [0, 1] unless a caller passes values outside (the parsers never do).
 
 namespace hazard {
@@ -16,12 +16,12 @@ double resemblance_false_alarm_probability(double pfa, double hr);
 /// aspect axis, in [0, 90] deg (approaching from either direction counts the same).
 double aspect_difference_deg(double heading_deg, double aspect_deg);
 
-/// Degradation g in [0, 1] (manual 7 eq. 2-3, ruling D6): 0 when diff <= aspect_min, 1 when
+/// Degradation g in [0, 1] (manual 7 eq. 2-3, differences.md D6): 0 when diff <= aspect_min, 1 when
 /// diff >= aspect_max, linear in between. min == max never divides by zero.
 double aspect_degradation(double diff_deg, double aspect_min_deg, double aspect_max_deg);
 
-/// Degraded ROC exponent (manual 7.1, ruling D5): exp' = exp - g (exp - 1), so g = 1 gives the
-/// linear ROC (exp' = 1).
+/// Degraded ROC exponent (manual 7.1, differences.md D5): exp' = exp - g (exp - 1), so g = 1 gives
+/// the linear ROC (exp' = 1).
 double degraded_exponent(double exp, double degradation);
 
 /// Resemblance on classification (manual 6.2): a benign object with resemblance hr is reported
@@ -31,11 +31,11 @@ double resemblance_classification_probability(double pc, double hr);
 /// Aspect on classification (manual 7.2): pc' = 0.5 + (1 - g)(pc - 0.5).
 double aspect_classification_probability(double pc, double degradation);
 
-/// Detection die (docs/differences.md, "Random numbers"): detect iff u < p
+/// Detection die (docs/differences.md, "Random numbers and reproducibility"): detect iff u < p
 /// (u = k/10000, k in [0, 9999]).
 inline bool detection_succeeds(double u, double p) { return u < p; }
-/// Classification die (docs/differences.md, "Random numbers"): correct iff v <= p
-/// (v = k/10000, k in [0, 10000]).
+/// Classification die (docs/differences.md, "Random numbers and reproducibility"): correct iff
+/// v <= p (v = k/10000, k in [0, 10000]).
 inline bool classification_correct(double v, double p) { return v <= p; }
 
 }  // namespace hazard

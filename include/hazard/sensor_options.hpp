@@ -1,5 +1,5 @@
 #pragma once
-// The sensor option table (manual 4, rulings D3, D4, D20, D21, "Width choice").
+// The sensor option table (manual 4, differences.md D3, D4, D20, D21, "Width choice").
 //
 // Contract: options are held sorted by width ascending (ids 0..n-1 in that order) and also in
 // configuration order for the summary (D21). Widths are unique (within kWidthMatchTolerance_m);
@@ -18,7 +18,7 @@
 
 namespace hazard {
 
-/// Widths closer than this are the same width (rulings "Width choice").
+/// Widths closer than this are the same width (differences.md "Width choice").
 inline constexpr double kWidthMatchTolerance_m = 1e-6;
 
 struct SensorOption {
@@ -37,7 +37,8 @@ struct SensorConfigParse {
 };
 
 /// `width=25, exp=4, pclass=0.80[, max=1]`; `class` = `pclass`; keys case-insensitive, any order.
-/// Validation (rulings table): width > 0, exp >= 1, pclass in [0.5, 1], max whole >= 0.
+/// Validation (differences.md "Validation"): width > 0, exp >= 1, pclass in [0.5, 1], max a
+/// whole number >= 0.
 SensorConfigParse parse_sensor_config(std::string_view value);
 
 using OptionIndex = std::size_t;

@@ -1,5 +1,5 @@
 #pragma once
-// Swath: the sensor footprint of one vehicle at one pose (rulings D1, D2, "Containment").
+// Swath: the sensor footprint of one vehicle at one pose (differences.md D1, D2, "Containment").
 //
 // Contract: a rectangle centred on the vehicle, `half_width_m` (W, the configured swath width)
 // to each side and `length_m` (swath_length) in total along the track, half fore and half aft.

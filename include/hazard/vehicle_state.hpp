@@ -1,5 +1,5 @@
 #pragma once
-// VehicleState: everything the engine knows about one vehicle, in one record (style practice 7).
+// VehicleState: everything the engine knows about one vehicle, in one record.
 //
 // Contract: a vehicle is found by a small id (VehicleId, assigned in order of first appearance);
 // its name appears only at the message edge. Per-(vehicle, object) state lives inside the
@@ -12,7 +12,7 @@
 // Memory: a pair costs its hash node and bucket (about 57 bytes with glibc), each
 // unused credit 16 bytes in the vehicle's credit pool (credit_lists.hpp; bench/engine/
 // pair_state_bench, docs/robustness.md "Soak"). Pairs and credits are kept for the whole run
-// (rulings "Credits (D7)", "Passes, dice and reproducibility"): a long mission grows by one
+// (differences.md "Credits", "Passes, dice and reproducibility"): a long mission grows by one
 // record per object met and 16 bytes per detection never classified.
 // Rejected alternatives: one map for pass counts and another to a std::deque of credits (the
 // first layout: a deque allocates a 512-byte block and its map for a single credit, about 770
@@ -94,7 +94,7 @@ struct VehicleState {
   double last_mail_s = 0.0;
   std::optional<double> last_sensor_request_s;
   /// The last configuration or sensor request: the width is held for kWidthHoldWindow_s after
-  /// it (rulings "Width choice").
+  /// it (differences.md "Width choice").
   std::optional<double> last_width_claim_s;
   std::optional<SensorSetting> setting;
   /// Start of the min_reset_interval window: the last width change by request (never by the

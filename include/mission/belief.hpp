@@ -5,7 +5,7 @@
 // Belief model (Bayes' rule in log-odds form). For an object, H = "is a hazard". The belief is
 //   L = logit(prior) + sum of log-likelihood ratios ln P(obs | H) / P(obs | not H)
 // over the independent observations (the simulator rolls a separate die per pass and purpose,
-// rulings "Passes, dice and reproducibility"), with the settings acknowledged by the sensor:
+// differences.md "Passes, dice and reproducibility"), with the settings acknowledged by the sensor:
 //   detection on a pass            ln(pd / pfa)                 (manual 3.1)
 //   a pass without a detection     ln((1 - pd) / (1 - pfa))     (manual 3.1)
 //   classification "hazard"        ln(pclass / (1 - pclass))    (manual 3.2)

@@ -16,7 +16,7 @@
 // - Beliefs (belief.hpp): per object, logit(prior) + own evidence + the evidence handed over by
 //   each other vehicle (latest hand-over per sender).
 //   Detection: ln(pd/pfa). Classification answer: +-ln(pclass/(1-pclass)) with the pclass in force
-//   when the request was made (the sensor decides the answer then; rulings "Credits").
+//   when the request was made (the sensor decides the answer then; differences.md "Credits").
 //   Missed pass: ln((1-pd)/(1-pfa)) when the manager, replaying the sensor's rules on its own
 //   poses, is sure the sensor looked at a known object and said nothing (see "Passes").
 // - Passes: the sensor rolls a detection die when an object enters the swath (W to each side,

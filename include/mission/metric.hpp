@@ -7,25 +7,25 @@
 // - Configuration (docs/mission-logic.md): penalty_missed_hazard (100), penalty_false_alarm (10),
 //   penalty_nonopt_hazard (50, echoed only), penalty_max_time_over (0), penalty_max_time_rate (0),
 //   max_time (0 = no limit), show_xpath (false), hazard_file. Keys are case-insensitive. Numbers
-//   follow rulings "Numbers" and must be >= 0; a bad value is a warning naming the parameter and
-//   value, and the default stays. A repeated parameter takes the last value, with a warning (D36).
-//   Unknown parameters are warned. The transit-lane half width is fixed at 20 m (original).
+//   follow differences.md "Numbers" and must be >= 0; a bad value is a warning naming the
+//   parameter and value, and the default stays. A repeated parameter takes the last value, with a
+//   warning (D36). Unknown parameters are warned. The transit-lane half width is fixed at 20 m
+//   (original).
 // - Ground truth: the `hazard =` lines go through libhazard's loader (load_hazard_file_text), the
 //   same code the sensor uses, so the two can never disagree about which objects exist and what
 //   they are. `region =` (a convex polygon, else a warning) and `source =` are read here (as
 //   uFldHazardMetric reads them); `//` comments are stripped. Several hazard files load together
-//   (as the sensor, rulings
-//   "Repeats"); the last region and source win. A missing file is the application's to report
-//   (`hazard_file_missing`).
+//   (as the sensor, differences.md "Repeats"); the last region and source win. A missing file is
+//   the application's to report (`hazard_file_missing`).
 // - Scoring, object by object in file order: reported label and truth hazard ->
 //   correct; reported and truth benign -> false alarm; hazard not reported -> missed; extra labels
 //   not in the truth are ignored. total = missed P_m + FA P_fa + overage term, where
 //   elapsed = now - search start (0 if never started), overage = elapsed - max_time (0 when
 //   max_time is 0), and the term is P_over + P_rate * overage when overage > 0.
 //   worst = P_fa (#benign) + P_m (#hazards); norm = clip(100 (worst - total) / worst, 0, 100).
-//   N17 fixed: with worst = 0 (no objects, or zero penalties) the original divides by zero and
-//   posts NaN. We define norm = 100 when total = 0 (nothing could be lost and nothing was) and
-//   norm = 0 when total > 0 (only a time penalty can make total positive then).
+//   Fixed (differences.md N17): with worst = 0 (no objects, or zero penalties) the original divides
+//   by zero and posts NaN. We define norm = 100 when total = 0 (nothing could be lost and nothing
+//   was) and norm = 0 when total > 0 (only a time penalty can make total positive then).
 // - Reports: an empty source or the source `actual` is rejected with a run warning; a report
 //   with no object parts only logs an event and is not stored; every other report is stored per
 //   source (latest wins, with a count) and answered with HAZARD_SEARCH_SCORE (double),

@@ -1,5 +1,5 @@
 #pragma once
-// One row of an application's parameter table (style practice 5): the .moos name, its default
+// One row of an application's parameter table: the .moos name, its default
 // as text and a help line. The applications build --example and --help from these tables.
 
 #include <vector>

@@ -5,7 +5,7 @@
 // Contract
 // - Text forms accepted (the MOOS-IvP habits): `x1,y1:x2,y2:...` and `pts={x1,y1:x2,y2:...}`,
 //   the latter optionally among other `key=value` fields (`label=`, colours), which are ignored.
-//   A vertex is `x,y` or `x,y,z` (z ignored). Numbers follow rulings "Numbers".
+//   A vertex is `x,y` or `x,y,z` (z ignored). Numbers follow differences.md "Numbers".
 // - A polygon is valid when it has at least 3 vertices, is convex (no reflex corner, either
 //   winding) and has a positive area; collinear vertices on an edge are allowed.
 // - Containment is inclusive of the boundary (the original's habit; docs/differences.md).

@@ -1,6 +1,6 @@
 #pragma once
 // Configuration of the simulated survey vehicle (the uSimSurveyVehicle application): one table of
-// parameters (style practice 5) and the route it implies.
+// parameters (the parser, --help and --example read it) and the route it implies.
 //
 // Contract
 // - Parameters (keys case-insensitive; each bad value is a warning naming parameter and value, and

@@ -59,7 +59,7 @@ namespace moos {
 /// What to do when a framework parameter appears twice in the block.
 enum class RepeatedParameter {
   kFirstWins,            ///< libMOOS: the first line wins, silently
-  kLastWinsWithWarning,  ///< hazard rulings D36: the last line wins, with a config warning
+  kLastWinsWithWarning,  ///< the last line wins, with a warning (the sensor: differences.md D36)
 };
 
 /// What an application says about itself (defaults that differ between apps).

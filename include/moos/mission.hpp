@@ -4,7 +4,7 @@
 // Behaviour: docs/protocol.md section 6, with these deliberate choices:
 // - Block parameters keep the libMOOS split (key = text before the first '=', both sides
 //   trimmed, interior spaces kept) and are returned in FILE ORDER with their file and line,
-//   so each application applies its own rules (uFldHazardSensor: rulings D36).
+//   so each application applies its own rules (uFldHazardSensor: differences.md D36).
 // - Globals follow libMOOS: the first line anywhere whose key matches case-insensitively wins,
 //   with every blank removed from the value.
 // - `$(NAME)` comes from the substitutions given (e.g. `--NAME=value` on the command line),

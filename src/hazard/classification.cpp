@@ -66,7 +66,7 @@ void Engine::handle_classify_request(const ClassifyRequest& r, double now_s, Out
   }
   const Credit credit = *taken;
 
-  // Decided now, with the settings in force now (rulings "Credits").
+  // Decided now, with the settings in force now (differences.md "Credits").
   const HazardObject& o = field_.object(*object);
   const double pc = v.setting->pclass;
   const double pc_resemblance = (effects_.resemblance && !o.is_hazard() && o.resemblance)
@@ -117,7 +117,7 @@ void Engine::clear_queue(std::string_view vname, double now_s, Outputs& out) {
   v.warned_queue_full = false;
   const std::vector<PendingAnswer> cleared = v.queue.clear();
   for (const PendingAnswer& a : cleared) {
-    // The credit goes back in pass order, so the same die is rolled again (rulings "Clear").
+    // The credit goes back in pass order, so the same die is rolled again (differences.md "Clear").
     v.credits.insert_in_pass_order(v.objects[a.object].credits, a.credit);
   }
   out.events.push_back("Classify queue cleared for " + v.name + " (" +

@@ -22,7 +22,8 @@ ValueRange above(double lo) { return ValueRange{lo, false, std::nullopt, true, s
 ValueRange above_to(double lo, double hi) { return ValueRange{lo, false, hi, true, std::nullopt}; }
 ValueRange between(double lo, double hi) { return ValueRange{lo, true, hi, true, std::nullopt}; }
 
-// The one table (style practice 5). Defaults are the rulings' "Effective defaults".
+// The one table (loader, docs table and --example read it). Defaults are differences.md
+// "Effective defaults".
 const std::vector<ParameterSpec>& table() {
   using K = ParamKind;
   using C = EngineConfig;
@@ -78,8 +79,8 @@ const std::vector<ParameterSpec>& table() {
        "true: dice seeded by the operating system; false: seed 1 (reproducible runs)", "D16",
        &C::seed_random},
       {"random_seed", "", K::kSeed, "", "", {},
-       "Fixes the dice seed (beats seed_random; hazard_replay --seed beats it)", "rulings Seeds",
-       &C::random_seed},
+       "Fixes the dice seed (beats seed_random; hazard_replay --seed beats it)",
+       "differences.md \"Seeds\"", &C::random_seed},
       {"show_hazards", "", K::kBool, "", "true", {},
        "Post a VIEW_MARKER (and aspect VIEW_SEGLIST) per object at start-up and on PMV_CONNECT",
        "manual 7.6", &C::show_hazards},

@@ -17,8 +17,8 @@ std::string place(std::string_view file, int line) {
   return std::string(file) + ":" + std::to_string(line) + ": ";
 }
 
-// Strips a `//` comment (rulings: the sensor and the grader must agree on ground truth, and the
-// grader strips comments).
+// Strips a `//` comment: the sensor and the grader must agree on ground truth, and the grader
+// strips comments.
 std::string_view without_comment(std::string_view line) {
   const auto pos = line.find("//");
   return pos == std::string_view::npos ? line : line.substr(0, pos);

@@ -1,4 +1,4 @@
-// The engine's internal invariants (style practice 3), checked by the tests after each step.
+// The engine's internal invariants, checked by the tests after each step.
 #include "hazard/engine.hpp"
 #include "hazard/sensor_model.hpp"
 

@@ -79,7 +79,7 @@ void Engine::sense(VehicleId id, double now_s, Outputs& out) {
                     config_.swath_length_m);
   if (effects_.swath_visuals) post_swath(v, swath, on, out);
   if (track_mode()) return sense_track(v, now_s, out);  // gated per report (sensing_track.hpp)
-  // During a blackout nothing changes, not even inside/outside (rulings "Pass").
+  // During a blackout nothing changes, not even inside/outside (differences.md "Pass").
   if (on) update_entries(v, swath, now_s, out);
 }
 

@@ -15,7 +15,7 @@ namespace {
 using detail::field_value;
 using detail::missing_field;
 
-// Range limits of the rulings' validation table.
+// Range limits of differences.md "Validation".
 constexpr double kMinExp = 1.0;
 constexpr double kMinPclass = 0.5;
 constexpr double kMaxPclass = 1.0;

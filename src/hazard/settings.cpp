@@ -1,6 +1,6 @@
-// Settings (manual 4; rulings "Settings", "Width choice"; D3, D4, D11, D20): the width choice
-// under `max`, who holds a width, configuration requests, the default setting and the options
-// summary.
+// Settings (manual 4; differences.md "Settings", "Width choice"; D3, D4, D11, D20): the width
+// choice under `max`, who holds a width, configuration requests, the default setting and the
+// options summary.
 #include <string>
 
 #include "hazard/engine.hpp"
@@ -68,7 +68,7 @@ void Engine::record_width_setting(VehicleState& v, double now_s, bool opens_wind
   if (opens_window) v.width_window_start_s = now_s;
 }
 
-// D4: the default width through the width choice (so `max` applies; rulings "Width choice"),
+// D4: the default width through the width choice (so `max` applies; differences.md "Width choice"),
 // with `pd`. Counts as a width setting but opens no min_reset_interval window.
 void Engine::set_default_width(VehicleId id, double pd, double now_s, Outputs& out) {
   VehicleState& v = vehicles_[id];
@@ -86,7 +86,8 @@ void Engine::apply_default_setting(VehicleId id, double now_s, Outputs& out) {
   post_ack(v, out);
 }
 
-// Rulings "Settings": exactly one ack per accepted request, with the settings in force after it.
+// Exactly one ack per accepted request, with the settings in force after it (differences.md
+// "Settings").
 void Engine::handle_config_request(const ConfigRequest& r, double now_s, Outputs& out) {
   if (config_.options.empty()) {
     out.run_warnings.push_back("UHZ_CONFIG_REQUEST from " + r.vname +

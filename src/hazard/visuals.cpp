@@ -14,7 +14,7 @@ namespace hazard {
 
 namespace {
 
-// Visual constants of the original (docs/messages.md) and the rulings' colours (D19).
+// Visual constants of the original (docs/messages.md) and the colours of differences.md D19.
 constexpr double kCircleRadius_m = 10.0;
 constexpr int kDetectionCircleVertices = 12;
 constexpr int kClassificationCircleVertices = 5;  // drawn as a pentagon

@@ -222,7 +222,7 @@ HazardsetEval HazardMetric::evaluate(const HazardsetReport& report, double now_s
   if (worst > 0.0) {
     e.norm_score = std::clamp(100.0 * (worst - e.total_score) / worst, 0.0, 100.0);
   } else {
-    e.norm_score = e.total_score > 0.0 ? 0.0 : 100.0;  // N17 (see the header)
+    e.norm_score = e.total_score > 0.0 ? 0.0 : 100.0;  // worst = 0 (see the header)
   }
   e.total_objects = static_cast<long>(report.objects.size());
   e.total_time_s = elapsed_s;

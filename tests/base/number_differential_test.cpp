@@ -1,6 +1,6 @@
 // The fast paths of the text grammar against their references, on many generated inputs
 // (the speed work): parse_number (std::from_chars, strtod when it refuses) against the grammar of
-// the rulings ("Numbers") checked by a regular expression and converted by strtod; fix and fmt
+// differences.md "Numbers", checked by a regular expression and converted by strtod; fix and fmt
 // (integer arithmetic, std::to_chars when a tie is too close to call) against C printf.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// The text layer: FMT/FIX, strict numbers (rulings "Numbers"), words, lists, angles (N3).
+// The text layer: FMT/FIX, strict numbers (differences.md "Numbers"), words, lists, angles (N3).
 #include <gtest/gtest.h>
 
 #include <cmath>

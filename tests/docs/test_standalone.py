@@ -7,6 +7,15 @@
 - Every relative link of README.md and docs/*.md resolves: `[text](path)`, `[text](path#anchor)`
   and `[text](#anchor)` name an existing file, and an anchor names a heading of the target
   (GitHub's slugs). Links inside code (fenced blocks and `code spans`) are not links.
+- Every named ruling a tracked text file cites is written down in docs/differences.md: a citation
+  is the word "ruling" or "rulings", or the file name differences.md, followed by one or more
+  quoted names (D ids may stand between them), and each name must be a heading or the bold lead
+  of an entry there (a trailing "(D7)" or full stop aside; any case).
+- Every case id a tracked text file cites (D, N or T followed by one or two digits, in the forms
+  the repository uses: "(N3)", "D8_T7", "T9)", "amended T7", "rulings T1", "md D36", "// N5:")
+  is defined there: an N or T id as the bold lead of an entry ("- **N3**: ..."), a D id
+  anywhere on the page, a short range such as "D14–D18" naming each id in it. In Markdown,
+  code (fenced blocks and code spans) cites nothing.
 
 The patterns are assembled from pieces, so this file does not match them itself.
 
@@ -30,6 +39,19 @@ FENCE = re.compile(r"^\s*(```|~~~)")
 CODE_SPAN = re.compile(r"(`+)(?:(?!\1).)+?\1")
 HEADING = re.compile(r"^(#{1,6})\s+(.*?)\s*#*\s*$")
 SCHEME = re.compile(r"^[A-Za-z][A-Za-z0-9+.-]*:")
+
+DIFFERENCES = pathlib.Path("docs") / "differences.md"
+# A quoted name may wrap onto one more line of a comment ("// ", "# ", " * ").
+QUOTED = r'"[^"\n]*(?:\n[ \t]*(?://+|#+|\*)?[ \t]*[^"\n]*)?"'
+CITATION = re.compile(r"(?<![A-Za-z])(?:rul" + r"ings?|differences\.md)\]?,?\s+"
+                      r"((?:(?:D[0-9]+|" + QUOTED + r")(?:,\s*|\s+and\s+)?)+)", re.IGNORECASE)
+NAME = re.compile(QUOTED)
+CASE_ID = re.compile(r"(?:(?<=[(_`*])|(?<=[,;] )|(?<=// )|(?<=\) )|(?<=\.md )"
+                     r"|(?<=[Aa]mended )|(?<=[Rr]uling )|(?<=[Rr]ulings ))"
+                     r"([DNT][0-9]{1,2})(?=[)\s,.:;'_`*]|$)", re.MULTILINE)
+BOLD_LEAD = re.compile(r"^\s*(?:[-*+]|[0-9]+\.)?\s*\*\*(.+?)\*\*")
+D_RANGE = re.compile(r"\bD([0-9]{1,2})\s*[-\u2013]\s*D([0-9]{1,2})\b")
+SHORT_RANGE = 10  # "D1–D38" describes the page; it defines nothing
 
 
 def tracked_files(root):
@@ -133,6 +155,57 @@ def broken_links(document, root):
     return broken
 
 
+def entry_name(text):
+    """A heading's or bold lead's text as a citation names it: no markup, no trailing "(D7)",
+    full stop or colon, in lower case."""
+    text = re.sub(r"[`*]", "", text).strip().rstrip(".:").strip()
+    return text.lower()
+
+
+def defined_rulings(text):
+    """(names, ids) that a differences page defines: the names of its headings and bold leads
+    (also without a trailing parenthesis), the N and T ids led in bold, every D id on it."""
+    names, ids = set(), set()
+    for _, line in prose_lines_keep_code(text):
+        heading = HEADING.match(line)
+        lead = heading.group(2) if heading else (BOLD_LEAD.match(line) or [None, None])[1]
+        if lead is None:
+            continue
+        name = entry_name(lead)
+        names |= {name, re.sub(r"\s*\([^()]*\)$", "", name)}
+        if re.fullmatch(r"[nt][0-9]{1,2}", name):
+            ids.add(name.upper())
+    ids |= set(re.findall(r"\bD[0-9]{1,2}\b", text))
+    for low, high in D_RANGE.findall(text):
+        if 0 < int(high) - int(low) <= SHORT_RANGE:
+            ids |= {f"D{n}" for n in range(int(low), int(high) + 1)}
+    return names, ids
+
+
+def prose_text(text):
+    """A Markdown text with fenced blocks and code spans blanked, line numbers kept: examples
+    in code are not citations."""
+    lines = text.splitlines()
+    prose = dict(prose_lines(text))
+    return "\n".join(prose.get(number, "") for number in range(1, len(lines) + 1))
+
+
+def undefined_citations(text, names, ids):
+    """(line number, what) of every cited ruling name or case id of `text` that the differences
+    page does not define."""
+    found = []
+    line_of = lambda offset: text.count("\n", 0, offset) + 1
+    for m in CITATION.finditer(text):
+        for quoted in NAME.finditer(m.group(1)):
+            name = re.sub(r"\s*\n[ \t]*(?://+|#+|\*)?[ \t]*", " ", quoted.group(0)[1:-1])
+            if entry_name(name) not in names:
+                found.append((line_of(m.start()), "the name " + repr(name)))
+    for m in CASE_ID.finditer(text):
+        if m.group(1) not in ids:
+            found.append((line_of(m.start()), f"case {m.group(1)}"))
+    return found
+
+
 def documents(root):
     return [root / "README.md"] + sorted((root / "docs").glob("*.md"))
 
@@ -156,6 +229,21 @@ class Standalone(unittest.TestCase):
                 problems.append(f"{document.relative_to(ROOT)}:{number}: ({target}) {reason}")
         self.assertEqual(problems, [], "broken links:\n" + "\n".join(problems))
 
+    def test_every_cited_ruling_and_case_is_defined_in_the_differences(self):
+        page = ROOT / DIFFERENCES
+        self.assertTrue(page.is_file(), page)
+        names, ids = defined_rulings(page.read_text(encoding="utf-8"))
+        problems = []
+        for path in tracked_files(ROOT):
+            text = text_of(path)
+            if text is None:
+                continue
+            if path.suffix == ".md":
+                text = prose_text(text)
+            for number, what in undefined_citations(text, names, ids):
+                problems.append(f"{path.relative_to(ROOT)}:{number}: {what}")
+        self.assertEqual(problems, [], f"not defined in {DIFFERENCES}:\n" + "\n".join(problems))
+
     def test_the_checks_catch_what_they_look_for(self):
         # The checks themselves, on text assembled here so that this file stays clean.
         for bad in ["see " + ".." + "/shared/x.md", "shared" + "/spec/a.md", "(iss" + "ue 12)",
@@ -170,6 +258,25 @@ class Standalone(unittest.TestCase):
         self.assertEqual(anchors("# A\n## B\n## B\n```\n# not a heading\n```\n"), {"a", "b", "b-1"})
         links = list(LINK.finditer("[a](x.md#y) and ![i](images/p.svg) and `[c](z.md)`"))
         self.assertEqual([m.group(1) for m in links], ["x.md#y", "images/p.svg", "z.md"])
+
+    def test_the_citation_checks_catch_what_they_look_for(self):
+        page = ("## Rulings\n- **Width choice** (D3): ...\n- **Credits (D7).** ...\n"
+                "### Configuration (D14" + "\u2013D18)\n- **N3**: ...\n- **T7**: ...\n")
+        names, ids = defined_rulings(page)
+        self.assertTrue({"rulings", "width choice", "credits", "configuration"} <= names, names)
+        self.assertTrue({"N3", "T7", "D3", "D7", "D15"} <= ids, ids)
+        self.assertFalse({"N4", "D19"} & ids, ids)
+        rul, diff = "rul" + "ings", "differences" + ".md "
+        for good in [rul + ' "Width choice"', diff + '"Credits", "Width choice"',
+                     rul[:-1] + ' "credits"', diff + "D3, " + '"Width choice"',
+                     "(" + "N3)", "_" + "T7)", "(D15" + ", N3)", "t" + "1 and n" + "4",
+                     "std::pair<T" + "1, T" + "2>", "${D" + "40}"]:
+            self.assertEqual(undefined_citations(good, names, ids), [], good)
+        for bad in [rul + ' "Pass"', diff + "D3, " + '"Pass"', rul + ' "What is\n// promised"',
+                    rul + ' "Credits", "Who hears what"', "angles (" + "N4)", "Foo_" + "T9)",
+                    "amended " + "T1", rul + " T" + "2", "// N" + "5: pow", ".md D" + "19)",
+                    rul + " D" + "19", "x (D" + "1, T" + "8)"]:
+            self.assertTrue(undefined_citations(bad, names, ids), bad)
 
 
 if __name__ == "__main__":

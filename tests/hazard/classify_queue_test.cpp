@@ -1,4 +1,4 @@
-// The classify queue's order (ruling D8; amended T7).
+// The classify queue's order (differences.md D8, T7).
 #include <gtest/gtest.h>
 
 #include "hazard/classify_queue.hpp"

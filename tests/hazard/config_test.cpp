@@ -1,5 +1,5 @@
-// The configuration block: the one table, defaults, validation, repeats, seeds (rulings D14-D18,
-// D26-D28, D36, D38, validation table, "Seeds").
+// The configuration block: the one table, defaults, validation, repeats, seeds (differences.md
+// D14-D18, D26-D28, D36, D38, "Validation", "Seeds").
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -284,7 +284,7 @@ TEST(ParameterTable, DefaultsParseAndEveryEntryIsDocumented) {
   EXPECT_EQ(find_parameter("nonsense"), nullptr);
 }
 
-// style practice 5: the docs page holds the generated table verbatim.
+// One table: the docs page holds the generated table verbatim.
 TEST(ParameterTable, DocsConfigurationPageHoldsTheGeneratedTable) {
   std::ifstream in(std::string(HAZARD_SOURCE_DIR) + "/docs/configuration.md");
   ASSERT_TRUE(in) << "docs/configuration.md is missing";

@@ -1,4 +1,4 @@
-// A vehicle's credit pool (credit_lists.hpp; rulings "Credits (D7)").
+// A vehicle's credit pool (credit_lists.hpp; differences.md "Credits").
 #include <gtest/gtest.h>
 
 #include <cstdint>

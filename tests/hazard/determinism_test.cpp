@@ -1,5 +1,5 @@
-// Reproducibility (rulings "Passes, dice and reproducibility"; style practice 11): outcomes do
-// not depend on tick rate or on how often poses arrive along the same tracks.
+// Reproducibility (differences.md "Passes, dice and reproducibility"): outcomes do not depend on
+// tick rate or on how often poses arrive along the same tracks.
 #include <gtest/gtest.h>
 
 #include <algorithm>

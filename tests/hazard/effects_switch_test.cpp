@@ -339,7 +339,7 @@ TEST(EffectSwitches, GeodesyPlacesLatLonReportsWhereTheEquivalentXYReportsAre) {
   EXPECT_NE(none.text.find("cannot be placed (geodesy = off)"), std::string::npos);
 }
 
-// ---- the switches themselves (rulings validation table, D36, D38) -----------------------------------
+// ---- the switches themselves (differences.md "Validation", D36, D38) ----------------------------
 
 TEST(EffectSwitches, ExtensionParametersAreValidatedNamingFileLineAndValue) {
   const EngineSetup s = testing::setup_from(

@@ -1,6 +1,6 @@
 // Classification: credits, the decision, the queue, release timing, clear, refusals
-// (manual 3.2, 6.2, 7.2; rulings D7, D8, D9, D10, D19, D25, D37, "Credits", "Clear",
-// "Release timing"; amended T7; T6).
+// (manual 3.2, 6.2, 7.2; differences.md D7, D8, D9, D10, D19, D25, D37, "Credits", "Clear",
+// "Release timing", T7, T6).
 #include <gtest/gtest.h>
 
 #include "hazard/sensor_model.hpp"

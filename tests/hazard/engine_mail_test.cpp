@@ -1,5 +1,6 @@
 // Mail at the edge: malformed mail warns and changes nothing else; start-up and PMV_CONNECT
-// visuals; the options summary; the interface lists (docs/messages.md; rulings "Visuals", D21).
+// visuals; the options summary; the interface lists (docs/messages.md; differences.md "Visuals",
+// D21).
 #include <gtest/gtest.h>
 
 #include "scenario.hpp"
@@ -86,7 +87,7 @@ TEST(EngineMail, MalformedMailWarnsAndChangesNothingElse) {
 TEST(EngineMail, LatLonOnlyNodeReportIsAWarningOnly_T9) {
   Driver d(kField);
   const Outputs bad = d.mail("NODE_REPORT", "NAME=archie,LAT=43.8,LON=-70.3,SPD=1.5,HDG=90");
-  EXPECT_TRUE(bad.postings.empty());  // no UHZ_DEBUG (rulings "No debug postings")
+  EXPECT_TRUE(bad.postings.empty());  // no UHZ_DEBUG (differences.md "No debug postings")
   ASSERT_EQ(bad.run_warnings.size(), 1u);
   EXPECT_EQ(bad.run_warnings[0],
             "NODE_REPORT: LAT/LON without X/Y cannot be placed (the mission file gives no "

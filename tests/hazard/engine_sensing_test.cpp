@@ -1,5 +1,5 @@
 // Sensing: activity window, entry events, passes, gates, swath visuals, detection outcomes
-// (manual 3.1, 7, 8, 9; rulings D1, D5, D12, D13, "Pass", "Visuals").
+// (manual 3.1, 7, 8, 9; differences.md D1, D5, D12, D13, "Pass", "Visuals").
 #include <gtest/gtest.h>
 
 #include <set>

@@ -1,5 +1,5 @@
-// Sensor settings per vehicle: requests, acks, default, reset window, max (manual 4; rulings
-// D3, D4, D11, D20, D22, D23, "Settings"; amended T2).
+// Sensor settings per vehicle: requests, acks, default, reset window, max (manual 4;
+// differences.md D3, D4, D11, D20, D22, D23, "Settings"; T2).
 #include <gtest/gtest.h>
 
 #include "scenario.hpp"
@@ -37,7 +37,7 @@ TEST(EngineSettings, FirstSensedVehicleGetsDefaultWidthAndAck_D4_T2) {
             std::vector<std::string>{"vname=archie,width=25,pd=0.9,pfa=0.656,pclass=0.63"});
   EXPECT_EQ(values_of(out, "UHZ_CONFIG_ACK_ARCHIE"),
             std::vector<std::string>{"vname=archie,width=25,pd=0.9,pfa=0.656,pclass=0.63"});
-  // Not before both a sensor request and a node report exist (rulings "Automatic default").
+  // Not before both a sensor request and a node report exist (differences.md "Automatic default").
   Driver e(kJakeOriginal);
   e.pose("betty", 0, 0);
   EXPECT_TRUE(values_of(e.tick(), "UHZ_CONFIG_ACK").empty());

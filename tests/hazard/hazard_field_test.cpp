@@ -1,4 +1,5 @@
-// Hazard files and the field (rulings "Hazard lines"; docs/hazard-file.md) and the spatial grid.
+// Hazard files and the field (differences.md "Hazard lines"; docs/hazard-file.md) and the spatial
+// grid.
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// Numerically delicate angles (rulings "Numbers", "Defects we fix"): the
+// Numerically delicate angles (differences.md "Numbers", "Defects we fix"): the
 // 0/360 seam in turn rate and aspect, huge and negative headings, non-finite input, and the edges
 // of the aspect window. Each test name states the rule it pins.
 #include <gtest/gtest.h>
@@ -93,7 +93,7 @@ TEST(NumericsAngles, ASwathAtHeading1e15IsTheSwathAt280) {
   for (int i = 0; i < 4; ++i) EXPECT_EQ(a[i], b[i]) << i;
 }
 
-// ---- non-finite input (rulings "Numbers") ----------------------------------------------------------
+// ---- non-finite input (differences.md "Numbers") ------------------------------------------------
 
 TEST(NumericsAngles, NanAndInfinityAreRejectedAtParseTimeWithAWarning) {
   Driver d(quiet_block("hazard = x=0,y=0,label=a,type=hazard\n"));

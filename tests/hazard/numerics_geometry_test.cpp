@@ -1,4 +1,4 @@
-// Numerically delicate geometry (rulings D1, D2, "Containment"):
+// Numerically delicate geometry (differences.md D1, D2, "Containment"):
 // swath widths 0, 1e-9 and 1e6; objects exactly on edges and corners at headings 0, 90, 45 and
 // 137.5 under the one inclusive rule (swath.hpp); coordinates at UTM scale (6e5, 4.8e6) and at
 // 1e7, where containment and report text must match the same scene at the origin to 1 mm.

@@ -1,4 +1,4 @@
-// Numerically delicate probabilities (rulings D5, D27, D28): pd at 0, 1 and
+// Numerically delicate probabilities (differences.md D5, D27, D28): pd at 0, 1 and
 // 1e-300, ROC exponents 1 and 10,000 (pfa underflows to exactly 0, never to a subnormal), hr at
 // 0 and 1, pclass at 0.5 and 1, and dice exactly at their boundaries.
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
-// Ten million classification requests on one vehicle's queue (rulings D8, "Ten million classify
-// requests": a test of the queue itself). The original ordered equal priorities by
+// Ten million classification requests on one vehicle's queue (differences.md D8, "Ten million
+// classify requests": a test of the queue itself). The original ordered equal priorities by
 // subtracting n/1e6 from each request's priority, so after a million requests a priority 1 higher
 // lost to an older one, and a counter grew without bound. The queue keeps one FIFO bucket per
 // priority and a stack of `top` entries: no counter, no drift.

@@ -1,4 +1,4 @@
-// Epoch-scale times (rulings D9, D11, D12, "Release timing"; N11): a day of
+// Epoch-scale times (differences.md D9, D11, D12, "Release timing"; N11): a day of
 // iterations at 1.8e9 s under time warp 100 with AppTick 3, whose iteration times carry the
 // rounding of a warped wall clock (2.4e-5 s). Every interval rule must fire at the same
 // iteration every time: min_classify_interval, min_reset_interval, the 600 s sensor window, the

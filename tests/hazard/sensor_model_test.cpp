@@ -1,4 +1,4 @@
-// The model formulas as free functions (manual 4.2, 6, 7; rulings D5, D6).
+// The model formulas as free functions (manual 4.2, 6, 7; differences.md D5, D6).
 #include <gtest/gtest.h>
 
 #include "hazard/sensor_model.hpp"

@@ -1,5 +1,5 @@
 // Rates through the engine, fixed seeds, >= 100,000 trials each, 5-sigma binomial bounds
-// (manual 3.1, 3.2, 6.1, 6.2, 7.1, 7.2; rulings D5, D6, D7).
+// (manual 3.1, 3.2, 6.1, 6.2, 7.1, 7.2; differences.md D5, D6, D7).
 #include <gtest/gtest.h>
 
 #include <map>

@@ -1,4 +1,4 @@
-// Swath geometry and containment (rulings D1, D2, "Containment", amended T1; N1, N13).
+// Swath geometry and containment (differences.md D1, D2, "Containment", T1, N1, N13).
 #include <gtest/gtest.h>
 
 #include <random>
@@ -18,7 +18,7 @@ std::string pts(const Swath& s) {
   return spec.substr(0, spec.find("},") + 1);
 }
 
-TEST(Swath, CornersOfAmendedT1) {
+TEST(Swath, CornersOfCaseT1) {
   EXPECT_EQ(pts(Swath({0, 0}, 0, 25, 5)), "pts={25,2.5:25,-2.5:-25,-2.5:-25,2.5}");
   EXPECT_EQ(pts(Swath({0, 0}, 90, 25, 5)), "pts={2.5,-25:-2.5,-25:-2.5,25:2.5,25}");
 }
@@ -49,7 +49,7 @@ TEST(Swath, ContainmentIsInclusiveOnAxisAlignedEdges_D1_D2) {
   EXPECT_FALSE(s.contains({0, 5}));  // the original's 2L would include this (D1)
 }
 
-// Rotated headings: points 1 micrometre inside or outside each edge (rulings "Containment").
+// Rotated headings: points 1 micrometre inside or outside each edge (differences.md "Containment").
 TEST(Swath, ContainmentAtRotatedHeadingsOneMicrometreFromEdges) {
   std::mt19937_64 rng(3);
   std::uniform_real_distribution<double> heading(0.0, 360.0);

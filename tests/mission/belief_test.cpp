@@ -9,7 +9,8 @@
 namespace mission {
 namespace {
 
-// Jake's archie setting (rulings "Jake's sensor options": width 25, exp 4, pclass 0.85; pd 0.9).
+// Jake's archie setting (differences.md "Jake's sensor options": width 25, exp 4, pclass 0.85;
+// pd 0.9).
 constexpr double kPd = 0.9;
 const double kPfa = std::pow(0.9, 4);  // 0.6561
 constexpr double kPclass = 0.85;

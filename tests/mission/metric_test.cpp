@@ -94,7 +94,8 @@ TEST(MetricTruth, UsesTheSensorsLoaderAndReadsRegionAndSource) {
   EXPECT_EQ(m.source(), "field_7");
   EXPECT_FALSE(m.region().has_value());  // not convex
   EXPECT_EQ(m.truth().hazard_count(), 1);
-  EXPECT_EQ(m.truth().benign_count(), 0);  // "inert" is rejected by the shared loader (rulings)
+  // "inert" is rejected by the shared loader (differences.md "Validation").
+  EXPECT_EQ(m.truth().benign_count(), 0);
   bool bad_region = false, duplicate = false, strange = false;
   for (const auto& w : warnings) {
     bad_region |= w.find("h.txt:2: bad region spec") != std::string::npos;

@@ -13,7 +13,7 @@ namespace {
 
 constexpr double kTick_s = 0.25;  // a 4 Hz application, as in the Jake mission
 constexpr double kSensorMaxTurnRate_dps = 1.5;  // manual 8 default
-constexpr double kSensorMaxSpeed_mps = 2.0;     // rulings D14
+constexpr double kSensorMaxSpeed_mps = 2.0;     // differences.md D14
 
 // Runs the vehicle to completion (bounded), sampling at kTick_s.
 std::vector<Pose> fly(SurveyVehicle& v, double start_s, double limit_s, double tick_s = kTick_s) {
@@ -115,7 +115,8 @@ TEST(Vehicle, InvalidParametersAreNamed) {
 
 // The survey as the sensor sees it: sampled at 4 Hz, the sensor is on while the 2 s turn
 // rate is at most 1.5 deg/s, and an object is sensed when inside the swath rectangle (W across,
-// 5 m along in total, rulings D1). Every point of the region must be sensed with the sensor on.
+// 5 m along in total, differences.md D1). Every point of the region must be sensed with the sensor
+// on.
 void expect_flown_survey_covers_region(const VehicleParams& p, double heading_deg, double w_m) {
   const auto region =
       std::get<ConvexPolygon>(ConvexPolygon::parse("0,0:160,-20:200,120:20,140"));

@@ -1,5 +1,5 @@
 #pragma once
-// The reference reading of a number (the rulings' "Numbers" grammar, checked by a regular
+// The reference reading of a number (the grammar of differences.md "Numbers", checked by a regular
 // expression, then strtod; finite only), against which base::parse_number's fast paths are
 // compared bit for bit: by tests/base/number_differential_test.cpp and by fuzz/number.cpp.
 

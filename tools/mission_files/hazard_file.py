@@ -15,7 +15,7 @@ written (the picture maps them).
 from .text import excerpt, parse_bool, parse_number, parse_points, split_key_values, to_lower
 
 KNOWN_SHAPES = ("circle", "square", "diamond", "triangle", "efield", "gateway")
-# (low, high, high included) per ranged key (rulings D27, D28).
+# (low, high, high included) per ranged key (differences.md D27, D28).
 RANGES = {"hr": (0.0, 1.0, True), "aspect": (0.0, 360.0, False),
           "aspect_min": (0.0, 90.0, True), "aspect_max": (0.0, 90.0, True)}
 MAX_ASPECT_WINDOW_DEG = 90.0

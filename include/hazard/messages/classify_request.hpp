@@ -1,5 +1,5 @@
 #pragma once
-// UHZ_CLASSIFY_REQUEST (manual 3.2, rulings D7, D8, D10): ask for the classification of a
+// UHZ_CLASSIFY_REQUEST (manual 3.2, differences.md D7, D8, D10): ask for the classification of a
 // detected object, optionally with a priority (default 50) and an action.
 //
 // Examples: vname=archie,label=152

@@ -1,5 +1,5 @@
 #pragma once
-// UHZ_CONFIG_ACK and UHZ_CONFIG_ACK_<V> (rulings D22, D23): the settings in force after an
+// UHZ_CONFIG_ACK and UHZ_CONFIG_ACK_<V> (differences.md D22, D23): the settings in force after an
 // accepted configuration request (or the automatic default, D4).
 //
 // Example: vname=archie,width=25,pd=0.9,pfa=0.656,pclass=0.8

@@ -1,5 +1,5 @@
 #pragma once
-// UHZ_CONFIG_REQUEST (manual 4.4, rulings D3, D11, "Settings"): choose a sensor setting.
+// UHZ_CONFIG_REQUEST (manual 4.4, differences.md D3, D11, "Settings"): choose a sensor setting.
 //
 // Examples: vname=archie,width=50,pd=0.9   (width request)
 //           vname=archie,pd=0.75           (pd-only update)

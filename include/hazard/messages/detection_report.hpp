@@ -1,5 +1,5 @@
 #pragma once
-// UHZ_DETECTION_REPORT and UHZ_DETECTION_REPORT_<V> (rulings D24, "Report payloads").
+// UHZ_DETECTION_REPORT and UHZ_DETECTION_REPORT_<V> (differences.md D24, "Report payloads").
 //
 // Examples: UHZ_DETECTION_REPORT        = vname=archie,x=-52,y=-290,label=75
 //           UHZ_DETECTION_REPORT_ARCHIE = x=-52,y=-290,label=75

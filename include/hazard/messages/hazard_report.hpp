@@ -1,5 +1,5 @@
 #pragma once
-// UHZ_HAZARD_REPORT and UHZ_HAZARD_REPORT_<V> (rulings D25, "Report payloads"): a released
+// UHZ_HAZARD_REPORT and UHZ_HAZARD_REPORT_<V> (differences.md D25, "Report payloads"): a released
 // classification answer; `type` is the perceived type, which may be wrong.
 //
 // Examples: UHZ_HAZARD_REPORT        = vname=archie,x=-52,y=-290,label=75,type=hazard

@@ -1,5 +1,5 @@
 #pragma once
-// UHZ_OPTIONS_SUMMARY (manual 4.5, ruling D21): the configured sensor options.
+// UHZ_OPTIONS_SUMMARY (manual 4.5, differences.md D21): the configured sensor options.
 //
 // Example: width=25,exp=4,pclass=0.80:width=50,exp=2,pclass=0.60:width=10,exp=6,pclass=0.93,max=1
 //

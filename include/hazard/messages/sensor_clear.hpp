@@ -1,6 +1,6 @@
 #pragma once
-// UHZ_SENSOR_CLEAR (manual 3.2, ruling D10): empty the vehicle's pending classification queue;
-// the credits of the cleared entries are returned.
+// UHZ_SENSOR_CLEAR (manual 3.2, differences.md D10): empty the vehicle's pending classification
+// queue; the credits of the cleared entries are returned.
 //
 // Example: vname=archie
 

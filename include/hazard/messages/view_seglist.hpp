@@ -1,6 +1,6 @@
 #pragma once
-// VIEW_SEGLIST (docs/messages.md, rulings "Visuals"): the aspect axis of an object, drawn with the
-// markers for every object that has an aspect (0 included).
+// VIEW_SEGLIST (docs/messages.md, differences.md "Visuals"): the aspect axis of an object, drawn
+// with the markers for every object that has an aspect (0 included).
 //
 // Example: pts={37,-192:37,-222},edge_color=gray70,vertex_size=0,edge_size=1
 // Points FMT(.,1).

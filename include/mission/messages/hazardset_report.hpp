@@ -10,7 +10,8 @@
 // docs/hazard-file.md with
 // hr, type, width and color suppressed, i.e. `x=FMT(x,2),y=FMT(y,2),label=<label>` followed by
 // `aspect=FMT,aspect_min=FMT,aspect_max=FMT` for the aspect fields the object has (the
-// detection report carries them, rulings "Report payloads"). Shape is never known vehicle-side.
+// detection report carries them, differences.md "Report payloads"). Shape is never known
+// vehicle-side.
 //
 // Parsing follows the original uFldHazardMetric, quirks included (see docs/mission-logic.md):
 // - a part whose text begins with `source`, `name`, `transit_path_width` or `search_region` is

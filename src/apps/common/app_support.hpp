@@ -16,7 +16,7 @@
 namespace app_support {
 
 /// A seed from the operating system's entropy source (std::random_device); the wall clock
-/// only if that source is unavailable. Used when `seed_random = true` (rulings "Seeds").
+/// only if that source is unavailable. Used when `seed_random = true` (differences.md "Seeds").
 std::uint64_t operating_system_seed();
 
 /// The whole file as bytes, or nullopt if it cannot be opened or read.
@@ -42,8 +42,9 @@ std::vector<hazard::ConfigEntry> to_config_entries(const std::vector<moos::Confi
 /// hazard_replay both use: the block's lines go to hazard::load_configuration in file order
 /// with their file and line, hazard files are read relative to `mission_directory`, `origin`
 /// (the mission's LatOrigin/LongOrigin) places LAT/LON-only input, and the seed is resolved
-/// (`command_line_seed`, else random_seed, else seed_random: `os_seed()`, else seed 1; rulings
-/// "Seeds"). Never fails: configuration problems become the engine's config warnings (D26).
+/// (`command_line_seed`, else random_seed, else seed_random: `os_seed()`, else seed 1;
+/// differences.md "Seeds"). Never fails: configuration problems become the engine's config warnings
+/// (D26).
 hazard::Engine make_sensor_engine(const std::vector<moos::ConfigLine>& block_lines,
                                   const std::string& mission_directory,
                                   const hazard::MissionOrigin& origin,

@@ -8,7 +8,7 @@
 // mission::parse_points reads it: `pts={x1,y1:x2,y2:...}` or `x1,y1:x2,y2:...`), so the message
 // has one parser and one formatter. The variable carries the vehicle name, upper-cased like the
 // sensor's per-vehicle variables, because on a single MOOSDB every vehicle's simulator would
-// otherwise follow every route (rulings "Who hears what").
+// otherwise follow every route (differences.md "Who hears what").
 
 #include <string>
 #include <string_view>

@@ -1,7 +1,7 @@
 #pragma once
 // gen_hazards' command line (docs/differences.md D30, D31, and the decisions in
 // docs/gen_hazards.md): one table of options (name, value, default, range, meaning) that the
-// parser, --help and the docs test all read (style practice 5).
+// parser, --help and the docs test all read.
 //
 // Contract
 // - Arguments are processed left to right; a repeated scalar option takes the last value
@@ -29,7 +29,7 @@ inline constexpr int kExitOk = 0;
 inline constexpr int kExitCannotWrite = 1;
 inline constexpr int kExitBadInput = 2;
 
-/// --exp range (manual 6.3, rulings D31); values outside are errors.
+/// --exp range (manual 6.3, differences.md D31); values outside are errors.
 inline constexpr double kMinResemblanceExp = 0.01;
 inline constexpr double kMaxResemblanceExp = 10.0;
 /// --aspect_range: the spread of optimal aspects, at most a full turn.

@@ -1,7 +1,7 @@
 #pragma once
 // moosdb-lite's configuration: the reference MOOSDB's command line and mission globals
 // (docs/protocol.md 5.11) plus our own switches, in one table
-// (style practice 5: the parser and --help read the same rows).
+// (the parser and --help read the same rows).
 //
 // Contract:
 // - parse_command_line() reads the arguments with libmoos's switch table parser

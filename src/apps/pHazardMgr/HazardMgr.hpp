@@ -10,14 +10,14 @@
 //   (app_parameters()). Keys are case-insensitive; a bad value is a configuration warning naming
 //   file, line, parameter and value, and the default stays. The vehicle name is `vname`, else the
 //   community name (the original's rule).
-// - Who hears what (rulings): with `suffixed_mail = true` (default, one MOOSDB for the whole
-//   mission) it reads UHZ_CONFIG_ACK_<V>, UHZ_DETECTION_REPORT_<V>, UHZ_HAZARD_REPORT_<V>,
-//   HAZARD_HANDOVER_<V> and HAZARDSET_REQUEST_<V>; with `false` (a vehicle community into which
-//   uFldShoreBroker / pShare bridge the per-vehicle variables) the same names without the
-//   suffix. UHZ_MISSION_PARAMS is read as it is. Its own pose comes from `node_report_var`
-//   (NODE_REPORT): reports whose NAME is another vehicle's are skipped silently, since on one
-//   MOOSDB every vehicle's reports arrive. Malformed mail is a run warning naming variable and
-//   field; the library's own warnings (mail for another vehicle, ...) are passed on.
+// - Who hears what (differences.md "Who hears what"): with `suffixed_mail = true` (default, one
+//   MOOSDB for the whole mission) it reads UHZ_CONFIG_ACK_<V>, UHZ_DETECTION_REPORT_<V>,
+//   UHZ_HAZARD_REPORT_<V>, HAZARD_HANDOVER_<V> and HAZARDSET_REQUEST_<V>; with `false` (a vehicle
+//   community into which uFldShoreBroker / pShare bridge the per-vehicle variables) the same names
+//   without the suffix. UHZ_MISSION_PARAMS is read as it is. Its own pose comes from
+//   `node_report_var` (NODE_REPORT): reports whose NAME is another vehicle's are skipped silently,
+//   since on one MOOSDB every vehicle's reports arrive. Malformed mail is a run warning naming
+//   variable and field; the library's own warnings (mail for another vehicle, ...) are passed on.
 // - Times: mail is handed over with its own time stamp, never later than the cycle's time; a
 //   node report's TIME field, when present, is the pose's time. tick() runs every iteration.
 // - HAZARDSET_REQUEST: the report is posted at the first iteration at least `detection_latency`

@@ -13,8 +13,8 @@ std::string help_text() {
       "uFldHazardMetric: the same parameters, messages and score formula.\n"
       "It reads the ground truth (the sensor's hazard file), grades every\n"
       "HAZARDSET_REPORT and posts HAZARD_SEARCH_SCORE and HAZARDSET_EVAL. One fix: with\n"
-      "nothing to lose (no objects, or zero penalties) the score is 100 or 0, never NaN\n"
-      "(N17). See docs/mission-logic.md.\n");
+      "nothing to lose (no objects, or zero penalties) the score is 100 or 0, never NaN.\n"
+      "See docs/mission-logic.md.\n");
 }
 
 std::string example_text() {

@@ -15,7 +15,7 @@ namespace {
 using detail::field_value;
 using detail::missing_field;
 
-// Ranges from the rulings' validation table (D27, D28).
+// Ranges from differences.md "Validation" (D27, D28).
 constexpr double kMaxAspectDeg = 360.0;       // aspect in [0, 360)
 constexpr double kMaxAspectWindowDeg = 90.0;  // aspect_min, aspect_max in [0, 90], sum <= 90
 

@@ -1,4 +1,4 @@
-// Help and version text of gen_hazards (style practice 5: the text comes from the option table)
+// Help and version text of gen_hazards (the text comes from the option table)
 // and the user page that must document the same options.
 
 #include <gtest/gtest.h>

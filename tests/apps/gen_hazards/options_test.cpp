@@ -75,7 +75,7 @@ TEST(GenHazardsOptions, ObjectsCountThatIsNotAWholeNumberIsAnError_N15) {
 }
 
 TEST(GenHazardsOptions, ObjectsTypeOtherThanHazardOrBenignIsAnError) {
-  // The sensor rejects any other type (rulings' validation table); the original wrote it.
+  // The sensor rejects any other type (differences.md "Validation"); the original wrote it.
   for (const std::string bad : {"--objects=5,inert", "--objects=5,", "--objects=5", "--objects=5,hazard,x"}) {
     expect_single_error_naming({kBox, bad}, bad);
   }

@@ -257,8 +257,8 @@ TEST(ReplayProcess, UntilBeyondTheInputKeepsIterating) {
   EXPECT_EQ(run(dir, {"m.moos", "in.alog", "--until=1e12"}).exit_code, 1);  // guard
 }
 
-// The same survey with poses at 2 Hz and at 10 Hz: the same detections (rulings "What is
-// promised"; every object lies well inside the swath).
+// The same survey with poses at 2 Hz and at 10 Hz: the same detections (differences.md
+// "What is promised"; every object lies well inside the swath).
 TEST(ReplayProcess, PoseRateDoesNotChangeTheDetections) {
   ScratchDir dir;
   std::set<std::string> seen[2];

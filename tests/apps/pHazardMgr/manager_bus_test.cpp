@@ -1,6 +1,6 @@
 // pHazardMgr's app class on the in-process bus with a manual clock: which variables it hears
-// (rulings "Who hears what"), its own pose from NODE_REPORT, the setting and sensor requests,
-// classification requests, when the HAZARDSET_REPORT is posted, the hand-over, and the
+// (differences.md "Who hears what"), its own pose from NODE_REPORT, the setting and sensor
+// requests, classification requests, when the HAZARDSET_REPORT is posted, the hand-over, and the
 // reacquisition route; and that it posts exactly what libmission's HazardManager decides.
 #include <gtest/gtest.h>
 

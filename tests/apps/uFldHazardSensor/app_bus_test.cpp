@@ -105,7 +105,7 @@ TEST_F(SensorOnBus, OptionsSummaryOnTheFirstIterationThenEveryInterval_4_5_D21) 
   EXPECT_EQ(posts[0].time, kT0);
   EXPECT_EQ(posts[1].time, kT0 + 5.0);
   EXPECT_EQ(posts[2].time, kT0 + 10.0);
-  // Amended T3: file order, pclass= keys, the values as written.
+  // T3 (differences.md): file order, pclass= keys, the values as written.
   for (const auto& p : posts) {
     EXPECT_EQ(p.sval, "width=25,exp=4,pclass=0.80:width=50,exp=2,pclass=0.60:width=10,exp=6,pclass=0.93");
   }
@@ -211,7 +211,7 @@ TEST_F(SensorOnBus, AliasSelectsTheBlockAndAMissingBlockIsAWarning_D26) {
   EXPECT_EQ(values_of("UHZ_OPTIONS_SUMMARY"), std::vector<std::string>{""});
 }
 
-// ---- mail (docs/messages.md, style practice 4) -------------------------------------------------
+// ---- mail (docs/messages.md: bad mail is warned, the app keeps serving) -------------------------
 
 TEST_F(SensorOnBus, BadMailGivesARunWarningNamingItAndTheAppKeepsServing) {
   start(std::string(kField) + kOptions);
@@ -324,7 +324,7 @@ TEST_F(SensorOnBus, VerboseWritesEveryPostingAndEventAsAlogLines_D29) {
   EXPECT_TRUE(base::starts_with(run_warnings[0], "NODE_REPORT: ")) << run_warnings[0];
 }
 
-// ---- seeds (rulings "Seeds") ---------------------------------------------------------------------
+// ---- seeds (differences.md "Seeds") -------------------------------------------------------------
 
 TEST_F(SensorOnBus, RandomSeedFixesTheSeedAndBeatsSeedRandom) {
   start(std::string(kField) + kOptions + "  seed_random = false\n  random_seed = 99\n");

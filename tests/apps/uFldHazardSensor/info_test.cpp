@@ -64,7 +64,7 @@ std::optional<std::string> example_value(const std::string& example, const std::
   return std::nullopt;
 }
 
-// ---- --example (manual 10.1; rulings "--example") ---------------------------------------------------
+// ---- --example (manual 10.1; differences.md "--example") ----------------------------------------
 
 TEST_F(SensorOnBus, ExampleAsPrintedLoadsWithZeroConfigWarnings) {
   write_file(dir / "hazards.txt",
@@ -123,7 +123,8 @@ TEST(Example, NamesEveryParameterOfTheManualsListing_10_3) {
         "show_pfa", "min_reset_interval", "min_classify_interval", "options_summary_interval"}) {
     EXPECT_TRUE(example_value(example, name).has_value()) << name;
   }
-  // Listed differences (docs/uFldHazardSensor.md): pclass= for class=, the rulings' defaults.
+  // Listed differences (docs/uFldHazardSensor.md): pclass= for class=, differences.md
+  // "Effective defaults".
   EXPECT_EQ(example_value(example, "seed_random"), "true");    // D16 (the listing says false)
   EXPECT_EQ(example_value(example, "show_pfa"), "false");      // D15 (the listing says true)
   EXPECT_EQ(example_value(example, "show_detections"), "nolimit");

@@ -29,7 +29,7 @@ using testing::node_report;
 
 // ---- hand computations ----------------------------------------------------------------------------
 
-/// The swath of scenario A at (0, y), heading 0 (D1, D2, amended T1): W = 20 m to each side,
+/// The swath of scenario A at (0, y), heading 0 (differences.md D1, D2, T1): W = 20 m to each side,
 /// swath_length 4 m in total (2 m fore and aft); corners front-starboard, rear-starboard,
 /// rear-port, front-port = (20, y+2) (20, y-2) (-20, y-2) (-20, y+2), FMT(., 1). The label is
 /// FIX(pd, 2) alone (show_pd true, show_pfa false by default, D15); fill white (sensor on:

@@ -1,4 +1,4 @@
-// UHZ_CONFIG_REQUEST: the forms of manual 4.4 and the rulings' rejections.
+// UHZ_CONFIG_REQUEST: the forms of manual 4.4 and the rejections of differences.md "Settings".
 #include <gtest/gtest.h>
 
 #include "hazard/messages/config_request.hpp"

@@ -1,4 +1,4 @@
-// NODE_REPORT: parser and formatter (T9); round trips keep the pair in sync (style 10).
+// NODE_REPORT: parser and formatter (T9); round trips keep the pair in sync.
 #include <gtest/gtest.h>
 
 #include "hazard/messages/node_report.hpp"

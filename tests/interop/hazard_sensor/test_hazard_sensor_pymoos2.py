@@ -44,7 +44,7 @@ BLOCK = """\
   hazard = x=-8,y=41,label=b1,type=benign
 """
 
-# Hand computations (manual 4, 10; rulings D3, D21-D25).
+# Hand computations (manual 4, 10; differences.md D3, D21-D25).
 # Options summary: file order, pclass= keys, values as written.
 SUMMARY = "width=20,exp=2,pclass=1.0:width=10,exp=4,pclass=0.90"
 # Width 15 is not an option: the next lower, 10 (exp 4, pclass 0.90). pfa = 0.9^4 = 0.6561,
@@ -59,7 +59,7 @@ ANSWERS = ["x=5,y=21,label=h1,type=hazard", "x=-8,y=41,label=b1,type=benign"]
 
 
 def swath(y):
-    """The swath at (0, y), heading 0: 20 m to each side, 2 m fore and aft (rulings T1)."""
+    """The swath at (0, y), heading 0: 20 m to each side, 2 m fore and aft (differences.md T1)."""
     return ("pts={20,%d:20,%d:-20,%d:-20,%d},label=sensor_swath_alpha,msg=1.00,edge_color=green,"
             "fill_color=white,vertex_size=0,edge_size=0,fill_transparency=0.2"
             % (y + 2, y - 2, y - 2, y + 2))

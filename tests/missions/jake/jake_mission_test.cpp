@@ -1,4 +1,4 @@
-// The Jake mission end to end (manual 13; rulings D33, D34, "Missions and tests"):
+// The Jake mission end to end (manual 13; differences.md D33, D34, "Missions and tests"):
 // missions/jake/launch.sh runs once at a high warp on moosdb-lite, then its run folder is
 // checked:
 // - every process started (connected to the MOOSDB) and stopped (closed its connection), and no
@@ -133,7 +133,7 @@ TEST_F(JakeMission, NoProcessIsLeftRunning) {
   EXPECT_EQ(processes_mentioning(run().dir.string()), std::vector<std::string>{});
 }
 
-// ---- archie's detection rates (manual 3.1; ruling "Rate checks on small fields") ---------
+// ---- archie's detection rates (manual 3.1; differences.md "Rate checks on small fields") --------
 
 struct Setting {
   double pd = 0.0, pfa = 0.0;
@@ -213,9 +213,9 @@ TEST_F(JakeMission, ArchieDetectionRatesAgreeWithItsAckedPdAndPfa) {
   EXPECT_GT(binomial_cdf_at_most(n_b, live.benign, acked.pfa), kFiveSigmaTail) << live.benign << "/" << n_b;
   EXPECT_GT(binomial_cdf_at_least(n_b, live.benign, acked.pfa), kFiveSigmaTail) << live.benign << "/" << n_b;
 
-  // The same inputs and the same seed give the same detections (rulings "Passes, dice and
-  // reproducibility"): the live sensor decided exactly what hazard_replay decides offline. Which
-  // passes happen depends on the poses sampled, and the live sensor samples at its own
+  // The same inputs and the same seed give the same detections (differences.md "Passes, dice
+  // and reproducibility"): the live sensor decided exactly what hazard_replay decides offline.
+  // Which passes happen depends on the poses sampled, and the live sensor samples at its own
   // iterations: one grazing pass may differ, so one detection may differ each way.
   std::multiset<std::string> live_labels, replay_labels;
   for (const auto& e : run().log)

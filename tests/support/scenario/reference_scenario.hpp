@@ -1,6 +1,6 @@
 #pragma once
-// A fixed survey scenario shared by the tests and the benchmarks (style practice 11). Test and
-// bench support, not production: the `scenario_support` library, outside src/.
+// A fixed survey scenario shared by the tests and the benchmarks (its determinism hash is
+// pinned). Test and bench support, not production: the `scenario_support` library, outside src/.
 //
 // Two vehicles mow a 200-object field (hazards, benign objects with resemblance, aspect-sensitive
 // objects) along straight legs at 1.5 m/s: archie with the 10 m option on five legs, betty with
