@@ -33,6 +33,10 @@ std::string WebViewer::url() const {
   return "http://" + config_.http.bind_address + ":" + std::to_string(http_port()) + "/";
 }
 
+std::string WebViewer::page_url() const {
+  return server_ ? url() + "?token=" + server_->token() : url();
+}
+
 void WebViewer::update_hello() {
   Hello h = configured_hello(config_);
   h.community = community();
@@ -73,7 +77,7 @@ bool WebViewer::on_start_up() {
     std::cerr << kAppName << ": " << error << std::endl;
     return false;
   }
-  std::cout << kAppName << ": serving " << url() << std::endl;
+  std::cout << kAppName << ": serving " << page_url() << std::endl;
   for (const std::string& w : config_.watch) {
     if (w.find_first_of("*?") != std::string::npos)
       register_wildcard(w, "*");
