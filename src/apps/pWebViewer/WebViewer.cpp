@@ -150,6 +150,8 @@ std::string WebViewer::build_report() {
          " served, " + std::to_string(hub.dropped()) + " dropped for falling behind\n";
   out += "Buttons:   " + std::to_string(config_.buttons.size()) + " configured, " +
          std::to_string(presses_posted_) + " presses posted\n";
+  out += "Refused:   " + std::to_string(server_->refused_hosts()) + " requests by a foreign Host name, " +
+         std::to_string(server_->refused_posts()) + " posts from another site or without the token\n";
   return out;
 }
 

@@ -80,14 +80,20 @@ std::optional<std::string> header(const httplib::Request& req, const char* name)
 
 void HttpServer::add_guard(const HttpOptions& options) {
   GuardConfig config{options.bind_address, port_, options.allowed_hosts, token_};
-  server_->set_pre_routing_handler([config](const httplib::Request& req, httplib::Response& res) {
+  server_->set_pre_routing_handler([this, config](const httplib::Request& req, httplib::Response& res) {
+    // On every answer: no other site may frame the page and lay it under its own clicks.
     res.set_header("X-Frame-Options", "DENY");
     res.set_header("Content-Security-Policy", "frame-ancestors 'none'");
-    const RequestFacts facts{req.method,           req.get_header_value_count("Host"),
-                             header(req, "Host"),   header(req, "Origin"),
-                             header(req, "Sec-Fetch-Site"), header(req, kTokenHeader)};
+    RequestFacts facts;
+    facts.method = req.method;
+    facts.host_headers = req.get_header_value_count("Host");
+    facts.host = header(req, "Host");
+    facts.origin = header(req, "Origin");
+    facts.sec_fetch_site = header(req, "Sec-Fetch-Site");
+    facts.token = header(req, kTokenHeader);
     const auto refusal = check_request(config, facts);
     if (!refusal) return httplib::Server::HandlerResponse::Unhandled;
+    ++(refusal->status == 421 ? refused_hosts_ : refused_posts_);
     res.status = refusal->status;
     res.set_content(refusal->text, "text/plain");
     return httplib::Server::HandlerResponse::Handled;

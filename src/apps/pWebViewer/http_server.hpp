@@ -22,6 +22,8 @@
 // - POST /button/<n>: 404 unless `press(n)` accepts n; 204 when it does.
 // - stop() ends every stream and joins the threads; the destructor stops.
 
+#include <atomic>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <string>
@@ -69,6 +71,9 @@ class HttpServer {
   int port() const { return port_; }
   /// The run's secret that every POST must carry (32 hex digits, new for each server).
   const std::string& token() const { return token_; }
+  /// Requests refused for their Host name (421), and for their origin or token (403).
+  std::uint64_t refused_hosts() const { return refused_hosts_; }
+  std::uint64_t refused_posts() const { return refused_posts_; }
 
  private:
   void add_routes();
@@ -77,6 +82,8 @@ class HttpServer {
   std::function<bool(int)> press_;
   std::string replay_json_;
   const std::string token_;
+  std::atomic<std::uint64_t> refused_hosts_{0};
+  std::atomic<std::uint64_t> refused_posts_{0};
   std::unique_ptr<BoundedHttpServer> server_;
   std::thread thread_;
   int port_ = 0;

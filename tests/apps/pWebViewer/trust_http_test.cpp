@@ -79,6 +79,7 @@ TEST_F(TrustHttp, AHostNameTheServerDoesNotGoByIsRefusedAndNothingLeaks_Hardenin
     }
   }
   EXPECT_EQ(hub.served(), 0u);
+  EXPECT_EQ(server.refused_hosts(), 3 * foreign.size());  // counted for the AppCast
   for (const std::string host : {"127.0.0.1:", "localhost:", "LocalHost:", "[::1]:", "viewer.lab.example:"}) {
     const std::string reply = raw_exchange(port, get("/replay.json", "Host: " + host + p + "\r\n"));
     EXPECT_EQ(status_of(reply), 200) << host;
@@ -108,6 +109,7 @@ TEST_F(TrustHttp, APostFromAnotherOriginOrWithoutTheTokenPressesNothing_Hardenin
     EXPECT_NE(body_of(reply).find("refused"), std::string::npos) << reply;
   }
   EXPECT_EQ(presses.load(), 0);
+  EXPECT_EQ(server.refused_posts(), refused.size());
   // The page's own press: same origin, its token.
   EXPECT_EQ(status_of(raw_exchange(port, post(own_origin + "Sec-Fetch-Site: same-origin\r\n" + token_line()))), 204);
   EXPECT_EQ(presses.load(), 1);
