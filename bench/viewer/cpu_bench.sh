@@ -61,7 +61,8 @@ MOOS
 "$APPS/pWebViewer/pWebViewer" "$DIR/bench.moos" --moos_tw_delay_factor=0 >"$DIR/viewer.out" 2>&1 &
 VIEWER=$!; PIDS+=("$VIEWER")
 for _ in $(seq 200); do grep -q 'serving http://' "$DIR/viewer.out" && break; sleep 0.05; done
-URL="$(grep -o 'http://[^ ]*' "$DIR/viewer.out" | head -n 1)"
+# The address without the printed ?token= (reading the stream needs none).
+URL="$(grep -o 'http://[^ ?]*' "$DIR/viewer.out" | head -n 1)"
 for ((i = 0; i < CLIENTS; i++)); do
   curl -sN "${URL}events" >"$DIR/client$i.out" &
   PIDS+=("$!")

@@ -18,7 +18,8 @@
 #      free port, with pLogLite writing the same .alog), and writes targ_<mission>.moos, the
 #      mission file with every $(NAME) filled in;
 #   3. with ML_VIEWER set (and pWebViewer built), starts pWebViewer, the browser view, and prints
-#      its URL (the page is live while the mission runs);
+#      its URL with the run's token (?token=..., which the page's buttons need; the page is live
+#      while the mission runs);
 #      starts every process of the mission, waits until all of them are connected (DB_CLIENTS),
 #      then pokes DEPLOY_ALL=true and HAZARD_SEARCH_START=true;
 #   4. shows a one-line progress display (simulated time, detections, classifications) until

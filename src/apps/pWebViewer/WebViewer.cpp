@@ -33,6 +33,10 @@ std::string WebViewer::url() const {
   return "http://" + config_.http.bind_address + ":" + std::to_string(http_port()) + "/";
 }
 
+std::string WebViewer::page_url() const {
+  return server_ ? url() + "?token=" + server_->token() : url();
+}
+
 void WebViewer::update_hello() {
   Hello h = configured_hello(config_);
   h.community = community();
@@ -73,7 +77,7 @@ bool WebViewer::on_start_up() {
     std::cerr << kAppName << ": " << error << std::endl;
     return false;
   }
-  std::cout << kAppName << ": serving " << url() << std::endl;
+  std::cout << kAppName << ": serving " << page_url() << std::endl;
   for (const std::string& w : config_.watch) {
     if (w.find_first_of("*?") != std::string::npos)
       register_wildcard(w, "*");
@@ -146,6 +150,8 @@ std::string WebViewer::build_report() {
          " served, " + std::to_string(hub.dropped()) + " dropped for falling behind\n";
   out += "Buttons:   " + std::to_string(config_.buttons.size()) + " configured, " +
          std::to_string(presses_posted_) + " presses posted\n";
+  out += "Refused:   " + std::to_string(server_->refused_hosts()) + " requests by a foreign Host name, " +
+         std::to_string(server_->refused_posts()) + " posts from another site or without the token\n";
   return out;
 }
 

@@ -7,7 +7,9 @@
 // - Configuration: viewer_config.hpp. A bad line is a configuration warning; an address that
 //   cannot be bound ends start-up (exit 1) with a message naming it.
 // - At start-up the server listens and the URL is printed on standard output as
-//   `pWebViewer: serving http://HOST:PORT/` (the port the OS chose when http_port = 0).
+//   `pWebViewer: serving http://HOST:PORT/?token=TOKEN` (the port the OS chose when
+//   http_port = 0; the token the page needs to press buttons, request_guard.hpp). The AppCast
+//   shows the URL without the token, since every MOOS client can read it.
 // - Mail of watched variables goes to the LiveFeed in the order the app base hands it over
 //   (sorted by time within a cycle). The MOOS side never waits for a browser (event_hub.hpp).
 // - Each iteration: the button presses the server took since the last one are posted (each
@@ -51,6 +53,10 @@ class WebViewer final : public mission_app::MissionApp {
   /// The port the server listens on (0 before start-up).
   int http_port() const { return server_ ? server_->port() : 0; }
   std::string url() const;
+  /// url() with the run's token: what the user opens to press buttons.
+  std::string page_url() const;
+  /// The run's token ("" before start-up).
+  std::string token() const { return server_ ? server_->token() : std::string(); }
   /// Presses button `index` as POST /button/<index> does; false when it is not configured.
   bool press(int index);
   const LiveFeed* feed() const { return feed_.get(); }

@@ -10,6 +10,7 @@ namespace {
 const std::vector<mission::ParamInfo> kServer = {
     {"http_port", "8080", "TCP port of the page (0: any free port, printed at start-up)"},
     {"http_bind", "127.0.0.1", "address to listen on (0.0.0.0 lets other machines in)"},
+    {"allowed_hosts", "", "more Host names the page may be opened by (comma list; repeatable)"},
     {"max_clients", "8", "browsers connected at once (1..64)"},
     {"max_queued", "20000", "events waiting per browser before it is dropped as too slow"},
 };
@@ -46,7 +47,8 @@ std::string help_text() {
       "Serves a live map of the mission to a browser: vehicles and trails (NODE_REPORT),\n"
       "markers, polygons, circles, seglists and points (VIEW_*), each app's AppCast and\n"
       "the score, over HTTP with server-sent events. Without a MOOSDB it replays an .alog.\n"
-      "See docs/viewer.md.\n",
+      "Open the URL it prints (http://HOST:PORT/?token=...): the buttons work only with\n"
+      "that run's token. See docs/viewer.md (\"Trust model\").\n",
       "  --replay=FILE.alog\n"
       "      Serve the page driven by the log instead of a MOOSDB\n"
       "      (until SIGINT or SIGTERM; the mission file is optional).\n"

@@ -1,5 +1,6 @@
 #include "bounded_http_server.hpp"
 
+#include <netdb.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
@@ -61,6 +62,31 @@ class WaitBoundedQueue final : public httplib::TaskQueue {
   httplib::ThreadPool pool_;
 };
 
+/// Answers 503 and closes, best effort and never blocking (on the listening thread, it must go
+/// on accepting).
+void refuse(socket_t sock) {
+  (void)::send(sock, kBusyReply, sizeof kBusyReply - 1, MSG_NOSIGNAL | MSG_DONTWAIT);
+  shut_and_close(sock);
+}
+
+/// The numeric address of the peer of `sock` ("" when unknown).
+std::string peer_address(socket_t sock) {
+  sockaddr_storage address{};
+  socklen_t length = sizeof address;
+  char host[NI_MAXHOST] = "";
+  if (::getpeername(sock, reinterpret_cast<sockaddr*>(&address), &length) != 0 ||
+      ::getnameinfo(reinterpret_cast<const sockaddr*>(&address), length, host, sizeof host,
+                    nullptr, 0, NI_NUMERICHOST) != 0)
+    return std::string();
+  return host;
+}
+
+/// Whether the request announced a body (that httplib would read before routing).
+bool announces_body(const httplib::Request& req) {
+  return req.has_header("Transfer-Encoding") ||
+         (req.has_header("Content-Length") && req.get_header_value("Content-Length") != "0");
+}
+
 }  // namespace
 
 BoundedHttpServer::BoundedHttpServer(std::size_t body_limit)
@@ -74,32 +100,55 @@ void BoundedHttpServer::set_pool_threads(std::size_t threads) {
 
 bool BoundedHttpServer::process_and_close_socket(socket_t sock) {
   if (t_refuse_connection) {
-    // Best effort and never blocking: the listening thread must go on accepting.
-    (void)::send(sock, kBusyReply, sizeof kBusyReply - 1, MSG_NOSIGNAL | MSG_DONTWAIT);
-    shut_and_close(sock);
+    refuse(sock);
+    return false;
+  }
+  const std::string address = peer_address(sock);
+  if (!take_address_slot(address)) {
+    refuse(sock);
     return false;
   }
   const bool served = serve_connection(sock);
   shut_and_close(sock);
+  release_address_slot(address);
   return served;
+}
+
+bool BoundedHttpServer::take_address_slot(const std::string& address) {
+  std::lock_guard<std::mutex> lock(addresses_mutex_);
+  std::size_t& count = connections_of_address_[address];
+  if (count >= kMaxConnectionsPerAddress) return false;
+  ++count;
+  return true;
+}
+
+void BoundedHttpServer::release_address_slot(const std::string& address) {
+  std::lock_guard<std::mutex> lock(addresses_mutex_);
+  const auto it = connections_of_address_.find(address);
+  if (it != connections_of_address_.end() && --it->second == 0) connections_of_address_.erase(it);
 }
 
 bool BoundedHttpServer::serve_connection(socket_t sock) {
   BoundedStream stream(sock, to_milliseconds(read_timeout_sec_, read_timeout_usec_),
                        to_milliseconds(write_timeout_sec_, write_timeout_usec_),
-                       kMaxRequestHeadBytes, body_read_limit_);
+                       kMaxRequestHeadBytes, body_read_limit_, kRequestDeadline_ms);
   // httplib calls this once the head is parsed, before it reads a body.
-  const std::function<void(httplib::Request&)> head_parsed = [&stream](httplib::Request&) {
+  bool body_announced = false;
+  const std::function<void(httplib::Request&)> head_parsed = [&](httplib::Request& req) {
     stream.end_head();
+    body_announced = announces_body(req);
   };
   bool served = false;
   for (std::size_t left = keep_alive_max_count_; left > 0 && next_request_arrives(stream);
        --left) {
     stream.begin_request();
+    body_announced = false;
     bool client_closes = false;
     served = process_request(stream, left == 1, client_closes, head_parsed);
-    // A request cut at a bound left unread bytes: what follows is no request.
-    if (!served || client_closes || stream.exhausted()) break;
+    // A request cut at a bound, or refused before its body was read, left unread bytes: what
+    // follows is no request.
+    const bool body_unread = body_announced && stream.body_given() == 0;
+    if (!served || client_closes || stream.exhausted() || body_unread) break;
   }
   return served;
 }

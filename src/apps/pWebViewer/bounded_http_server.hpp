@@ -16,6 +16,10 @@
 // - After the head, at most body_limit + kBodyFramingBytes bytes of body are read; httplib
 //   answers 413 to a Content-Length over body_limit (set_payload_max_length) and 400 to a
 //   chunked or length-less body cut at the bound; the connection is then closed.
+// - A request (head and body) must arrive whole within kRequestDeadline_ms of its first byte,
+//   however slowly it trickles; past it httplib answers 400 and the connection is closed.
+// - A request whose body was announced but not read (a route refused it first) closes the
+//   connection after its answer, so that the body is never read as a request.
 // - Reads wait at most the server's read timeout, writes its write timeout (httplib's
 //   defaults, or set_read_timeout / set_write_timeout); an idle keep-alive connection is closed
 //   after its keep-alive timeout, or at once when the server stops; at most
@@ -23,11 +27,16 @@
 //   stream's chunks among them, are written through the same stream.
 // - Connections: set_pool_threads(n) serves at most n at once; at most kMaxWaitingConnections
 //   more wait for a thread; beyond that a new connection gets 503 and is closed at once, so
-//   queued connections cannot grow without bound either.
+//   queued connections cannot grow without bound either. At most kMaxConnectionsPerAddress
+//   connections of one client address are served at once: a further one gets 503 and is closed
+//   as soon as a thread takes it, so a few slow clients cannot hold every thread.
 
 #include <httplib.h>
 
 #include <cstddef>
+#include <map>
+#include <mutex>
+#include <string>
 
 namespace web_viewer {
 
@@ -42,6 +51,10 @@ class BoundedHttpServer : public httplib::Server {
   static constexpr std::size_t kBodyFramingBytes = 1024;
   /// Accepted connections waiting for a free thread beyond which new ones are refused.
   static constexpr std::size_t kMaxWaitingConnections = 64;
+  /// Connections of one client address served at once (a browser opens at most 6 per server).
+  static constexpr std::size_t kMaxConnectionsPerAddress = 8;
+  /// How long a request's head and body may take to arrive, from its first byte.
+  static constexpr int kRequestDeadline_ms = 10000;
 
   /// `body_limit`: the largest request body accepted, bytes (413 above it).
   explicit BoundedHttpServer(std::size_t body_limit);
@@ -56,8 +69,13 @@ class BoundedHttpServer : public httplib::Server {
   /// Whether the next request of a keep-alive connection starts in time (false when the
   /// server stops).
   bool next_request_arrives(const BoundedStream& stream) const;
+  /// Counts a connection of `address`; false (counting nothing) when it has its share already.
+  bool take_address_slot(const std::string& address);
+  void release_address_slot(const std::string& address);
 
   std::size_t body_read_limit_;
+  std::mutex addresses_mutex_;
+  std::map<std::string, std::size_t> connections_of_address_;
 };
 
 }  // namespace web_viewer

@@ -40,16 +40,25 @@ void address_of(const sockaddr_storage& address, socklen_t length, std::string& 
 }  // namespace
 
 BoundedStream::BoundedStream(socket_t sock, int read_timeout_ms, int write_timeout_ms,
-                             std::size_t head_limit, std::size_t body_limit)
+                             std::size_t head_limit, std::size_t body_limit,
+                             int request_deadline_ms)
     : sock_(sock),
       read_timeout_ms_(read_timeout_ms),
       write_timeout_ms_(write_timeout_ms),
       head_limit_(head_limit),
-      body_limit_(body_limit) {}
+      body_limit_(body_limit),
+      request_deadline_ms_(request_deadline_ms) {}
 
 void BoundedStream::begin_request() {
   in_head_ = true;
   given_ = 0;
+  deadline_ = std::chrono::steady_clock::now() + std::chrono::milliseconds(request_deadline_ms_);
+}
+
+int BoundedStream::until_deadline_ms() const {
+  const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
+      deadline_ - std::chrono::steady_clock::now());
+  return left.count() > 0 ? static_cast<int>(left.count()) : 0;
 }
 
 void BoundedStream::end_head() {
@@ -65,8 +74,8 @@ bool BoundedStream::is_readable() const { return wait_readable(read_timeout_ms_)
 
 bool BoundedStream::is_writable() const { return wait_for(sock_, POLLOUT, write_timeout_ms_); }
 
-ssize_t BoundedStream::fill() {
-  if (!wait_for(sock_, POLLIN, read_timeout_ms_)) return -1;
+ssize_t BoundedStream::fill(int timeout_ms) {
+  if (!wait_for(sock_, POLLIN, timeout_ms)) return -1;
   ssize_t n = 0;
   do {
     n = ::recv(sock_, buffer_.data(), buffer_.size(), 0);
@@ -83,7 +92,18 @@ ssize_t BoundedStream::read(char* ptr, size_t size) {
     return 0;
   }
   if (!has_buffered()) {
-    const ssize_t received = fill();
+    // A slow sender's request ends at its deadline, as at a bound: one line every few seconds
+    // would otherwise hold a thread for as long as it likes.
+    const int left_ms = until_deadline_ms();
+    if (left_ms == 0) {
+      exhausted_ = true;
+      return 0;
+    }
+    const ssize_t received = fill(std::min(read_timeout_ms_, left_ms));
+    if (received < 0 && until_deadline_ms() == 0) {
+      exhausted_ = true;
+      return 0;
+    }
     if (received <= 0) return received;
   }
   const std::size_t n = std::min({size, end_ - begin_, limit - given_});

@@ -3,9 +3,11 @@
 #include <httplib.h>
 
 #include <chrono>
+#include <optional>
 
 #include "base/text.hpp"
 #include "bounded_http_server.hpp"
+#include "request_guard.hpp"
 #include "web_files.hpp"
 
 namespace web_viewer {
@@ -13,6 +15,7 @@ namespace web_viewer {
 HttpServer::HttpServer(EventHub& hub, std::function<bool(int)> press)
     : hub_(hub),
       press_(std::move(press)),
+      token_(new_token()),
       server_(std::make_unique<BoundedHttpServer>(kMaxRequestBodyBytes)) {}
 
 HttpServer::~HttpServer() { stop(); }
@@ -66,6 +69,37 @@ void HttpServer::add_routes() {
   });
 }
 
+namespace {
+
+std::optional<std::string> header(const httplib::Request& req, const char* name) {
+  if (!req.has_header(name)) return std::nullopt;
+  return req.get_header_value(name);
+}
+
+}  // namespace
+
+void HttpServer::add_guard(const HttpOptions& options) {
+  GuardConfig config{options.bind_address, port_, options.allowed_hosts, token_};
+  server_->set_pre_routing_handler([this, config](const httplib::Request& req, httplib::Response& res) {
+    // On every answer: no other site may frame the page and lay it under its own clicks.
+    res.set_header("X-Frame-Options", "DENY");
+    res.set_header("Content-Security-Policy", "frame-ancestors 'none'");
+    RequestFacts facts;
+    facts.method = req.method;
+    facts.host_headers = req.get_header_value_count("Host");
+    facts.host = header(req, "Host");
+    facts.origin = header(req, "Origin");
+    facts.sec_fetch_site = header(req, "Sec-Fetch-Site");
+    facts.token = header(req, kTokenHeader);
+    const auto refusal = check_request(config, facts);
+    if (!refusal) return httplib::Server::HandlerResponse::Unhandled;
+    ++(refusal->status == 421 ? refused_hosts_ : refused_posts_);
+    res.status = refusal->status;
+    res.set_content(refusal->text, "text/plain");
+    return httplib::Server::HandlerResponse::Handled;
+  });
+}
+
 bool HttpServer::start(const HttpOptions& options, std::string* error) {
   const std::size_t threads = options.max_clients + kSpareThreads;
   server_->set_pool_threads(threads);
@@ -86,6 +120,7 @@ bool HttpServer::start(const HttpOptions& options, std::string* error) {
     *error = "cannot listen on " + options.bind_address + ":" + std::to_string(options.port);
     return false;
   }
+  add_guard(options);  // it needs the bound port
   thread_ = std::thread([this] { server_->listen_after_bind(); });
   // httplib's stop() does nothing before the loop runs: wait for it, so that a stop right after
   // start() (a short test, a start-up that fails later) cannot leave the thread listening.

@@ -11,6 +11,10 @@
 //   BoundedHttpServer::kMaxRequestHeadBytes (400 beyond it), a body of at most
 //   kMaxRequestBodyBytes (413), at most kMaxWaitingConnections connections waiting for a thread
 //   (503 beyond them); bounded_http_server.hpp.
+// - Every request first passes request_guard.hpp's checks (the Host header; for a POST also
+//   Origin, Sec-Fetch-Site and the run's token, token()), else 421 or 403 with a short text and
+//   no route runs. Every answer forbids framing (X-Frame-Options, frame-ancestors), so no other
+//   site can lay the page under its own clicks.
 // - GET / and GET /<file>: the embedded files (web_files.hpp), 404 for anything else.
 // - GET /events: text/event-stream; the hub's events, one `data:` line each; a comment line
 //   every kKeepAlive_s when there is nothing to send. 503 when max_clients streams are open.
@@ -18,10 +22,13 @@
 // - POST /button/<n>: 404 unless `press(n)` accepts n; 204 when it does.
 // - stop() ends every stream and joins the threads; the destructor stops.
 
+#include <atomic>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "event_hub.hpp"
 
@@ -33,6 +40,8 @@ struct HttpOptions {
   std::string bind_address = "127.0.0.1";
   int port = 8080;
   std::size_t max_clients = 8;
+  /// Host names accepted besides loopback and the bound address (lower case; request_guard.hpp).
+  std::vector<std::string> allowed_hosts;
 };
 
 class HttpServer {
@@ -60,12 +69,21 @@ class HttpServer {
   void stop();
   /// The bound port (after start()).
   int port() const { return port_; }
+  /// The run's secret that every POST must carry (32 hex digits, new for each server).
+  const std::string& token() const { return token_; }
+  /// Requests refused for their Host name (421), and for their origin or token (403).
+  std::uint64_t refused_hosts() const { return refused_hosts_; }
+  std::uint64_t refused_posts() const { return refused_posts_; }
 
  private:
   void add_routes();
+  void add_guard(const HttpOptions& options);
   EventHub& hub_;
   std::function<bool(int)> press_;
   std::string replay_json_;
+  const std::string token_;
+  std::atomic<std::uint64_t> refused_hosts_{0};
+  std::atomic<std::uint64_t> refused_posts_{0};
   std::unique_ptr<BoundedHttpServer> server_;
   std::thread thread_;
   int port_ = 0;

@@ -24,7 +24,9 @@ void LiveFeed::on_mail(const Mail& mail) {
   });
 }
 
-void LiveFeed::on_clock(double time_s, double warp) { hub_.publish(clock_json(time_s, warp)); }
+void LiveFeed::on_clock(double time_s, double warp) {
+  hub_.publish(clock_json(time_s, warp), [&] { state_.set_clock(time_s); });
+}
 
 std::size_t LiveFeed::retained() const { return retained_; }
 std::uint64_t LiveFeed::refused() const { return refused_; }

@@ -24,7 +24,7 @@ class LiveFeed {
 
   /// Keeps `mail` in the retained state and sends it to every page.
   void on_mail(const Mail& mail);
-  /// Sends a clock event to every page.
+  /// Sends a clock event to every page; the retained state's durations run out by this time.
   void on_clock(double time_s, double warp);
 
   EventHub& hub() { return hub_; }

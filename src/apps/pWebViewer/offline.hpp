@@ -1,7 +1,8 @@
 #pragma once
 // pWebViewer without a MOOSDB (docs/viewer.md, "Replay"):
 //   pWebViewer [mission.moos] --replay=FILE.alog
-//       serves the page driven by the log (GET /replay.json) until SIGINT or SIGTERM;
+//       serves the page driven by the log (GET /replay.json) until SIGINT or SIGTERM, printing
+//       `pWebViewer: serving http://HOST:PORT/?token=TOKEN (replay of ...)`;
 //   pWebViewer [mission.moos] --export=FILE.alog --output=FILE.html
 //       writes the page and the log's watched mail as one self-contained HTML file and exits.
 // The mission file is optional: its pWebViewer block (http_port, http_bind, watch, ...) and its

@@ -49,7 +49,6 @@ void RetainedState::apply(const Mail& mail) {
     ++refused_;
     return;
   }
-  newest_time_s_ = std::max(newest_time_s_, mail.time_s);
   if (!mail.is_double && is_view_variable(mail.var)) {
     apply_view(mail);
   } else if (!mail.is_double && mail.var == "NODE_REPORT") {
@@ -137,7 +136,7 @@ std::vector<Mail> RetainedState::snapshot() const {
     if (!mail->is_double && is_view_variable(mail->var)) {
       const auto duration_s = base::parse_number(field_of(mail->sval, "duration"));
       const double posted_s = base::parse_number(field_of(mail->sval, "time")).value_or(mail->time_s);
-      if (duration_s && *duration_s > 0 && posted_s + *duration_s < newest_time_s_) continue;
+      if (duration_s && *duration_s > 0 && posted_s + *duration_s < clock_s_) continue;
     }
     out.push_back(*mail);
   }

@@ -13,8 +13,9 @@
 // - Any other variable: its newest posting; for strings with a `vname` field (HAZARDSET_EVAL),
 //   the newest per vname, as the score table has a row per vehicle.
 // - A posting whose `duration` (MOOS seconds, from its `time` field, else the posting's time)
-//   has run out by the newest mail time is left out of the snapshot (the page would expire it
-//   at once).
+//   has run out by the viewer's own clock (set_clock: its MOOS time, as the clock events tell the
+//   page) is left out of the snapshot (the page would expire it at once). The postings' own
+//   times never move that clock: one stamped far in the future by a skewed clock hides nothing.
 // - Strings longer than `max_value_bytes` are not kept (counted in `refused`).
 // - snapshot() returns the kept postings in the order they arrived, oldest first.
 
@@ -43,6 +44,8 @@ class RetainedState {
   explicit RetainedState(RetentionLimits limits = {}) : limits_(limits) {}
 
   void apply(const Mail& mail);
+  /// The viewer's MOOS time, against which durations run out.
+  void set_clock(double now_s) { clock_s_ = now_s; }
   std::vector<Mail> snapshot() const;
   /// Postings kept now.
   std::size_t size() const;
@@ -67,7 +70,7 @@ class RetainedState {
   RetentionLimits limits_;
   std::uint64_t next_seq_ = 0;
   std::uint64_t refused_ = 0;
-  double newest_time_s_ = 0.0;
+  double clock_s_ = 0.0;
   std::map<std::string, Labelled> labelled_;                   // by VIEW_* variable
   std::map<std::string, std::deque<Entry>> unlabelled_;        // by VIEW_* variable
   std::map<std::string, std::deque<Entry>> trails_;            // by vehicle NAME

@@ -5,8 +5,9 @@
 // Contract
 // - A Mail keeps a posting's variable, source, MOOS time and value (a double or a string);
 //   binary values are not viewable and never become Mail (from_message returns nullopt).
-// - The JSON texts are one line each (no raw newline inside), valid UTF-8 in as far as the
-//   MOOS strings are, and safe to inline in an HTML <script> block: '<', '>' and '&' are
+// - The JSON texts are one line each (no raw newline inside), always valid UTF-8 (a byte of a
+//   MOOS string that is not part of well-formed UTF-8 is written as the four characters \xNN,
+//   NN its value in upper-case hex, so the page shows which bytes came), and safe to inline in an HTML <script> block: '<', '>' and '&' are
 //   written as \u escapes, so a value can never close the script element.
 // - Doubles are written in their shortest exact form; a non-finite double (which the MOOS
 //   protocol can carry) is written as null.

@@ -2,6 +2,7 @@
 
 #include "base/text.hpp"
 #include "mission_app.hpp"
+#include "request_guard.hpp"
 
 namespace web_viewer {
 
@@ -39,6 +40,19 @@ std::string apply_watch(const std::string& value, WatchLines& watch) {
   return std::string();
 }
 
+std::string apply_allowed_hosts(const std::string& value, std::vector<std::string>& hosts) {
+  for (std::string_view v : base::split_trimmed(value, ',')) {
+    if (v.empty()) continue;
+    if (!is_host_name(v)) return "allowed_hosts: '" + base::excerpt(v) + "' is not a host name";
+    const std::string name = base::to_lower(v);
+    if (watch_contains(hosts, name)) continue;
+    if (hosts.size() >= kMaxAllowedHosts)
+      return "allowed_hosts: more than " + std::to_string(kMaxAllowedHosts) + " names";
+    hosts.push_back(name);
+  }
+  return std::string();
+}
+
 std::string apply(const moos::ConfigLine& line, ViewerConfig& config, WatchLines& watch) {
   const std::string key = base::to_lower(line.key);
   const std::string& value = line.value;
@@ -50,6 +64,7 @@ std::string apply(const moos::ConfigLine& line, ViewerConfig& config, WatchLines
     config.http.bind_address = value;
     return std::string();
   }
+  if (key == "allowed_hosts") return apply_allowed_hosts(value, config.http.allowed_hosts);
   if (key == "watch") return apply_watch(value, watch);
   if (key == "watch_defaults") return mission_app::bool_param(key, value, watch.defaults);
   if (key == "appcast_request") return mission_app::bool_param(key, value, config.appcast_request);

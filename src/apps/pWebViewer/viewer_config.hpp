@@ -19,6 +19,8 @@ const std::vector<std::string>& default_watch();
 bool watch_contains(const std::vector<std::string>& watch, std::string_view var);
 /// At most this many `watch` variables (each is a MOOS subscription).
 inline constexpr std::size_t kMaxWatch = 64;
+/// At most this many `allowed_hosts` names (each is compared with every request's Host).
+inline constexpr std::size_t kMaxAllowedHosts = 32;
 
 struct ViewerConfig {
   HttpOptions http;

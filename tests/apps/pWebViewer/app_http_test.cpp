@@ -135,11 +135,15 @@ TEST_F(ViewerOnBus, AsksForAppCastsAndAnnouncesItself) {
 TEST_F(ViewerOnBus, AButtonPostsItsAssignmentsAndTheHelloNamesIt) {
   ASSERT_TRUE(start("  button_one = DEPLOY # DEPLOY_ALL=true # SPEED=2.5\n"));
   auto c = client();
-  const auto pressed = c.Post("/button/1", "", "text/plain");
+  const httplib::Headers token = {{"X-Viewer-Token", app->token()}};
+  EXPECT_EQ(app->page_url(), app->url() + "?token=" + app->token());
+  EXPECT_EQ(app->token().size(), 32u);
+  const auto pressed = c.Post("/button/1", token, "", "text/plain");
   ASSERT_TRUE(pressed);
   EXPECT_EQ(pressed->status, 204);
-  EXPECT_EQ(c.Post("/button/2", "", "text/plain")->status, 404);
-  EXPECT_EQ(c.Post("/button/0", "", "text/plain")->status, 404);
+  EXPECT_EQ(c.Post("/button/1", "", "text/plain")->status, 403);  // no token: not posted
+  EXPECT_EQ(c.Post("/button/2", token, "", "text/plain")->status, 404);
+  EXPECT_EQ(c.Post("/button/0", token, "", "text/plain")->status, 404);
   app->run_for(1.0);
   EXPECT_EQ(bus.values_of("DEPLOY_ALL", kAppName), std::vector<std::string>{"true"});
   EXPECT_EQ(bus.values_of("SPEED", kAppName), std::vector<std::string>{std::to_string(2.5)});
@@ -150,7 +154,7 @@ TEST_F(ViewerOnBus, AButtonPostsItsAssignmentsAndTheHelloNamesIt) {
 
 TEST_F(ViewerOnBus, WithoutButtonsEveryPressIsNotFound) {
   ASSERT_TRUE(start());
-  EXPECT_EQ(client().Post("/button/1", "", "text/plain")->status, 404);
+  EXPECT_EQ(client().Post("/button/1", {{"X-Viewer-Token", app->token()}}, "", "text/plain")->status, 404);
   app->run_for(1.0);
   EXPECT_TRUE(bus.values_of("DEPLOY_ALL", kAppName).empty());
 }
@@ -176,7 +180,7 @@ class StalledReader {
     int small = 4096;  // a small receive buffer: the server's writes block sooner
     ::setsockopt(fd_, SOL_SOCKET, SO_RCVBUF, &small, sizeof small);
     connected_ = ::connect(fd_, reinterpret_cast<sockaddr*>(&address), sizeof address) == 0;
-    const std::string request = "GET /events HTTP/1.1\r\nHost: 127.0.0.1\r\n\r\n";
+    const std::string request = "GET /events HTTP/1.1\r\nHost: 127.0.0.1:" + std::to_string(port) + "\r\n\r\n";
     connected_ = connected_ && ::send(fd_, request.data(), request.size(), 0) == static_cast<ssize_t>(request.size());
   }
   ~StalledReader() { ::close(fd_); }

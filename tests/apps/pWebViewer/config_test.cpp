@@ -107,6 +107,33 @@ TEST(ViewJson, StringsAreEscapedAndSafeInsideAScriptElement) {
   EXPECT_EQ(json_number(std::nan("")), "null");
 }
 
+// Every byte of the event stream is valid UTF-8: EventSource and JSON readers need it.
+TEST(ViewJson, InvalidUtf8BecomesEscapedTextAndValidUtf8IsKept_Hardening) {
+  EXPECT_EQ(json_string("caf\xC3\xA9 \xE2\x82\xAC \xF0\x9F\x9A\xA2"), "\"caf\xC3\xA9 \xE2\x82\xAC \xF0\x9F\x9A\xA2\"");
+  EXPECT_EQ(json_string("a\xFF" "b"), R"("a\\xFFb")");
+  EXPECT_EQ(json_string("\xC3"), R"("\\xC3")");                   // cut short at the end
+  EXPECT_EQ(json_string("\xC0\xAF"), R"("\\xC0\\xAF")");           // overlong '/'
+  EXPECT_EQ(json_string("\xED\xA0\x80"), R"("\\xED\\xA0\\x80")");  // a surrogate
+  EXPECT_EQ(json_string("\xF4\x90\x80\x80"), R"("\\xF4\\x90\\x80\\x80")");  // beyond U+10FFFF
+  EXPECT_EQ(json_string("\xE2\x82x"), R"("\\xE2\\x82x")");
+  Mail binary;
+  binary.var = "VIEW_MARKER";
+  binary.sval = std::string("x=1,label=\x00\x80\xFE", 13);
+  EXPECT_NE(mail_json(binary).find(R"(label=\u0000\\x80\\xFE")"), std::string::npos) << mail_json(binary);
+}
+
+TEST(ViewerConfig, AllowedHostsAreReadAndCheckedAsNames) {
+  std::vector<std::string> warnings;
+  const ViewerConfig c = read_viewer_config(
+      {line("allowed_hosts", "Shoreside.Local, viewer-1.lab.example"), line("allowed_hosts", "[fe80::1], 10.0.0.7"),
+       line("allowed_hosts", "evil/path", 3), line("allowed_hosts", "a b", 4)},
+      &warnings);
+  EXPECT_EQ(c.http.allowed_hosts,
+            (std::vector<std::string>{"shoreside.local", "viewer-1.lab.example", "[fe80::1]", "10.0.0.7"}));
+  ASSERT_EQ(warnings.size(), 2u);
+  EXPECT_NE(warnings[0].find("allowed_hosts: 'evil/path' is not a host name"), std::string::npos) << warnings[0];
+}
+
 TEST(ViewerConfig, TheHelloAnnouncesButtonsAndThePagesBounds) {
   std::vector<std::string> warnings;
   const Hello h = configured_hello(read_viewer_config(

@@ -44,11 +44,12 @@ std::vector<std::string> score_table_form(const std::string& out) {
   return form;
 }
 
+// The printed URL carries the run's token (the page's buttons need it).
 TEST(WebViewerDemo, PrintsTheUrlWritesViewHtmlAndKeepsTheScoreTable) {
   ScratchDir dir("pwv_demo");
   const auto viewed = launch(dir / "viewed", "");
   ASSERT_EQ(viewed.exit_code, 0) << viewed.out << viewed.err;
-  EXPECT_TRUE(std::regex_search(viewed.err, std::regex(R"(\[jake\] live view: http://127\.0\.0\.1:\d+/)")))
+  EXPECT_TRUE(std::regex_search(viewed.err, std::regex(R"(\[jake\] live view: http://127\.0\.0\.1:\d+/\?token=[0-9a-f]{32} )")))
       << viewed.err;
   const std::string html_path = (dir / "viewed" / "view.html").string();
   EXPECT_NE(viewed.out.find("View: " + html_path), std::string::npos) << viewed.out;

@@ -21,50 +21,16 @@
 #include "child_process.hpp"
 #include "event_hub.hpp"
 #include "http_server.hpp"
+#include "raw_http.hpp"
 #include "web_files.hpp"
 
 namespace web_viewer {
 namespace {
 
-/// A socket connected to the server on loopback, or -1.
-int connect_to(int port) {
-  const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-  sockaddr_in address{};
-  address.sin_family = AF_INET;
-  address.sin_port = htons(static_cast<std::uint16_t>(port));
-  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  if (::connect(fd, reinterpret_cast<sockaddr*>(&address), sizeof address) == 0) return fd;
-  ::close(fd);
-  return -1;
-}
-
-/// What the server sends on `fd` until it closes the connection or `timeout_s` passes (a reset
-/// ends it too).
-std::string read_reply(int fd, double timeout_s) {
-  timeval tick{0, 100000};
-  ::setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &tick, sizeof tick);
-  const double end = test_support::steady_now_s() + timeout_s;
-  std::string reply;
-  char buffer[4096];
-  while (test_support::steady_now_s() < end) {
-    const ssize_t n = ::recv(fd, buffer, sizeof buffer, 0);
-    if (n == 0 || (n < 0 && errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR)) break;
-    if (n > 0) reply.append(buffer, static_cast<std::size_t>(n));
-  }
-  return reply;
-}
-
-/// Sends `request` on a fresh connection and returns what the server answers until it closes
-/// the connection or `timeout_s` passes.
-std::string raw_exchange(int port, const std::string& request, double timeout_s = 5.0) {
-  const int fd = connect_to(port);
-  if (fd < 0) return "";
-  std::string reply;
-  if (::send(fd, request.data(), request.size(), MSG_NOSIGNAL) >= 0)
-    reply = read_reply(fd, timeout_s);
-  ::close(fd);
-  return reply;
-}
+using raw_http::connect_to;
+using raw_http::raw_exchange;
+using raw_http::read_reply;
+using raw_http::status_of;
 
 /// A field of /proc/self/status in kB ("VmRSS", "VmHWM"), or -1.
 long long own_status_kb(const std::string& field) {
@@ -82,16 +48,6 @@ long long own_status_kb(const std::string& field) {
   return -1;
 }
 
-/// The status line's code ("HTTP/1.1 404 Not Found" gives 404), or 0.
-int status_of(const std::string& reply) {
-  if (reply.size() < 12 || reply.compare(0, 5, "HTTP/") != 0) return 0;
-  return std::stoi(reply.substr(9, 3));
-}
-
-std::string get(const std::string& target) {
-  return "GET " + target + " HTTP/1.1\r\nHost: 127.0.0.1\r\nConnection: close\r\n\r\n";
-}
-
 class HostileHttp : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -100,6 +56,13 @@ class HostileHttp : public ::testing::Test {
     std::string error;
     ASSERT_TRUE(server.start(options, &error)) << error;
     port = server.port();
+  }
+  /// The Host header line of a request the server answers.
+  std::string host() const { return "Host: 127.0.0.1:" + std::to_string(port) + "\r\n"; }
+  /// The headers that let a POST through the guard (request_guard.hpp).
+  std::string post_headers() const { return host() + "X-Viewer-Token: " + server.token() + "\r\n"; }
+  std::string get(const std::string& target) const {
+    return "GET " + target + " HTTP/1.1\r\n" + host() + "Connection: close\r\n\r\n";
   }
   /// The page is still served: the server survived the request. Connections a test just closed
   /// may hold their threads (or waiting-room places) for a moment, so a 503 is retried for up
@@ -137,7 +100,7 @@ TEST_F(HostileHttp, PathTraversalGetsNotFoundAndNoFileOfTheDisk) {
 TEST_F(HostileHttp, AnUnknownRouteOrMethodGetsAnErrorStatus) {
   EXPECT_EQ(status_of(raw_exchange(port, get("/no-such-page"))), 404);
   const int deleted = status_of(raw_exchange(
-      port, "DELETE /index.html HTTP/1.1\r\nHost: 127.0.0.1\r\nConnection: close\r\n\r\n"));
+      port, "DELETE /index.html HTTP/1.1\r\n" + post_headers() + "Connection: close\r\n\r\n"));
   EXPECT_GE(deleted, 400) << deleted;
   EXPECT_LT(deleted, 500) << deleted;
   const int garbage = status_of(raw_exchange(port, "\x01\x02 nonsense\r\n\r\n"));
@@ -155,7 +118,7 @@ TEST_F(HostileHttp, AButtonNumberOutsideTheRangeIsNotFoundAndPressesNothing) {
   for (const std::string n : {"0", "1001", "99999999999999999999999", "-1", "1x"}) {
     const std::string reply = raw_exchange(
         port, "POST /button/" + n +
-                  " HTTP/1.1\r\nHost: 127.0.0.1\r\nContent-Length: 0\r\nConnection: close\r\n\r\n");
+                  " HTTP/1.1\r\n" + post_headers() + "Content-Length: 0\r\nConnection: close\r\n\r\n");
     EXPECT_EQ(status_of(reply), 404) << n;
   }
   EXPECT_EQ(presses, 0);
@@ -167,13 +130,13 @@ TEST_F(HostileHttp, AButtonNumberOutsideTheRangeIsNotFoundAndPressesNothing) {
 TEST_F(HostileHttp, ARequestBodyOverTheBoundIsRefused_Hardening) {
   const std::size_t over = HttpServer::kMaxRequestBodyBytes + 1;
   const std::string reply = raw_exchange(
-      port, "POST /button/1 HTTP/1.1\r\nHost: 127.0.0.1\r\nContent-Length: " +
+      port, "POST /button/1 HTTP/1.1\r\n" + post_headers() + "Content-Length: " +
                 std::to_string(over) + "\r\nConnection: close\r\n\r\n" + std::string(over, 'b'));
   EXPECT_EQ(status_of(reply), 413) << reply.substr(0, 80);
   EXPECT_EQ(presses, 0);
   const std::string small = raw_exchange(
-      port, "POST /button/1 HTTP/1.1\r\nHost: 127.0.0.1\r\nContent-Length: 2\r\nConnection: "
-            "close\r\n\r\nok");
+      port, "POST /button/1 HTTP/1.1\r\n" + post_headers() +
+                "Content-Length: 2\r\nConnection: close\r\n\r\nok");
   EXPECT_EQ(status_of(small), 204);
   EXPECT_EQ(presses, 1);
 }
@@ -186,8 +149,8 @@ bool sent_or_waited(ssize_t result) {
 
 /// A request head of `lines` header lines of `line_bytes` bytes each (name and CRLF included),
 /// then the blank line.
-std::string head_with_lines(std::size_t lines, std::size_t line_bytes) {
-  std::string head = "GET /index.html HTTP/1.1\r\nHost: 127.0.0.1\r\nConnection: close\r\n";
+std::string head_with_lines(const std::string& host, std::size_t lines, std::size_t line_bytes) {
+  std::string head = "GET /index.html HTTP/1.1\r\n" + host + "Connection: close\r\n";
   for (std::size_t i = 0; i < lines; ++i) {
     const std::string name = "X-Line-" + std::to_string(i) + ": ";
     head += name + std::string(line_bytes - name.size() - 2, 'h') + "\r\n";
@@ -200,8 +163,8 @@ std::string head_with_lines(std::size_t lines, std::size_t line_bytes) {
 TEST_F(HostileHttp, AHeadWithinTheBoundIsServedAndOneBeyondItIsRefused_Hardening) {
   constexpr std::size_t kLine = 8000;  // under httplib's 8 KiB per line
   const std::size_t within = BoundedHttpServer::kMaxRequestHeadBytes / kLine - 1;
-  EXPECT_EQ(status_of(raw_exchange(port, head_with_lines(within, kLine))), 200);
-  const int beyond = status_of(raw_exchange(port, head_with_lines(within + 2, kLine)));
+  EXPECT_EQ(status_of(raw_exchange(port, head_with_lines(host(), within, kLine))), 200);
+  const int beyond = status_of(raw_exchange(port, head_with_lines(host(), within + 2, kLine)));
   EXPECT_TRUE(beyond == 400 || beyond == 0) << beyond;  // 0: closed without an answer
   expect_still_serving();
 }
@@ -266,8 +229,8 @@ TEST_F(HostileHttp, AHeaderFloodKeepsMemoryBoundedAndThePageServed_Hardening) {
 // A chunked body is not bounded by httplib 0.11's payload limit: the stream cuts it.
 TEST_F(HostileHttp, AChunkedBodyOverTheBoundIsRefused_Hardening) {
   std::string request =
-      "POST /button/1 HTTP/1.1\r\nHost: 127.0.0.1\r\nTransfer-Encoding: chunked\r\n"
-      "Connection: close\r\n\r\n";
+      "POST /button/1 HTTP/1.1\r\n" + post_headers() +
+      "Transfer-Encoding: chunked\r\nConnection: close\r\n\r\n";
   const std::string chunk(1000, 'c');
   for (int i = 0; i < 1000; ++i) request += "3e8\r\n" + chunk + "\r\n";
   request += "0\r\n\r\n";
@@ -288,8 +251,12 @@ TEST_F(HostileHttp, ConnectionsBeyondThePoolAndItsWaitingRoomGet503_Hardening) {
   // Each connection starts a request and stops: a thread serving one waits the read timeout
   // (5 s), longer than this test connects. The pace keeps httplib's short listen backlog from
   // overflowing (the kernel would then delay connections by its SYN retries).
+  // From as many loopback addresses as the per-address bound needs, so that the pool's threads
+  // and its waiting room fill up instead.
   for (std::size_t i = 0; i < kept_at_most + kSurplus; ++i) {
-    const int fd = connect_to(port);
+    const std::string source =
+        "127.0.1." + std::to_string(1 + i / BoundedHttpServer::kMaxConnectionsPerAddress);
+    const int fd = connect_to(port, source.c_str());
     ASSERT_GE(fd, 0);
     ::send(fd, "GET / HTTP/1.1\r\n", 16, MSG_NOSIGNAL);
     sockets.push_back(fd);

@@ -25,18 +25,24 @@ constexpr const char* kAlog =
     "2.000 VIEW_MARKER uFldHazardSensor x=51,y=11.3,width=8,type=triangle,label=12\n"
     "3.000 HAZARD_SEARCH_SCORE uFldHazardMetric 86.5\n";
 
-/// Waits (bounded) until the child printed the URL; its port, or 0.
-int served_port(const Child& child, double timeout_s = 10.0) {
-  const std::regex url(R"(serving http://127\.0\.0\.1:(\d+)/)");
+/// Waits (bounded) until the child printed the URL; its port and token, or 0.
+struct Served {
+  int port = 0;
+  std::string token;
+};
+Served served(const Child& child, double timeout_s = 10.0) {
+  const std::regex url(R"(serving http://127\.0\.0\.1:(\d+)/\?token=([0-9a-f]{32})[ \n])");
   const double end = test_support::steady_now_s() + timeout_s;
   while (test_support::steady_now_s() < end) {
     std::smatch m;
     const std::string out = child.stdout_text();
-    if (std::regex_search(out, m, url)) return std::stoi(m[1].str());
+    if (std::regex_search(out, m, url)) return {std::stoi(m[1].str()), m[2].str()};
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
-  return 0;
+  return {};
 }
+
+int served_port(const Child& child) { return served(child).port; }
 
 /// /events until it holds `until` (or the stream ends).
 std::string read_events(int port, const std::string& until) {
@@ -77,7 +83,8 @@ TEST(WebViewerProcess, ReplayServesTheLogsWatchedMail) {
   write_file(dir / "m.moos", "ProcessConfig = pWebViewer\n{\n  http_port = 0\n}\n");
   auto with_mission = Child::spawn(PWEBVIEWER_PATH, {(dir / "m.moos").string(), "--replay=" + (dir / "run.alog").string()});
   ASSERT_TRUE(with_mission);
-  const int port = served_port(*with_mission);
+  const Served url = served(*with_mission);
+  const int port = url.port;
   ASSERT_GT(port, 0) << with_mission->stderr_text();
   EXPECT_NE(with_mission->stdout_text().find("(replay of "), std::string::npos);
   httplib::Client client("127.0.0.1", port);
@@ -91,7 +98,8 @@ TEST(WebViewerProcess, ReplayServesTheLogsWatchedMail) {
   EXPECT_NE(replay->body.find(R"({"type":"mail","var":"HAZARD_SEARCH_SCORE","val":86.5,"src":"uFldHazardMetric","time":1700000003})"),
             std::string::npos);
   EXPECT_EQ(replay->body.find("DB_UPTIME"), std::string::npos);
-  EXPECT_EQ(client.Post("/button/1", "", "text/plain")->status, 404);
+  EXPECT_EQ(client.Post("/button/1", "", "text/plain")->status, 403);  // no token
+  EXPECT_EQ(client.Post("/button/1", {{"X-Viewer-Token", url.token}}, "", "text/plain")->status, 404);
   EXPECT_NE(read_events(port, "\"mode\":\"replay\"").find("\"mode\":\"replay\""), std::string::npos);
   EXPECT_EQ(with_mission->stop(), 0);
 }

@@ -144,12 +144,28 @@ TEST(RetainedState, ExpiredDurationsAreLeftOutOfTheSnapshot) {
   state.apply(text("VIEW_CIRCLE", "x=0,radius=5,duration=10,label=short", 100.0));
   state.apply(text("VIEW_CIRCLE", "x=0,radius=5,duration=100,label=long", 100.0));
   state.apply(number("DB_UPTIME", 1, 105.0));
+  state.set_clock(105.0);
   EXPECT_EQ(state.snapshot().size(), 3u);
-  state.apply(number("DB_UPTIME", 2, 111.0));  // short expired at 110
+  state.apply(number("DB_UPTIME", 2, 111.0));
+  state.set_clock(111.0);  // short expired at 110
   EXPECT_EQ(values(state), (Values{"x=0,radius=5,duration=100,label=long", std::to_string(2.0)}));
   // The object's own time field counts from when it says, as on the page.
   state.apply(text("VIEW_CIRCLE", "x=0,radius=5,duration=100,time=5,label=old", 111.0));
   EXPECT_EQ(state.snapshot().size(), 2u);
+}
+
+// A posting stamped far in the future (a client with a skewed clock) used to move the time
+// durations were judged by, so every later posting with a duration vanished for new pages
+// until restart. Durations now run out by the viewer's own clock only.
+TEST(RetainedState, APostingStampedInTheFutureHidesNoLaterPosting_Hardening) {
+  RetainedState state;
+  state.set_clock(100.0);
+  state.apply(text("VIEW_MARKER", "x=1,y=1,label=skewed", 1e9));
+  state.apply(text("VIEW_CIRCLE", "x=0,radius=5,duration=10,label=later", 101.0));
+  state.set_clock(105.0);
+  EXPECT_EQ(values(state), (Values{"x=1,y=1,label=skewed", "x=0,radius=5,duration=10,label=later"}));
+  state.set_clock(112.0);  // now it has run out, by the viewer's clock
+  EXPECT_EQ(values(state), (Values{"x=1,y=1,label=skewed"}));
 }
 
 TEST(RetainedState, OversizedStringsAreNotKept) {

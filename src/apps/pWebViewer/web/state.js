@@ -3,6 +3,8 @@
 // expire(state, t), so the state at MOOS time t is the same either way. pMarineViewer
 // semantics: a posting with the same label replaces the earlier one, active=false removes it,
 // duration=D expires it D MOOS seconds after its time (the `time` field, else the mail's time).
+// A mail's time moves the state's clock forward at most to state.clockLimit (live: the server's
+// clock, so that one posting stamped far in the future by a skewed clock expires nothing early).
 import { parseFields, num, parsePoints, parseAppCast, appCastText } from './fields.js';
 
 /** VIEW_* variable -> object kind. */
@@ -25,6 +27,7 @@ export function newState(options = {}) {
   for (const k of KINDS) kinds[k] = new Map();
   return {
     time: 0, warp: 1, mode: options.mode || 'live', community: '',
+    clockLimit: Infinity,  // the latest time a mail may move the clock to
     firstTime: Infinity,  // the earliest MOOS time seen: the page shows time since then
     trailLength: options.trailLength || DEFAULT_TRAIL_LENGTH,
     unlabelledRing: options.unlabelledRing || MAX_UNLABELLED,
@@ -51,7 +54,7 @@ export function stateForHello(hello, mode) {
 
 /** Advances the state's clock (never backwards) and drops what has expired by then. */
 export function expire(state, time) {
-  if (Number.isFinite(time) && time > state.time) state.time = time;
+  if (Number.isFinite(time) && time > state.time) state.time = Math.min(time, state.clockLimit);
   // Scans only when the soonest expiry has come, so a mail costs O(1) between expiries.
   if (state.time < state.nextExpiry) return;
   let next = Infinity;
@@ -71,7 +74,7 @@ export function applyMail(state, mail) {
   if (!mail || mail.type !== 'mail' || typeof mail.var !== 'string') return;
   state.mailCount++;
   if (Number.isFinite(mail.time)) {
-    if (mail.time > state.time) state.time = mail.time;
+    if (mail.time > state.time) state.time = Math.max(state.time, Math.min(mail.time, state.clockLimit));
     if (mail.time < state.firstTime) state.firstTime = mail.time;
   }
   const kind = KIND_OF_VAR[mail.var];

@@ -1,7 +1,10 @@
-// The page: picks its data source (an inlined replay, ?replay=URL, or the server's /events,
-// whose hello says live or replay), owns the map view and the side pane, and exposes the test
-// hooks window.viewerState() and window.viewerFrameStats(). All state changes go through
-// state.js's applyMail/expire. Text from the mail reaches the DOM only as textContent.
+// The page: picks its data source (an inlined replay, ?replay=URL of its own origin, or the
+// server's /events, whose hello says live or replay), owns the map view and the side pane, and
+// exposes the test hooks window.viewerState() and window.viewerFrameStats(). All state changes
+// go through state.js's applyMail/expire. Text from the mail reaches the DOM only as textContent.
+// A button press carries the run's token from the page's own URL (?token=, printed by
+// pWebViewer at start-up) in a header, which no other site's page can send (docs/viewer.md,
+// "Trust model").
 import { newState, stateForHello, applyMail, expire, summary, SCORE_COLUMNS,
          SCORE_HEADINGS } from './state.js';
 import { Replay } from './replay.js';
@@ -16,6 +19,9 @@ const view = makeView(0, 0, 1);
 const pixels = new PixelLayer();
 const params = new URLSearchParams(location.search);
 const FLUSH_FOR_STATS = params.get('flush') === '1';  // bench: include rasterisation in draw_ms
+const TOKEN = params.get('token') || '';
+/** Real seconds a live mail may run ahead of the server's last clock event (its delivery). */
+const CLOCK_SLACK_S = 2;
 
 const LAYERS = [
   ['marker', 'hazards (markers)'], ['polygon', 'swaths (polygons)'],
@@ -48,6 +54,22 @@ function startReplay(data) {
   resize();
 }
 
+/** The server's clock as its last hello or clock event told it, and when that came. */
+const serverClock = { time: 0, warp: 1, at: 0 };
+
+function heardClock(msg) {
+  if (!Number.isFinite(msg.time)) return;
+  serverClock.time = msg.time;
+  serverClock.at = performance.now();
+  if (Number.isFinite(msg.warp) && msg.warp > 0) serverClock.warp = msg.warp;
+}
+
+/** The latest MOOS time a live mail may move the page's clock to: the server's clock now. */
+function liveClockLimit() {
+  const elapsed = (performance.now() - serverClock.at) / 1000;
+  return serverClock.time + (elapsed + CLOCK_SLACK_S) * serverClock.warp;
+}
+
 function startLive() {
   $('mode').textContent = 'live';
   const source = new EventSource('events');
@@ -59,12 +81,16 @@ function startLive() {
       loadReplay('replay.json');
     } else if (msg.type === 'hello') {
       // A (re)connection: the server sends its retained state again after the hello.
+      heardClock(msg);
       state = stateForHello(msg, 'live');
       showButtons(msg.buttons);
     } else if (msg.type === 'mail') {
+      state.clockLimit = liveClockLimit();
       applyMail(state, msg);
     } else if (msg.type === 'clock') {
+      heardClock(msg);
       if (Number.isFinite(msg.warp)) state.warp = msg.warp;
+      state.clockLimit = liveClockLimit();
       expire(state, msg.time);
       state.version++;
     }
@@ -83,8 +109,21 @@ async function chooseSource() {
   startLive();
 }
 
-async function loadReplay(url) {
-  const reply = await fetch(url, { cache: 'no-store' });
+/** `text` as a URL of the page's own origin, else null: a link to the page must not make it
+ * show a mission served from elsewhere. */
+function ownOriginUrl(text) {
+  let url;
+  try { url = new URL(text, location.href); } catch { return null; }
+  return location.origin !== 'null' && url.origin === location.origin ? url : null;
+}
+
+async function loadReplay(text) {
+  const url = ownOriginUrl(text);
+  if (!url) {
+    $('mode').textContent = 'replay refused: not from this server';
+    return;
+  }
+  const reply = await fetch(url, { cache: 'no-store', redirect: 'error' });
   if (!reply.ok) throw new Error(`${url}: HTTP ${reply.status}`);
   startReplay(await reply.json());
 }
@@ -95,7 +134,9 @@ function showButtons(buttons) {
   for (const b of buttons || []) {
     const el = document.createElement('button');
     el.textContent = b.label;
-    el.onclick = () => fetch(`button/${b.index}`, { method: 'POST' });
+    el.disabled = !TOKEN;
+    if (!TOKEN) el.title = 'open the URL pWebViewer printed at start-up (with its ?token=) to press';
+    el.onclick = () => fetch(`button/${b.index}`, { method: 'POST', headers: { 'X-Viewer-Token': TOKEN } });
     box.appendChild(el);
   }
 }

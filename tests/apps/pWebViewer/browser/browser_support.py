@@ -24,14 +24,15 @@ CHROMIUM_ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic"
 
 
 @contextmanager
-def browser_page(width=1280, height=800):
-    """A fresh chromium with an empty profile; yields a Playwright page. Console errors of the
-    page are collected in page.errors so a test can assert there were none."""
+def browser_page(width=1280, height=800, extra_args=()):
+    """A fresh chromium with an empty profile (and `extra_args` on its command line); yields a
+    Playwright page. Console errors of the page are collected in page.errors so a test can
+    assert there were none."""
     profile = tempfile.mkdtemp(prefix="viewer-profile-")
     try:
         with sync_playwright() as pw:
             context = pw.chromium.launch_persistent_context(
-                profile, executable_path=CHROMIUM, headless=True, args=CHROMIUM_ARGS,
+                profile, executable_path=CHROMIUM, headless=True, args=CHROMIUM_ARGS + list(extra_args),
                 viewport={"width": width, "height": height})
             page = context.pages[0] if context.pages else context.new_page()
             page.errors = []

@@ -64,13 +64,14 @@ def start(args, log_path):
 
 
 def served_url(proc, timeout_s=20):
-    """The URL pWebViewer prints at start-up (`pWebViewer: serving http://.../`)."""
+    """The URL pWebViewer prints at start-up (`pWebViewer: serving http://.../?token=...`),
+    token included: the page's buttons need it."""
     deadline = time.time() + timeout_s
     while time.time() < deadline:
         line = proc.stdout.readline()
         if not line:
             break
-        m = re.search(r"serving (http://\S+/)", line)
+        m = re.search(r"serving (http://\S+/\?token=[0-9a-f]+)", line)
         if m:
             return m.group(1)
     raise RuntimeError("pWebViewer printed no URL")
