@@ -148,9 +148,21 @@ def seed_wire():
     write("wire_client", "poison", b"\x01" + packet(message(b"K", b"S", b"", b"Failed")))
 
 
+def seed_web_requests():
+    """Requests as fuzz/web_request.cpp reads them: method, Host, Origin, Sec-Fetch-Site, token."""
+    token = "0123456789abcdef0123456789abcdef"
+    write("web_request", "page", "GET\n127.0.0.1:8080\n\n\n")
+    write("web_request", "button", f"POST\n127.0.0.1:8080\nhttp://127.0.0.1:8080\nsame-origin\n{token}")
+    write("web_request", "cross_site_form", "POST\n127.0.0.1:8080\nhttp://evil.test\ncross-site\n")
+    write("web_request", "rebound", "GET\nevil.test:8080\n\n\n")
+    write("web_request", "ipv6", "GET\n[::1]:8080\n\n\n")
+    write("web_request", "binary_value", b"GET\nlocalhost:8080\n\xff\xc0\xafx\xe2\x82\n\x00")
+
+
 if __name__ == "__main__":
     seed_hazard_parsers()
     seed_mission_mail()
     seed_text_files()
     seed_wire()
     seed_numbers()
+    seed_web_requests()
