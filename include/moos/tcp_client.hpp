@@ -204,6 +204,9 @@ class TcpClient final : public Comms {
   Clock& clock_;
 
   std::thread thread_;
+  /// Set by the comms thread itself when it starts: `thread_` is assigned only after the thread
+  /// runs, so the thread must not read it.
+  std::atomic<std::thread::id> comms_thread_id_{};
   std::atomic<bool> stopping_{false};
   int wake_read_ = -1;    // self-pipe: transmit()/close() wake the comms thread
   int wake_write_ = -1;

@@ -108,7 +108,7 @@ std::string TcpClient::errno_text(const char* what) {
   return std::string(what) + ": " + std::strerror(errno);
 }
 
-bool TcpClient::on_comms_thread() const { return std::this_thread::get_id() == thread_.get_id(); }
+bool TcpClient::on_comms_thread() const { return std::this_thread::get_id() == comms_thread_id_.load(); }
 
 TcpClient::TcpClient(TcpClientOptions options)
     : Comms(options.name),
@@ -235,15 +235,13 @@ void TcpClient::expect_fetch_within(double real_s) {
 // ---- comms thread ---------------------------------------------------------------------------
 
 void TcpClient::wake() {
-  int fd = -1;
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    fd = wake_write_;
-  }
-  if (fd < 0) return;
+  // Written under the lock that close() takes to close the pipe, so the byte never lands in a
+  // closed (or reused) descriptor. The pipe is non-blocking: the lock is held for one write.
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (wake_write_ < 0) return;
   const char byte = 1;
   // A full pipe already guarantees a wake-up; the result can be ignored.
-  [[maybe_unused]] const auto n = ::write(fd, &byte, 1);
+  [[maybe_unused]] const auto n = ::write(wake_write_, &byte, 1);
 }
 
 void TcpClient::wait_for_wake(double timeout_real_s) {
@@ -264,6 +262,7 @@ void TcpClient::set_error(const std::string& error) {
 double TcpClient::retry_delay_real_s() const { return 1.0 / options_.time_warp; }  // 1 MOOS s
 
 void TcpClient::run() {
+  comms_thread_id_ = std::this_thread::get_id();
   while (!stopping_) {
     if (connect_socket() && handshake()) {
       fire_on_connect();

@@ -203,8 +203,10 @@ int run_poke(const Options& o, std::ostream& out, std::ostream& err) {
 }
 
 int run_watch(const Options& o, std::ostream& out, std::ostream& err) {
-  moos::TcpClient client(client_options(o));
+  // Declared before the client so that it outlives it: the client's thread calls on_mail until
+  // the client is destroyed.
   moos::MailSignal mail;
+  moos::TcpClient client(client_options(o));
   client.set_on_mail([&mail] { mail.notify(); });
   const auto started = std::chrono::steady_clock::now();
   if (auto code = connect(client, o, err)) return *code;
