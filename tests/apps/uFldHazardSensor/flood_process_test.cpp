@@ -85,6 +85,12 @@ TEST_F(SensorProcess, ARequestIsAnsweredWithinASecondBehindAFloodOfNodeReports_H
   moosdb_lite::test::RawClient flooder;
   ASSERT_TRUE(flooder.join(server->port(), "pFlooder", true));
   ASSERT_EQ(::kill(app->pid(), SIGSTOP), 0);
+  // Resumed whatever happens, so a failed assertion does not leave the app stopped.
+  const pid_t sensor = app->pid();
+  struct Resume {
+    pid_t pid;
+    ~Resume() { ::kill(pid, SIGCONT); }
+  } resume{sensor};
   const double flood_start_s = steady_now_s();
   const int sent = send_flood(flooder);
   // The server has read it all once it answers the flooder's next packet.
