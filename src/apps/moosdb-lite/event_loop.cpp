@@ -5,8 +5,8 @@
 // Hub closes is never read again), run the Hub's timers with the time poll() returned,
 // write what is pending (topped up from the per-source queues in turns), enforce the output
 // limits and the memory budget, pause or resume reading by the output each connection has
-// queued, and close what is finished. Poll wakes
-// at least every kPollInterval_ms so timeouts and the DB-variable timer run without traffic.
+// queued, and close what is finished. Poll wakes at least every kPollInterval_ms so timeouts
+// and the DB-variable timer run without traffic.
 
 #include "event_loop.hpp"
 
