@@ -3,9 +3,10 @@
 // One poll() round: accept new connections, read from readable ones (each read goes to
 // the Hub at once and its actions are applied before the next read, so a connection the
 // Hub closes is never read again), run the Hub's timers with the time poll() returned,
-// write what is pending, enforce the output limits and the memory budget, pause or resume
-// reading by the output each connection has queued, and close what is finished. Poll wakes
-// at least every kPollInterval_ms so timeouts and the DB-variable timer run without traffic.
+// write what is pending (topped up from the per-source queues in turns), enforce the output
+// limits and the memory budget, pause or resume reading by the output each connection has
+// queued, and close what is finished. Poll wakes at least every kPollInterval_ms so timeouts
+// and the DB-variable timer run without traffic.
 
 #include "event_loop.hpp"
 
@@ -240,8 +241,10 @@ void EventLoop::read_chunks(ConnectionId id, double now) {
 
 void EventLoop::write_to(ConnectionId id, double now) {
   Socket& socket = sockets_.at(id);
-  while (socket.pending() > 0) {
-    const ssize_t n = ::send(socket.fd, socket.out.data() + socket.out_offset, socket.pending(),
+  for (;;) {
+    fill_buffer(socket);
+    if (socket.in_buffer() == 0) break;
+    const ssize_t n = ::send(socket.fd, socket.out.data() + socket.out_offset, socket.in_buffer(),
                              MSG_NOSIGNAL);
     if (n > 0) {
       socket.out_offset += static_cast<std::size_t>(n);
@@ -254,6 +257,8 @@ void EventLoop::write_to(ConnectionId id, double now) {
     const std::string reason = "write failed: " + errno_text();
     socket.out.clear();
     socket.out_offset = 0;
+    socket.queued.clear();
+    socket.queued_bytes = 0;
     hub_.end_of_stream(id, now, reason);
     return;
   }
@@ -276,9 +281,7 @@ void EventLoop::apply_actions(double now) {
       case Action::Kind::kSend:
         if (socket.broken) break;
         if (socket.pending() == 0) socket.last_progress_real_s = now;
-        // An empty buffer takes the packet's bytes as they are: no copy on the usual path.
-        if (socket.out.empty()) socket.out = std::move(action.bytes);
-        else socket.out += action.bytes;
+        enqueue(socket, action.source, std::move(action.bytes));
         break;
       case Action::Kind::kClose:
         close_socket(action.id);
@@ -288,6 +291,35 @@ void EventLoop::apply_actions(double now) {
         socket.close_deadline_real_s = now + kCloseGrace_s;
         break;
     }
+  }
+}
+
+void EventLoop::enqueue(Socket& socket, ConnectionId source, std::string bytes) {
+  if (socket.queued_bytes == 0 && socket.in_buffer() < kWriteBufferBytes) {
+    // An empty buffer takes the packet's bytes as they are: no copy on the usual path.
+    if (socket.out.empty()) socket.out = std::move(bytes);
+    else socket.out += bytes;
+    return;
+  }
+  socket.queued_bytes += bytes.size();
+  socket.queued[source].push_back(std::move(bytes));
+}
+
+void EventLoop::fill_buffer(Socket& socket) {
+  while (socket.queued_bytes > 0 && socket.in_buffer() < kWriteBufferBytes) {
+    auto it = socket.queued.lower_bound(socket.next_source);
+    if (it == socket.queued.end()) it = socket.queued.begin();
+    std::deque<std::string>& packets = it->second;
+    socket.queued_bytes -= packets.front().size();
+    if (socket.in_buffer() == 0) {
+      socket.out = std::move(packets.front());  // no copy when the buffer is drained
+      socket.out_offset = 0;
+    } else {
+      socket.out += packets.front();
+    }
+    packets.pop_front();
+    socket.next_source = it->first + 1;
+    if (packets.empty()) socket.queued.erase(it);
   }
 }
 

@@ -11,7 +11,12 @@
 //   byte to `wake_fd` so poll() returns at once). Every accepted socket gets TCP_NODELAY
 //   (protocol.md 1.1). Reads are bounded per connection per round, so one flooding client cannot
 //   starve the others.
-// - Each connection has an output buffer. Back-pressure first: while its unsent bytes exceed
+// - Each connection has an output buffer of kWriteBufferBytes fed from per-source queues
+//   (the Hub names each packet's source) in round-robin turns of one packet each: the mail of
+//   one source keeps its order, and a flood from one source does not delay the others' mail
+//   by more than a turn. Nothing else changes while the client keeps up (the queues are empty
+//   and packets go straight to the buffer). "Unsent bytes" below counts buffer and queues.
+//   Back-pressure first: while its unsent bytes exceed
 //   kPauseReadingOutputBytes (or half of `max_output_bytes` if less) the connection is not
 //   read (it cannot make more replies, the client is slowed down, a warning says its
 //   messages are delayed); reading resumes below half of that. Only if its unsent bytes
@@ -34,6 +39,7 @@
 #include <csignal>
 #include <cstddef>
 #include <functional>
+#include <deque>
 #include <map>
 #include <optional>
 #include <string>
@@ -46,6 +52,10 @@ namespace moosdb_lite {
 inline constexpr double kSendStall_s = 6.0;
 /// Time given to a closing connection to take a POISON or its last reply.
 inline constexpr double kCloseGrace_s = 2.0;
+/// Bytes of a connection's output handed to send() at a time; the rest waits in per-source
+/// queues and is taken in turns (one packet of each source per turn), so mail from a flooding
+/// source waits behind the flood's earlier mail, but another source's mail does not.
+inline constexpr std::size_t kWriteBufferBytes = 64u * 1024u;
 /// Unsent bytes above which a connection is no longer read (back-pressure), in bytes.
 inline constexpr std::size_t kPauseReadingOutputBytes = 64u * 1024u * 1024u;
 /// Default global budget, in bytes: unsent output, incomplete packets and kept mail of all
@@ -85,15 +95,27 @@ class EventLoop {
  private:
   struct Socket {
     int fd = -1;
-    std::string out;
+    std::string out;             ///< bytes handed to send(), from out_offset on
     std::size_t out_offset = 0;
+    /// Packets not yet in `out`, per source (Action::source), each queue in arrival order.
+    std::map<ConnectionId, std::deque<std::string>> queued;
+    std::size_t queued_bytes = 0;
+    ConnectionId next_source = 0;  ///< the round-robin turn starts at the first source >= it
     bool closing = false;        ///< no more reads; close once `out` is written
     double close_deadline_real_s = 0;
     double last_progress_real_s = 0;
     bool broken = false;         ///< a write failed: close without further writes
     bool reading_paused = false; ///< back-pressure: too much unsent output
-    std::size_t pending() const { return out.size() - out_offset; }
+    std::size_t in_buffer() const { return out.size() - out_offset; }
+    /// Every byte waiting for this connection: the buffer and the per-source queues.
+    std::size_t pending() const { return in_buffer() + queued_bytes; }
   };
+
+  /// Appends a packet for `socket` from `source`: straight to the buffer while nothing is
+  /// queued and the buffer is below kWriteBufferBytes, else to the source's queue.
+  static void enqueue(Socket& socket, ConnectionId source, std::string bytes);
+  /// Tops the buffer up to kWriteBufferBytes from the queues, one packet per source per turn.
+  static void fill_buffer(Socket& socket);
 
   void accept_new(double now);
   /// accept() failed for lack of descriptors: shed the connection, back off, log rarely.

@@ -6,6 +6,9 @@
 // first one is the identification, the rest go to the Database. Database output is turned
 // into Send actions right after each Database call, so a POISON or a reply always precedes
 // the Close that follows it, and mail to a connection that is already closed is dropped.
+// Each Send names its source (the connection whose packet was being processed) for the
+// transport's per-source queues, and mail to an asynchronous client is cut into packets of
+// kFairPacketBytes, so one source's large packet is not one long turn.
 
 #include "hub.hpp"
 
@@ -111,8 +114,10 @@ void Hub::process_packets(ConnectionId id, double now) {
       handle_identification(id, packet, now);
       continue;
     }
+    source_ = id;
     db_.process_packet(id, std::move(packet), moos_time(now));
     collect_database_output(now);
+    source_ = kServerSource;
   }
 }
 
@@ -221,19 +226,50 @@ void Hub::close(ConnectionId id, const std::string& reason, double now, Action::
   connections_.erase(it);
   actions_.push_back(Action{kind, id, {}});
   if (was_active) {
+    // What a disconnect publishes (DB_CLIENTS, DB_EVENT) is the server's, whoever caused it.
+    const ConnectionId caller = source_;
+    source_ = kServerSource;
     db_.disconnect(id, moos_time(now));
     collect_database_output(now);
+    source_ = caller;
   }
 }
 
 void Hub::collect_database_output(double now) {
   for (auto& packet : db_.take_output()) {
     if (connections_.count(packet.to) == 0) continue;
-    actions_.push_back(Action{Action::Kind::kSend, packet.to, moos::encode_packet(packet.messages)});
+    queue_send(std::move(packet));
   }
   for (const auto& drop_request : db_.take_drop_requests())
     close(drop_request.id, drop_request.reason + "; connection dropped", now,
           Action::Kind::kClose);
+}
+
+void Hub::queue_send(moos::OutPacket packet) {
+  const auto send = [&](const moos::Message* first, const moos::Message* last) {
+    actions_.push_back(Action{Action::Kind::kSend, packet.to,
+                              moos::encode_packet(std::vector<moos::Message>(first, last)),
+                              source_});
+  };
+  const std::vector<moos::Message>& messages = packet.messages;
+  if (!db_.is_async(packet.to)) {
+    actions_.push_back(
+        Action{Action::Kind::kSend, packet.to, moos::encode_packet(messages), source_});
+    return;
+  }
+  // Slices in order: an echoed TIMING stays the first message of the first packet (5.6).
+  std::size_t begin = 0;
+  std::size_t bytes = 0;
+  for (std::size_t i = 0; i < messages.size(); ++i) {
+    const std::size_t size = messages[i].encoded_size();
+    if (i > begin && bytes + size > kFairPacketBytes) {
+      send(messages.data() + begin, messages.data() + i);
+      begin = i;
+      bytes = 0;
+    }
+    bytes += size;
+  }
+  if (begin < messages.size()) send(messages.data() + begin, messages.data() + messages.size());
 }
 
 std::vector<Action> Hub::take_actions() {

@@ -24,6 +24,9 @@
 //   a framing or decoding error, an oversized packet header, a truncated packet at end of
 //   stream or inactivity closes the connection. Each close of a misbehaving peer is logged
 //   with the peer, the client name once known, and the reason.
+// - Every Send names its source (Action::source). Mail to an asynchronous client is cut
+//   into packets of at most kFairPacketBytes, in order; a synchronous client's reply is one
+//   packet, as protocol.md 5.6 requires.
 
 #include <cstddef>
 #include <cstdint>
@@ -73,6 +76,9 @@ struct HubConfig {
   std::size_t max_packet_bytes = kDefaultServerMaxPacketBytes;
 };
 
+/// The source of output no client caused (connection ids start at 1).
+inline constexpr ConnectionId kServerSource = 0;
+
 struct Action {
   enum class Kind {
     kSend,          ///< append `bytes` to the connection's output
@@ -82,7 +88,15 @@ struct Action {
   Kind kind = Kind::kSend;
   ConnectionId id = 0;
   std::string bytes;
+  /// kSend: the connection whose input caused the packet (its posts, or its own reply);
+  /// kServerSource for what the server sends of its own accord (DB variables, disconnects).
+  /// The transport queues each connection's output per source (event_loop.hpp).
+  ConnectionId source = kServerSource;
 };
+/// Mail to an asynchronous client leaves in packets of at most this many encoded bytes (or
+/// one message, if larger), so a packet of a flooding source is a short turn in the
+/// transport's round-robin over sources. Synchronous clients get one reply per packet, whole.
+inline constexpr std::size_t kFairPacketBytes = 64u * 1024u;
 
 class Hub {
  public:
@@ -140,6 +154,8 @@ class Hub {
                              double now);
   void close(ConnectionId id, const std::string& reason, double now, Action::Kind kind);
   void collect_database_output(double now);
+  /// Send actions for `packet`, split by kFairPacketBytes for an asynchronous client.
+  void queue_send(moos::OutPacket packet);
   double moos_time(double now_real_s) const { return now_real_s * config_.time_warp; }
 
   HubConfig config_;
@@ -149,6 +165,7 @@ class Hub {
   ConnectionId next_id_ = 1;
   double last_refresh_real_s_;
   std::vector<Action> actions_;
+  ConnectionId source_ = kServerSource;  ///< whose input is being processed (Action::source)
 };
 
 }  // namespace moosdb_lite

@@ -60,19 +60,39 @@ void HazardSensor::on_connect_to_server() {
 }
 
 void HazardSensor::on_new_mail(const std::vector<moos::Message>& mail) {
+  report_dropped(backlog_.add(mail));
+  handle_backlog();
+  handled_this_cycle_ = true;
+}
+
+void HazardSensor::handle_backlog() {
   const double cycle_s = cycle_time();
   std::string formatted;
-  for (const moos::Message& m : mail) {
+  for (const moos::Message& m : backlog_.take()) {
     const std::string_view text = mail_text(m, formatted);
     publish(driver_->deliver(hazard::Mail{m.key, text, m.time}, cycle_s));
   }
 }
 
+void HazardSensor::report_dropped(std::size_t dropped) {
+  if (dropped == 0) return;
+  backlog_dropped_ += dropped;
+  if (!backlog_warning_.empty()) retract_run_warning(backlog_warning_);
+  backlog_warning_ = "Mail arrived faster than the sensor handles it: " +
+                     std::to_string(backlog_dropped_) +
+                     " messages dropped, each the oldest of the client that sent the most";
+  report_run_warning(backlog_warning_);
+}
+
 void HazardSensor::iterate() {
+  // A cycle without new mail still takes its share of a backlog a flood left.
+  if (!handled_this_cycle_ && !backlog_.empty()) handle_backlog();
+  handled_this_cycle_ = false;
   publish(driver_->step(cycle_time()));
 }
 
 double HazardSensor::quiet_until_moos_s(double now_moos_s) const {
+  if (!backlog_.empty()) return now_moos_s;  // the backlog's next share is due now
   return driver_ ? driver_->engine().quiet_until_s(now_moos_s) : now_moos_s;
 }
 

@@ -15,6 +15,10 @@
 // - Mail: each message goes to hazard::Driver::deliver with its own time stamp and this cycle's
 //   time (the driver clamps the one to the other and dispatches by variable name). Doubles are
 //   passed as text. Bad mail only yields a run warning (the driver's), never a stop.
+//   Mail passes through a MailBacklog (mail_backlog.hpp): up to kMailPerIteration messages a
+//   cycle are handled at once in arrival order (every normal mission); under a flood each
+//   source gets its share per cycle, the rest in the next cycles (which run even when idle),
+//   and mail the backlog's bounds drop is reported as one run warning.
 // - Iterate: Driver::step at this cycle's time (never earlier than the last mail time).
 // - Every engine output is published in order: postings with notify(), events, run warnings,
 //   retractions and config warnings to the AppCast. With a verbose stream, every posting and
@@ -40,6 +44,7 @@
 #include <vector>
 
 #include "hazard/driver.hpp"
+#include "mail_backlog.hpp"
 #include "hazard/engine.hpp"
 #include "moos/app.hpp"
 
@@ -87,9 +92,17 @@ class HazardSensor final : public moos::MoosApp {
   /// Posts, reports and logs what the engine produced; the posted texts are moved, not copied.
   void publish(hazard::TimedOutputs timed);
   void write_verbose(double now_s, const std::string& variable, const std::string& value) const;
+  /// Hands this cycle's share of the backlog to the engine.
+  void handle_backlog();
+  /// The run warning that counts the mail the backlog dropped.
+  void report_dropped(std::size_t dropped);
 
   HazardSensorOptions options_;
   std::optional<hazard::Driver> driver_;
+  MailBacklog backlog_;
+  bool handled_this_cycle_ = false;  ///< on_new_mail already took this cycle's share
+  std::uint64_t backlog_dropped_ = 0;
+  std::string backlog_warning_;
   /// The connection (comms' connection count) that start-up's visuals went to.
   std::uint64_t start_up_connection_ = 0;
 };

@@ -331,3 +331,47 @@ TEST(HubWarp, MoosTimeIsRealTimeTimesWarp_0_3) {
 
 }  // namespace
 }  // namespace moosdb_lite
+
+namespace moosdb_lite {
+namespace {
+
+// The transport's per-source turns (event_loop.hpp) need each Send to name its source, and a
+// large packet of one source cut into short turns: 40 messages of 4 KiB to an asynchronous
+// subscriber leave as packets of at most kFairPacketBytes, in order, each naming the poster.
+TEST(HubFairness, MailToAnAsyncClientIsCutIntoFairPacketsThatNameTheirSource) {
+  HubConfig c;
+  c.max_packet_bytes = 1024 * 1024;
+  Hub hub(c, kT0, [](const std::string&) {});
+  const auto join = [&](const std::string& name) {
+    const ConnectionId id = hub.open("127.0.0.1:" + name, kT0);
+    hub.receive(id, moos::protocol_banner() + moos::encode_packet({identification(name, true)}),
+                kT0);
+    return id;
+  };
+  const ConnectionId subscriber = join("pSub");
+  const ConnectionId poster = join("pPoster");
+  hub.receive(subscriber, moos::encode_packet({registration("BIG", 0, "pSub")}), kT0);
+  hub.take_actions();
+
+  constexpr int kPosts = 40;
+  std::vector<Message> posts;
+  for (int i = 0; i < kPosts; ++i)
+    posts.push_back(notify_string("BIG", std::to_string(i) + std::string(4096, 'x'), "pPoster"));
+  hub.receive(poster, moos::encode_packet(posts), kT0);
+  int next = 0;
+  int packets = 0;
+  for (const Action& a : hub.take_actions()) {
+    if (a.id != subscriber) continue;
+    ++packets;
+    EXPECT_EQ(a.source, poster);
+    EXPECT_LE(a.bytes.size(), kFairPacketBytes + moos::kPacketHeaderSize);
+    const auto packet = moos::decode_packet(a.bytes);
+    ASSERT_TRUE(packet.has_value());
+    for (const Message& m : *packet) EXPECT_EQ(std::stoi(m.sval), next++);
+  }
+  EXPECT_EQ(next, kPosts);
+  EXPECT_GT(packets, 1);
+}
+
+}  // namespace
+}  // namespace moosdb_lite

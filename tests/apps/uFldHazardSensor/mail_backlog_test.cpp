@@ -1,0 +1,83 @@
+// The sensor's mail backlog (mail_backlog.hpp): arrival order while within the per-iteration
+// budget, per-source shares above it, and bounds that drop the busiest source's oldest mail.
+#include "mail_backlog.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+namespace ufld_hazard_sensor {
+namespace {
+
+moos::Message mail(const std::string& source, const std::string& key, int n) {
+  moos::Message m = moos::make_string_notify(key, std::to_string(n), source, 0.0);
+  return m;
+}
+
+std::vector<std::string> labels(const std::vector<moos::Message>& messages) {
+  std::vector<std::string> out;
+  for (const auto& m : messages) out.push_back(m.source + ":" + m.sval);
+  return out;
+}
+
+TEST(MailBacklog, WithinTheBudgetEverythingIsHandedOverInArrivalOrder) {
+  MailBacklog backlog(4);
+  backlog.add({mail("b", "NODE_REPORT", 1), mail("a", "NODE_REPORT", 2),
+               mail("b", "UHZ_CONFIG_REQUEST", 3), mail("a", "NODE_REPORT", 4)});
+  EXPECT_EQ(labels(backlog.take()), (std::vector<std::string>{"b:1", "a:2", "b:3", "a:4"}));
+  EXPECT_TRUE(backlog.empty());
+  EXPECT_EQ(backlog.bytes(), 0u);
+}
+
+TEST(MailBacklog, AboveTheBudgetARequestBehindAFloodIsInTheFirstShare) {
+  MailBacklog backlog(10);
+  std::vector<moos::Message> flood;
+  for (int i = 0; i < 500; ++i) flood.push_back(mail("pFlooder", "NODE_REPORT", i));
+  flood.push_back(mail("vehicle", "UHZ_CONFIG_REQUEST", 0));
+  backlog.add(flood);
+  const auto first = labels(backlog.take());
+  ASSERT_EQ(first.size(), 10u);
+  EXPECT_EQ(first.back(), "vehicle:0");
+  for (int i = 0; i < 9; ++i) EXPECT_EQ(first[static_cast<std::size_t>(i)], "pFlooder:" + std::to_string(i));
+  // The flood follows in its own order, share by share.
+  int next = 9;
+  while (!backlog.empty()) {
+    for (const auto& label : labels(backlog.take())) EXPECT_EQ(label, "pFlooder:" + std::to_string(next++));
+  }
+  EXPECT_EQ(next, 500);
+}
+
+TEST(MailBacklog, SourcesWithLessThanTheirShareLeaveTheRestToTheOthers) {
+  MailBacklog backlog(6);
+  backlog.add({mail("a", "X", 1), mail("b", "X", 1), mail("b", "X", 2), mail("b", "X", 3),
+               mail("c", "X", 1), mail("b", "X", 4), mail("c", "X", 2), mail("c", "X", 3),
+               mail("c", "X", 4)});
+  // a has 1; b and c share the other 5 (2 each, and one more in arrival order).
+  EXPECT_EQ(labels(backlog.take()),
+            (std::vector<std::string>{"a:1", "b:1", "b:2", "c:1", "c:2"}));
+  EXPECT_EQ(labels(backlog.take()), (std::vector<std::string>{"b:3", "b:4", "c:3", "c:4"}));
+}
+
+TEST(MailBacklog, BeyondItsBoundsTheBusiestSourcesOldestMailIsDropped) {
+  MailBacklog backlog(100, 5);
+  EXPECT_EQ(backlog.add({mail("flood", "N", 1), mail("flood", "N", 2), mail("v", "R", 1),
+                         mail("flood", "N", 3), mail("flood", "N", 4), mail("flood", "N", 5),
+                         mail("v", "R", 2)}),
+            2u);
+  EXPECT_EQ(labels(backlog.take()),
+            (std::vector<std::string>{"v:1", "flood:3", "flood:4", "flood:5", "v:2"}));
+}
+
+TEST(MailBacklog, BeyondItsByteBoundTheBusiestSourcesOldestMailIsDropped) {
+  const std::size_t one = mail("flood", "N", 1).encoded_size();
+  MailBacklog backlog(100, 100, 3 * one);
+  EXPECT_EQ(backlog.add({mail("flood", "N", 1), mail("v", "N", 1), mail("flood", "N", 2),
+                         mail("flood", "N", 3)}),
+            1u);
+  EXPECT_LE(backlog.bytes(), 3 * one);
+  EXPECT_EQ(labels(backlog.take()), (std::vector<std::string>{"v:1", "flood:2", "flood:3"}));
+}
+
+}  // namespace
+}  // namespace ufld_hazard_sensor
