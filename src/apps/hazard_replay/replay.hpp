@@ -74,6 +74,20 @@ struct Timeline {
 void replay(hazard::Driver& driver, const Timeline& timeline,
             const std::function<void(const hazard::TimedOutputs&)>& sink);
 
+/// What the streamed loop left out: mail more than kMaxIterations iterations after the first
+/// (a time no run reaches; the rest of the replay goes on).
+struct StreamCounts {
+  std::size_t too_far = 0;
+};
+
+/// The same loop over mail that arrives one at a time (`next_mail` gives nullptr at the end), in
+/// time order, with the end at `until_s` or else at the last mail: no mail is held, so a log of
+/// any size replays in bounded memory. Mail after `until_s` is read and not delivered.
+StreamCounts replay_stream(hazard::Driver& driver,
+                           const std::function<const hazard::Mail*()>& next_mail,
+                           std::optional<double> until_s, double tick_hz,
+                           const std::function<void(const hazard::TimedOutputs&)>& sink);
+
 /// What one seed's replay produced (--seeds): detection and classification reports, counted
 /// once each (the un-suffixed UHZ_DETECTION_REPORT and UHZ_HAZARD_REPORT postings).
 struct SeedCounts {
