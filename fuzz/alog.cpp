@@ -2,7 +2,10 @@
 // classified and parsed, header lines give their LOGSTART, and every entry is formatted and must
 // parse back as an entry whose variable and source are the originals escaped for a log
 // (base::escape_for_log: a column read from a line holds no blank, so nothing else changes).
+// An entry's time is finite and within kMaxAlogTimeS (a replay of it ends); any other number is
+// kUnusableTime, which readers skip and count.
 
+#include <cmath>
 #include <cstdlib>
 
 #include "base/text.hpp"
@@ -13,7 +16,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (const std::string_view line : fuzz::lines_of(fuzz::as_text(data, size))) {
     (void)moos::alog_logstart(line);
     const moos::AlogParse parsed = moos::parse_alog_line(line);
+    if (parsed.kind == moos::AlogLineKind::kUnusableTime && parsed.error.empty()) std::abort();
     if (parsed.kind != moos::AlogLineKind::kEntry) continue;
+    if (!(std::fabs(parsed.entry.time_s) <= moos::kMaxAlogTimeS)) std::abort();
     std::string again = moos::format_alog_line(parsed.entry);
     if (!again.empty() && again.back() == '\n') again.pop_back();
     const moos::AlogParse reread = moos::parse_alog_line(again);
