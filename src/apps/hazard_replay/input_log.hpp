@@ -1,9 +1,11 @@
 #pragma once
-// hazard_replay's input log, streamed: memory is bounded independently of the log's size, so a
-// log piped in (`<(zcat run.alog.gz)`, a FIFO) costs what a file does.
+// hazard_replay's input log, read a line at a time: memory of our own is bounded independently
+// of the log's size, so a log piped in (`<(zcat run.alog.gz)`, a FIFO) costs what a file does.
 //
 // Contract:
-// - Lines are read one at a time (base::LineStream); a line over kMaxInputLineBytes is skipped.
+// - A regular file is mapped (base::WholeFile: no copy; its pages are the page cache's, and
+//   entries are views into them); a pipe is streamed (base::LineStream: one read block, and each
+//   held entry's text copied). Either way a line over kMaxInputLineBytes is skipped and counted.
 // - Entries come out in time order within a reorder window (kReorderWindowLines lines or
 //   kReorderWindowBytes of text, stable for equal times): a logger writes in time order, and
 //   mild disorder (merged logs) is put right. An entry earlier than one already given out (out
@@ -14,13 +16,13 @@
 //   warning each, with their count, at the end (finish()).
 
 #include <cstddef>
-#include <cstdint>
+#include <deque>
 #include <iosfwd>
 #include <optional>
-#include <queue>
 #include <string>
-#include <vector>
+#include <string_view>
 
+#include "base/file.hpp"
 #include "base/line_stream.hpp"
 #include "base/warning_budget.hpp"
 #include "hazard/driver.hpp"
@@ -32,6 +34,8 @@ namespace hazard_replay {
 inline constexpr std::size_t kMaxInputLineBytes = std::size_t{1} << 20;
 inline constexpr std::size_t kReorderWindowLines = 10000;
 inline constexpr std::size_t kReorderWindowBytes = std::size_t{16} << 20;
+/// The largest regular file mapped, in bytes (beyond the 4 GiB --seeds may hold).
+inline constexpr std::size_t kMaxMappedLogBytes = std::size_t{1} << 40;
 
 class InputLog {
  public:
@@ -48,29 +52,35 @@ class InputLog {
   void finish(std::ostream& err) const;
 
  private:
-  InputLog(base::LineStream lines, std::string path, std::ostream& err);
+  InputLog(std::string path, std::ostream& err) : path_(std::move(path)), err_(&err) {}
+  // An entry's text: views into the mapped file, or (streamed) its own copy. Offsets, not
+  // views, so that moving it (a short copy lives inside the string) keeps it valid.
   struct Held {
-    double time_s;
-    std::uint64_t order;  // arrival: equal times keep the log's order
-    std::string variable;
-    std::string value;
-  };
-  struct Later {
-    bool operator()(const Held& a, const Held& b) const {
-      return a.time_s != b.time_s ? a.time_s > b.time_s : a.order > b.order;
-    }
+    double time_s = 0.0;
+    const char* base = nullptr;  // the mapped file, or nullptr: `text`
+    std::string text;
+    std::size_t variable_at = 0, variable_size = 0, value_at = 0, value_size = 0;
+    std::string_view variable() const { return {(base ? base : text.data()) + variable_at, variable_size}; }
+    std::string_view value() const { return {(base ? base : text.data()) + value_at, value_size}; }
   };
   bool window_full() const;
+  void hold(Held entry);
+  std::optional<std::string_view> next_line();
   bool read_line();  // false at the end of the log
   void fill();
 
-  base::LineStream lines_;
+  std::optional<base::WholeFile> mapped_;
+  std::size_t cursor_ = 0;  // in the mapped file
+  std::optional<base::LineStream> stream_;
+  std::size_t line_number_ = 0;
+  std::size_t long_lines_ = 0;  // of the mapped file (the stream counts its own)
   std::string path_;
   std::ostream* err_;
   double logstart_s_ = 0.0;
-  std::priority_queue<Held, std::vector<Held>, Later> window_;
+  // In time order, equal times in arrival order. A log in order costs a push at the back and a
+  // pop at the front a line; a line out of order is inserted where it belongs.
+  std::deque<Held> window_;
   std::size_t window_bytes_ = 0;
-  std::uint64_t arrivals_ = 0;
   bool at_end_ = false;
   Held current_{};
   hazard::Mail mail_{};

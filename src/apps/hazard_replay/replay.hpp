@@ -33,8 +33,9 @@ namespace hazard_replay {
 
 inline constexpr const char* kDefaultAppName = "uFldHazardSensor";
 
-/// The largest input log, in bytes. A regular file is mapped (base::WholeFile), which costs no
-/// memory of ours, but its entries take about 40 bytes per line: about 1.5 GB at this bound.
+/// The most input --seeds holds, in bytes of entries (their text and about 40 bytes a line): it
+/// replays the input once per seed. A single replay holds only a reorder window of its log
+/// (input_log.hpp), whatever the log's size.
 inline constexpr std::size_t kMaxInputLogBytes = std::size_t{4} << 30;
 
 /// Seeds first..last, both included.

@@ -11,6 +11,7 @@
 #include <chrono>
 #include <csignal>
 
+#include <algorithm>
 #include <filesystem>
 #include <string>
 #include <thread>
@@ -194,6 +195,54 @@ TEST(ReplayStream, AMillionUnknownKeysGiveBoundedWarningsAndMemory) {
   if (kMeasureMemory) {
     EXPECT_LT(peak_child_kb(), 150 * 1024) << line_bytes << "-byte lines";
   }
+}
+
+// A usable time far beyond the first input (an epoch time among times since LOGSTART): the line
+// is skipped and counted, not the whole run refused for its 4e9 iterations.
+TEST(ReplayStream, ALineFarBeyondTheFirstIsSkippedAndTheRunGoesOn) {
+  ScratchDir dir;
+  write_file(dir / "m.moos", mission(kBlock));
+  write_file(dir / "in.alog", alog(small_input()));
+  std::vector<Line> far = small_input();
+  far.push_back({1.7e9, "NODE_REPORT", node_report("v1", 0, 50)});
+  write_file(dir / "far.alog", alog(far));
+  const auto r = run(dir, {"m.moos", "far.alog", "--seed=3"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("hazard_replay: 1 lines more than 100000000 iterations (25000000 s at "
+                       "AppTick) after the first input skipped"),
+            std::string::npos)
+      << r.err;
+  const auto clean = run(dir, {"m.moos", "in.alog", "--seed=3"});
+  const auto body = [](const std::string& out) { return out.substr(out.find("%% LOGSTART")); };
+  EXPECT_EQ(body(r.out), body(clean.out));
+}
+
+// Lines out of order within the reorder window replay as the sorted log does; one out of order
+// by more than the window is delivered late, and counted.
+TEST(ReplayStream, DisorderIsPutRightWithinTheWindowAndCountedBeyondIt) {
+  ScratchDir dir;
+  write_file(dir / "m.moos", mission(kBlock));
+  write_file(dir / "in.alog", alog(small_input()));
+  std::vector<Line> reversed = small_input();
+  std::reverse(reversed.begin(), reversed.end());
+  write_file(dir / "reversed.alog", alog(reversed));
+  const auto sorted = run(dir, {"m.moos", "in.alog", "--seed=3"});
+  const auto put_right = run(dir, {"m.moos", "reversed.alog", "--seed=3"});
+  ASSERT_EQ(put_right.exit_code, 0) << put_right.err;
+  const auto body = [](const std::string& out) { return out.substr(out.find("%% LOGSTART")); };
+  EXPECT_EQ(body(put_right.out), body(sorted.out));
+  EXPECT_EQ(put_right.err.find("delivered late"), std::string::npos);
+
+  std::vector<Line> beyond = small_input();
+  for (std::size_t i = 0; i <= kReorderWindowLines; ++i) beyond.push_back({5.0, "UNWATCHED", "v"});
+  beyond.push_back({1.0, "UHZ_SENSOR_REQUEST", "vname=v1"});
+  write_file(dir / "beyond.alog", alog(beyond));
+  const auto late = run(dir, {"m.moos", "beyond.alog", "--seed=3"});
+  ASSERT_EQ(late.exit_code, 0) << late.err;
+  EXPECT_NE(late.err.find("beyond.alog: 1 lines out of time order by more than the reorder "
+                          "window (10000 lines) delivered late"),
+            std::string::npos)
+      << late.err;
 }
 
 // A log of many malformed lines: the first kMaxWarningsPerKind are printed, the rest counted.
