@@ -14,7 +14,7 @@
 namespace base {
 
 /// Warnings one input line (a hazard line, a sensor_config value) adds, then one summary.
-inline constexpr std::size_t kMaxWarningsPerLine = 3;
+inline constexpr std::size_t kMaxWarningsPerLine = 8;
 /// Warnings of one kind a program prints in one run (hazard_replay's config warnings, run
 /// warnings, skipped log lines), then one summary at the end.
 inline constexpr std::size_t kMaxWarningsPerKind = 100;
