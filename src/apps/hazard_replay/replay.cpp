@@ -5,14 +5,13 @@
 #include <deque>
 #include <filesystem>
 #include <limits>
-#include <utility>
 #include <ostream>
+#include <utility>
 
 #include "app_support.hpp"
 #include "hazard/config.hpp"
 #include "hazard/driver.hpp"
 #include "hazard/engine.hpp"
-#include "base/file.hpp"
 #include "base/text.hpp"
 #include "base/warning_budget.hpp"
 #include "input_log.hpp"
