@@ -60,8 +60,9 @@ class InputLog {
     const char* base = nullptr;  // the mapped file, or nullptr: `text`
     std::string text;
     std::size_t variable_at = 0, variable_size = 0, value_at = 0, value_size = 0;
-    std::string_view variable() const { return {(base ? base : text.data()) + variable_at, variable_size}; }
-    std::string_view value() const { return {(base ? base : text.data()) + value_at, value_size}; }
+    const char* start() const { return base ? base : text.data(); }
+    std::string_view variable() const { return {start() + variable_at, variable_size}; }
+    std::string_view value() const { return {start() + value_at, value_size}; }
   };
   bool window_full() const;
   void hold(Held entry);

@@ -94,7 +94,9 @@ class Writer {
     for (const auto& [budget, what] :
          {std::pair{&config_warnings_, "config warnings"}, {&run_warnings_, "run warnings"},
           {&resolved_, "resolved run warnings"}}) {
-      if (budget->dropped() > 0) err_ << "hazard_replay: " << budget->summary(what) << " (not printed)\n";
+      if (budget->dropped() > 0) {
+        err_ << "hazard_replay: " << budget->summary(what) << " (not printed)\n";
+      }
     }
   }
 
@@ -229,7 +231,8 @@ int run_single(const Options& options, hazard::Engine built, InputLog& log, std:
   }
   Writer writer(out, err, options.app_name);
   const StreamCounts counts = replay_stream(
-      driver, [&, given = false]() mutable { return std::exchange(given, true) ? log.next() : first; },
+      driver,
+      [&, given = false]() mutable { return std::exchange(given, true) ? log.next() : first; },
       options.until_s, tick_hz, [&](const hazard::TimedOutputs& t) { writer.write(t); });
   writer.finish();
   out.flush();
