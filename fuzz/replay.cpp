@@ -1,7 +1,8 @@
 // Fuzz target: hazard_replay's reading of an input .alog, end to end: the input is written as
 // the .alog of a replay of a small fixed mission (three sensor options, a handful of objects,
-// the jake settings), and hazard_replay::run feeds every line through the sensor engine, as
-// the program does. --until bounds the simulated time, so a far-future time stamp in the input
+// the jake settings), and hazard_replay::run streams it (base::LineStream, the reorder window,
+// the skipped and counted lines) and feeds every entry through the sensor engine, as the
+// program does. --until bounds the simulated time, so a far-future time stamp in the input
 // cannot make one run last for hours.
 
 #include <unistd.h>

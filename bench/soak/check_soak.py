@@ -29,7 +29,7 @@ import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 sys.path.insert(0, os.path.join(ROOT, "tools"))
-from mission_files.alog import read_alog  # noqa: E402
+from mission_files.alog import AlogSkips, read_alog  # noqa: E402
 
 SENSOR = "uFldHazardSensor"
 WANTED = {"UHZ_OPTIONS_SUMMARY", "UHZ_CONFIG_REQUEST", "UHZ_CONFIG_ACK", "UHZ_CLASSIFY_REQUEST",
@@ -53,7 +53,9 @@ def count_requests(alog_path):
     accepted = collections.Counter()
     answered = collections.Counter()
     sensor_up = False
-    for _time, variable, source, value, _line in read_alog(alog_path, WANTED.__contains__):
+    skips = AlogSkips()   # unusable times and over-long lines: one warning a kind, at the end
+    for _time, variable, source, value, _line in read_alog(alog_path, WANTED.__contains__,
+                                                           skips=skips):
         counts[variable] += 1
         vname = field(value, "vname")
         if variable == "UHZ_OPTIONS_SUMMARY" and source == SENSOR:
@@ -74,6 +76,8 @@ def count_requests(alog_path):
                 accepted[key] += 1
         elif variable == "UHZ_HAZARD_REPORT":
             answered[(vname, field(value, "label"))] += 1
+    for message in skips.warnings(alog_path):
+        print("check_soak: " + message, file=sys.stderr)
     config_lost = sum(max(0, n - config_acked[v]) for v, n in config_asked.items())
     classify_lost = sum(max(0, n - answered[k]) for k, n in accepted.items())
     return {

@@ -7,6 +7,7 @@
 // leading blanks and a value cannot contain a newline (such a value is written with each
 // newline replaced by a blank, so one posting is always one line).
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -51,24 +52,36 @@ void append_alog_columns(std::string& out, double time_s, std::string_view varia
                          std::string_view source);
 void append_alog_value(std::string& out, std::string_view value);
 
-enum class AlogLineKind { kEntry, kHeader, kBlank, kMalformed };
+/// kHeader: a line whose first non-blank characters are "%%" (the header, and the gap markers a
+/// writer leaves where it dropped lines). kUnusableTime: TIME reads as a number but is not finite
+/// or lies beyond kMaxAlogTimeS (`nan`, `-inf`, `1e300`): no clock wrote it, and a reader that
+/// replays it would run for ever; readers skip such lines and say how many in one warning.
+enum class AlogLineKind { kEntry, kHeader, kBlank, kMalformed, kUnusableTime };
+
+/// The largest TIME magnitude a reader accepts, in seconds: above any epoch time (2286) and any
+/// time since a LOGSTART.
+inline constexpr double kMaxAlogTimeS = 1e10;
 
 struct AlogParse {
   AlogLineKind kind = AlogLineKind::kBlank;
   AlogEntry entry;        ///< valid when kind == kEntry
-  std::string error;      ///< why the line is malformed (kind == kMalformed)
+  std::string error;      ///< why the line is malformed (kMalformed, kUnusableTime)
 };
 
 struct AlogViewParse {
   AlogLineKind kind = AlogLineKind::kBlank;
   AlogEntryView entry;  ///< views into the line; valid when kind == kEntry
-  std::string error;    ///< why the line is malformed (kind == kMalformed)
+  std::string error;    ///< why the line is malformed (kMalformed, kUnusableTime)
 };
 
 /// Classifies and parses one line (without its newline; a trailing CR is ignored).
 AlogParse parse_alog_line(std::string_view line);
 /// The same, without copying the columns (the line must outlive the entry).
 AlogViewParse parse_alog_view(std::string_view line);
+
+/// The one warning for `count` lines of kind kUnusableTime ("N lines with unusable times (not
+/// finite, or beyond 1e10 s) skipped"); empty when `count` is 0.
+std::string unusable_times_warning(std::size_t count);
 
 /// The LOGSTART value of a header line ("%% LOGSTART 1700000000.0"), if it is one.
 std::optional<double> alog_logstart(std::string_view header_line);

@@ -30,7 +30,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
-from mission_files.alog import read_alog  # noqa: E402  (tools/mission_files)
+from mission_files.alog import AlogSkips, read_alog  # noqa: E402  (tools/mission_files)
 from mission_files.hazard_file import read_hazard_file  # noqa: E402
 from mission_files.messages import hazard_handover, hazardset_report  # noqa: E402
 from mission_files.output_file import write_output_file  # noqa: E402
@@ -54,7 +54,9 @@ def summarise(alog, truth, final):
     vehicles, evals = {}, {}
     deploy_s, end_s = None, None
     malformed = []
-    entries = read_alog(alog, on_malformed=lambda line_no, _why: malformed.append(line_no))
+    skips = AlogSkips()   # unusable times and over-long lines: counted, one warning a kind
+    entries = read_alog(alog, on_malformed=lambda line_no, _why: malformed.append(line_no),
+                        skips=skips)
     for t, var, _source, value, _line_no in entries:
         if var == 'DEPLOY_ALL' and deploy_s is None:
             deploy_s = t
@@ -100,6 +102,8 @@ def summarise(alog, truth, final):
                     end_s = t
     if malformed:
         print('mission_summary: %d malformed log lines skipped' % len(malformed), file=sys.stderr)
+    for message in skips.warnings(alog):
+        print('mission_summary: ' + message, file=sys.stderr)
     sim_s = (end_s - deploy_s) if (end_s is not None and deploy_s is not None) else None
     return vehicles, evals, sim_s
 

@@ -8,6 +8,7 @@
 #include "hazard/dice.hpp"
 #include "hazard/messages/hazard_line.hpp"
 #include "base/text.hpp"
+#include "base/warning_budget.hpp"
 
 namespace hazard {
 
@@ -185,6 +186,15 @@ HazardFileCounts load_hazard_file_text(std::string_view text, std::string_view f
   const auto lines = static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1;
   field.reserve(field.size() + lines);
   int line_number = 0;
+  // A file of a million bad lines keeps kMaxWarningsPerKind warnings and counts the others.
+  const std::size_t first_warning = warnings.size();
+  std::size_t warnings_dropped = 0;
+  const auto bound_warnings = [&] {
+    while (warnings.size() - first_warning > base::kMaxWarningsPerKind) {
+      warnings.pop_back();
+      ++warnings_dropped;
+    }
+  };
   // A UTF-8 byte-order mark is accepted at the start, as in mission files.
   std::size_t start = base::starts_with(text, "\xEF\xBB\xBF") ? 3 : 0;
   while (start <= text.size()) {
@@ -193,6 +203,7 @@ HazardFileCounts load_hazard_file_text(std::string_view text, std::string_view f
         text.substr(start, end == std::string_view::npos ? std::string_view::npos : end - start);
     start = end == std::string_view::npos ? text.size() + 1 : end + 1;
     ++line_number;
+    bound_warnings();
     const std::string_view line = base::trim(without_comment(raw));
     if (line.empty()) continue;
     const auto eq = line.find('=');
@@ -212,6 +223,11 @@ HazardFileCounts load_hazard_file_text(std::string_view text, std::string_view f
                          base::log_excerpt(line) +
                          "' ignored (expected 'hazard = ...', 'region = ...' or 'source = ...')");
     }
+  }
+  bound_warnings();
+  if (warnings_dropped > 0) {
+    warnings.push_back(std::string(file) + ": ... and " + std::to_string(warnings_dropped) +
+                       " more warnings");
   }
   return counts;
 }

@@ -4,7 +4,9 @@
 #include <cmath>
 #include <limits>
 
+#include "base/key_value_reader.hpp"
 #include "base/text.hpp"
+#include "base/warning_budget.hpp"
 #include "hazard/ranges.hpp"
 #include "messages/fields.hpp"
 
@@ -24,11 +26,13 @@ constexpr double kMaxPclass = 1.0;
 
 SensorConfigParse parse_sensor_config(std::string_view value) {
   SensorConfigParse out;
+  base::WarningBudget budget{base::kMaxWarningsPerLine};  // a few warnings, then a count
   std::optional<std::string_view> width, exp, pclass, max;
-  for (const base::KeyValue& kv : base::split_key_values(value)) {
+  base::KeyValueReader pieces(value);  // one at a time: a line of a million keys, no vector
+  for (base::KeyValue kv; pieces.next(kv);) {
     const std::string key = base::to_lower(kv.key);
     if (!kv.has_equals) {
-      out.warnings.push_back("piece '" + base::excerpt(kv.key) + "' has no '='; ignored");
+      budget.add(out.warnings, "piece '" + base::excerpt(kv.key) + "' has no '='; ignored");
     } else if (key == "width") {
       width = kv.value;
     } else if (key == "exp") {
@@ -38,10 +42,11 @@ SensorConfigParse parse_sensor_config(std::string_view value) {
     } else if (key == "max") {
       max = kv.value;
     } else {
-      out.warnings.push_back("unknown key '" + std::string(kv.key) + "' (value '" +
-                             base::excerpt(kv.value) + "') ignored");
+      budget.add(out.warnings, "unknown key '" + base::excerpt(kv.key) + "' (value '" +
+                                   base::excerpt(kv.value) + "') ignored");
     }
   }
+  if (budget.dropped() > 0) out.warnings.push_back(budget.summary("warnings on this line"));
   auto fail = [&](std::string why) {
     out.error = std::move(why);
     return out;

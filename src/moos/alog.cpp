@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <system_error>
@@ -146,6 +147,26 @@ std::string format_alog_line(const AlogEntry& entry) {
   return out;
 }
 
+namespace {
+
+// A TIME token that is a number, though perhaps not a finite one ("nan", "-inf", "1e400"): as
+// strtod reads it, every byte used.
+bool reads_as_double(std::string_view token) {
+  if (!token.empty() && token.front() == '+') token.remove_prefix(1);
+  double value = 0.0;
+  const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
+  return end == token.data() + token.size() && !token.empty() &&
+         (error == std::errc() || error == std::errc::result_out_of_range);
+}
+
+}  // namespace
+
+std::string unusable_times_warning(std::size_t count) {
+  if (count == 0) return {};
+  return std::to_string(count) + (count == 1 ? " line" : " lines") +
+         " with unusable times (not finite, or beyond 1e10 s) skipped";
+}
+
 AlogViewParse parse_alog_view(std::string_view line) {
   AlogViewParse result;
   std::string_view rest = trim_right_cr(line);
@@ -161,9 +182,11 @@ AlogViewParse parse_alog_view(std::string_view line) {
   skip_blanks(rest);
   const std::string_view value = rest;
   const auto t = base::parse_number(time);
-  if (!t) {
-    result.kind = AlogLineKind::kMalformed;
-    result.error = "time '" + base::log_excerpt(time) + "' is not a finite number";
+  if (!t || std::fabs(*t) > kMaxAlogTimeS) {
+    const bool number = reads_as_double(time);
+    result.kind = number ? AlogLineKind::kUnusableTime : AlogLineKind::kMalformed;
+    result.error = "time '" + base::log_excerpt(time) +
+                   (number ? "' is not finite or beyond 1e10 s" : "' is not a finite number");
     return result;
   }
   if (variable.empty() || source.empty()) {

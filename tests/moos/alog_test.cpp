@@ -44,9 +44,33 @@ TEST(Alog, MalformedLinesSayWhy) {
   AlogParse p = parse_alog_line("abc NODE_REPORT src NAME=x");
   EXPECT_EQ(p.kind, AlogLineKind::kMalformed);
   EXPECT_NE(p.error.find("'abc'"), std::string::npos);
-  EXPECT_EQ(parse_alog_line("nan X src v").kind, AlogLineKind::kMalformed);
-  EXPECT_EQ(parse_alog_line("1e999 X src v").kind, AlogLineKind::kMalformed);
   EXPECT_EQ(parse_alog_line("1.0 X").kind, AlogLineKind::kMalformed);
+  EXPECT_EQ(parse_alog_line("1e5x X src v").kind, AlogLineKind::kMalformed);
+}
+
+// A time that is a number no clock wrote is its own kind: readers skip it and count it, under
+// one warning, instead of replaying until 1e300 s.
+TEST(Alog, NonFiniteAndAbsurdTimesAreUnusable) {
+  for (const char* time : {"nan", "NaN", "-inf", "+inf", "infinity", "1e300", "-1e300", "1e999",
+                           "1.5e10"}) {
+    const AlogParse p = parse_alog_line(std::string(time) + " X src v");
+    EXPECT_EQ(p.kind, AlogLineKind::kUnusableTime) << time;
+    EXPECT_NE(p.error.find("is not finite or beyond 1e10 s"), std::string::npos) << p.error;
+  }
+  EXPECT_EQ(parse_alog_line("1700000000.5 X src v").kind, AlogLineKind::kEntry);  // epoch time
+  EXPECT_EQ(parse_alog_line("-1e10 X src v").kind, AlogLineKind::kEntry);
+  EXPECT_EQ(unusable_times_warning(0), "");
+  EXPECT_EQ(unusable_times_warning(1),
+            "1 line with unusable times (not finite, or beyond 1e10 s) skipped");
+  EXPECT_EQ(unusable_times_warning(3),
+            "3 lines with unusable times (not finite, or beyond 1e10 s) skipped");
+}
+
+// A writer marks the lines it dropped with a "%%" comment line: readers pass over it.
+TEST(Alog, GapMarkerCommentsAreHeaderLines) {
+  EXPECT_EQ(parse_alog_line("%% 120 lines dropped (queue full)").kind, AlogLineKind::kHeader);
+  EXPECT_EQ(parse_alog_line("  %%gap 12.5 X src").kind, AlogLineKind::kHeader);
+  EXPECT_FALSE(alog_logstart("%% 120 lines dropped"));
 }
 
 // The warning quotes the bad time for a terminal or a log: escaped and cut, never raw.

@@ -145,9 +145,33 @@ class ObjectReader:
                 "source": f.get("source")}
 
 
+MAX_WARNINGS_PER_LINE = 8     # as base::kMaxWarningsPerLine
+MAX_WARNINGS_PER_FILE = 100   # as base::kMaxWarningsPerKind
+MAX_KEYS_TRACKED = 64         # keys remembered to warn of a repeat (as the C++ reader)
+
+
+class BoundedWarnings:
+    """The first `limit` warnings kept, the others counted: a line of a million unknown keys
+    costs a few warnings and a count, not a million (as base::WarningBudget)."""
+
+    def __init__(self, limit):
+        self.kept, self.dropped, self.limit = [], 0, limit
+
+    def append(self, text):
+        if len(self.kept) < self.limit:
+            self.kept.append(text)
+        else:
+            self.dropped += 1
+
+    def texts(self, what):
+        more = ["... and %d more %s" % (self.dropped, what)] if self.dropped else []
+        return self.kept + more
+
+
 def parse_object(spec):
     """(object dict or None, error text or None, [warnings]) for the text after `hazard =`."""
     reader = ObjectReader()
+    reader.warnings = BoundedWarnings(MAX_WARNINGS_PER_LINE)
     seen = set()
     for key, value, has_equals in split_key_values(spec):
         if not has_equals:
@@ -155,15 +179,17 @@ def parse_object(spec):
             continue
         if to_lower(key) in seen:
             reader.warnings.append("key '%s' repeated; the later value is used" % key)
-        seen.add(to_lower(key))
+        if len(seen) < MAX_KEYS_TRACKED:
+            seen.add(to_lower(key))
         reader.read(key, value)
     obj = reader.finish()
-    return obj, reader.error, reader.warnings
+    return obj, reader.error, reader.warnings.texts("warnings on this line")
 
 
 def parse_hazard_text(text, name):
     """A HazardFile from the text of a file called `name` (in the warnings)."""
     result, labels = HazardFile(), set()
+    result.warnings = BoundedWarnings(MAX_WARNINGS_PER_FILE)
     for line_no, raw in enumerate(text.split("\n"), 1):
         place = "%s:%d: " % (name, line_no)
         line = raw.split("//", 1)[0].strip(" \t\r\n")
@@ -173,7 +199,8 @@ def parse_hazard_text(text, name):
         key = to_lower(key.strip(" \t\r\n"))
         if equals and key == "hazard":
             obj, error, warnings = parse_object(value)
-            result.warnings += [place + w for w in warnings]
+            for w in warnings:
+                result.warnings.append(place + w)
             if obj is None:
                 result.warnings.append(place + error + "; line rejected")
             elif obj["label"] in labels:
@@ -191,6 +218,9 @@ def parse_hazard_text(text, name):
         else:
             result.warnings.append(place + "unrecognised line '%s' ignored (expected 'hazard = "
                                    "...', 'region = ...' or 'source = ...')" % excerpt(line))
+    bounded = result.warnings
+    result.warnings = bounded.kept + (["%s: ... and %d more warnings" % (name, bounded.dropped)]
+                                      if bounded.dropped else [])
     return result
 
 

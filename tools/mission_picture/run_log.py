@@ -5,7 +5,7 @@ with their place, never a stop."""
 import re
 import sys
 
-from mission_files.alog import AlogHeader, read_alog
+from mission_files.alog import AlogHeader, AlogSkips, read_alog
 from mission_files.hazard_file import read_hazard_file
 from mission_files.messages import hazard_handover, hazardset_report
 from mission_files.run_files import read_summary, summary_evals
@@ -177,8 +177,10 @@ WANTED = re.compile("|".join(re.escape(v) for v in HANDLERS) + "|" + CONFIG_ACK_
 def read_log(path, run):
     """Stream the log once; only the variables drawn are parsed (mission_files.alog)."""
     header = AlogHeader()
+    skips = AlogSkips()
     try:
-        entries = read_alog(path, WANTED.fullmatch, lambda n, _why: warn_malformed(path, n), header)
+        entries = read_alog(path, WANTED.fullmatch, lambda n, _why: warn_malformed(path, n), header,
+                            skips)
     except OSError as e:
         warn("cannot read log %s: %s" % (path, e))
         return
@@ -189,6 +191,8 @@ def read_log(path, run):
             handler(run, t, value, place)
         except Exception as e:  # one bad value never stops the picture
             warn("%s: %s value skipped (%s)" % (where(place), var, e))
+    for message in skips.warnings(path):   # one line per kind, with the count
+        warn(message)
     run.log_name = header.log_name
 
 

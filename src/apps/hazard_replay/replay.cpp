@@ -2,16 +2,19 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <filesystem>
 #include <limits>
 #include <ostream>
+#include <utility>
 
 #include "app_support.hpp"
 #include "hazard/config.hpp"
 #include "hazard/driver.hpp"
 #include "hazard/engine.hpp"
-#include "base/file.hpp"
 #include "base/text.hpp"
+#include "base/warning_budget.hpp"
+#include "input_log.hpp"
 #include "moos/alog.hpp"
 #include "moos/mission.hpp"
 #include "score.hpp"
@@ -23,44 +26,31 @@ namespace {
 namespace fs = std::filesystem;
 using base::fix;
 
-// The bytes of the input log and its entries, which are views into them.
-struct Input {
-  base::WholeFile file;               // (moving it keeps the views valid)
+// --seeds replays the input once per seed, so it holds the entries (the streamed single replay
+// does not): their text, and views into it in time order.
+struct HeldInput {
+  std::deque<std::string> texts;      // variable, value, variable, ... (never moved)
   std::vector<hazard::Mail> entries;  // in time order
-  double logstart_s = 0.0;
 };
 
-// Bytes of an input line, about (a NODE_REPORT line is about 110): a first guess of the entries.
-constexpr std::size_t kTypicalLineBytes = 96;
-
-std::optional<Input> read_input(const std::string& path, std::string& problem,
-                                std::ostream& err) {
-  std::optional<base::WholeFile> file = base::WholeFile::open(path, kMaxInputLogBytes, problem);
-  if (!file) return std::nullopt;
-  Input input{std::move(*file), {}, 0.0};
-  const std::string_view all = input.file.text();
-  input.entries.reserve(all.size() / kTypicalLineBytes);
-  int number = 0;
-  // Lines as std::getline gives them: split at '\n', a last line without one still counts.
-  for (std::size_t start = 0; start < all.size();) {
-    const std::size_t newline = all.find('\n', start);
-    const std::size_t end = newline == std::string_view::npos ? all.size() : newline;
-    const std::string_view line = all.substr(start, end - start);
-    start = end + 1;
-    ++number;
-    const moos::AlogViewParse p = moos::parse_alog_view(line);
-    if (p.kind == moos::AlogLineKind::kEntry) {
-      input.entries.push_back(hazard::Mail{p.entry.variable, p.entry.value, p.entry.time_s});
-    } else if (p.kind == moos::AlogLineKind::kHeader) {
-      if (const auto logstart = moos::alog_logstart(line)) input.logstart_s = *logstart;
-    } else if (p.kind == moos::AlogLineKind::kMalformed) {
-      err << path << ":" << number << ": warning: " << p.error << "; line skipped\n";
+std::optional<HeldInput> hold_input(InputLog& log, std::string& problem) {
+  HeldInput input;
+  std::size_t bytes = 0;
+  for (const hazard::Mail* m = log.next(); m != nullptr; m = log.next()) {
+    bytes += m->variable.size() + m->value.size() + sizeof(hazard::Mail);
+    if (bytes > kMaxInputLogBytes) {
+      problem = "its entries take more than " + std::to_string(kMaxInputLogBytes) +
+                " bytes (--seeds holds them all)";
+      return std::nullopt;
     }
+    const std::string& variable = input.texts.emplace_back(m->variable);
+    const std::string& value = input.texts.emplace_back(m->value);
+    input.entries.push_back(hazard::Mail{variable, value, m->time_s});
   }
   const auto earlier = [](const hazard::Mail& a, const hazard::Mail& b) {
     return a.time_s < b.time_s;
   };
-  // A logger writes in time order: sorting (moving every entry) only when it did not.
+  // In order but for lines beyond the reorder window: sorting only then.
   if (!std::is_sorted(input.entries.begin(), input.entries.end(), earlier)) {
     std::stable_sort(input.entries.begin(), input.entries.end(), earlier);
   }
@@ -92,10 +82,22 @@ class Writer {
       return;
     }
     const std::string when = "[" + fix(time_s, 3) + "] ";
-    for (const auto& w : o.config_warnings) err_ << when << "config warning: " << w << "\n";
-    for (const auto& w : o.run_warnings) err_ << when << "run warning: " << w << "\n";
-    for (const auto& w : o.retracted_run_warnings) err_ << when << "resolved: " << w << "\n";
+    print(config_warnings_, when, "config warning: ", o.config_warnings);
+    print(run_warnings_, when, "run warning: ", o.run_warnings);
+    print(resolved_, when, "resolved: ", o.retracted_run_warnings);
     for (const auto& e : o.events) err_ << when << "event: " << e << "\n";
+  }
+
+  // The count of each kind of warning left unprinted, one line each.
+  void finish() {
+    flush();
+    for (const auto& [budget, what] :
+         {std::pair{&config_warnings_, "config warnings"}, {&run_warnings_, "run warnings"},
+          {&resolved_, "resolved run warnings"}}) {
+      if (budget->dropped() > 0) {
+        err_ << "hazard_replay: " << budget->summary(what) << " (not printed)\n";
+      }
+    }
   }
 
   // The TIME, VARIABLE and SOURCE columns; built once for a run of lines that share them (an
@@ -113,6 +115,14 @@ class Writer {
     buffer_.append(columns_);
   }
 
+  // Warnings of one kind: the first base::kMaxWarningsPerKind of a run, then only counted.
+  void print(base::WarningBudget& budget, const std::string& when, const char* kind,
+             const std::vector<std::string>& warnings) {
+    for (const auto& w : warnings) {
+      if (budget.admit()) err_ << when << kind << w << "\n";
+    }
+  }
+
   void flush() {
     out_.write(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
     buffer_.clear();
@@ -127,10 +137,108 @@ class Writer {
   std::string columns_;  // the columns of the last line written, for columns_time_s_ and ...
   double columns_time_s_ = std::numeric_limits<double>::quiet_NaN();  // (never equal at first)
   std::string columns_variable_;  // ... columns_variable_
+  base::WarningBudget config_warnings_{base::kMaxWarningsPerKind};
+  base::WarningBudget run_warnings_{base::kMaxWarningsPerKind};
+  base::WarningBudget resolved_{base::kMaxWarningsPerKind};
 };
 
 // A guard against a mistyped --until (1e12 s at 4 Hz would never finish).
 constexpr double kMaxIterations = 1e8;
+
+}  // namespace
+
+namespace {
+
+// The refusal of a --until beyond kMaxIterations from the first input; empty when it is within.
+std::string too_many_iterations(double start_s, double end_s, double tick_hz) {
+  if ((end_s - start_s) * tick_hz <= kMaxIterations) return {};
+  return "hazard_replay: " + fix((end_s - start_s) * tick_hz, 0) +
+         " iterations from the first input to the end; more than " + fix(kMaxIterations, 0) +
+         " is refused (check --until and AppTick)\n";
+}
+
+void report_too_far(const StreamCounts& counts, double tick_hz, std::ostream& err) {
+  if (counts.too_far == 0) return;
+  err << "hazard_replay: " << counts.too_far << " lines more than " << fix(kMaxIterations, 0)
+      << " iterations (" << fix(kMaxIterations / tick_hz, 0)
+      << " s at AppTick) after the first input skipped\n";
+}
+
+// --seeds: the held input replayed once per seed, one JSON line each.
+int run_seeds(const Options& options, const moos::MissionFile& mission,
+              const hazard::Engine& built, InputLog& log, std::ostream& out, std::ostream& err) {
+  std::string problem;
+  const std::optional<HeldInput> input = hold_input(log, problem);
+  if (!input) {
+    err << "hazard_replay: cannot read input log '" << options.input_path << "': " << problem
+        << "\n";
+    return 1;
+  }
+  const double tick_hz = built.config().app_tick_hz;
+  const auto& mail = input->entries;
+  const double start_s = mail.empty() ? 0.0 : mail.front().time_s;
+  const double end_s = options.until_s.value_or(mail.empty() ? start_s : mail.back().time_s);
+  if (const std::string refusal = too_many_iterations(start_s, end_s, tick_hz); !refusal.empty()) {
+    err << refusal;
+    return 1;
+  }
+  const Timeline timeline{&mail, start_s, end_s, tick_hz};
+  std::optional<double> score;
+  if (options.score) {
+    // The recorded report does not depend on the dice: graded once, the same on every line.
+    const RecordedScore graded = score_recorded_reports(mission, mail, end_s, err);
+    if (!graded.error.empty()) {
+      err << "hazard_replay: " << graded.error << " (in '" << options.config_path << "')\n";
+      return 1;
+    }
+    score = graded.score;
+    if (!score) {
+      err << "hazard_replay: --score: '" << options.input_path
+          << "' holds no HAZARDSET_REPORT the metric accepts; the lines carry no score\n";
+    }
+  }
+  err << "hazard_replay: seeds " << options.seeds->first << ".." << options.seeds->last
+      << ", AppTick " << base::fmt(tick_hz) << " Hz\n";
+  for (std::uint64_t seed = options.seeds->first;; ++seed) {
+    hazard::Driver seeded(study_engine(built, seed));
+    out << seed_summary_json(seed, count_reports(seeded, timeline), score) << "\n";
+    if (seed == options.seeds->last) break;
+  }
+  out.flush();
+  return 0;
+}
+
+// One replay, streamed from the log to the .alog written.
+int run_single(const Options& options, hazard::Engine built, InputLog& log, std::ostream& out,
+               std::ostream& err) {
+  const double tick_hz = built.config().app_tick_hz;
+  const hazard::Mail* first = log.next();
+  if (first && options.until_s) {
+    const std::string refusal = too_many_iterations(first->time_s, *options.until_s, tick_hz);
+    if (!refusal.empty()) {
+      err << refusal;
+      return 1;
+    }
+  }
+  hazard::Driver driver(std::move(built));
+  const hazard::SeedChoice& seed = driver.engine().seed();
+  err << "hazard_replay: seed " << seed.seed << " (" << hazard::seed_source_name(seed.source)
+      << "), AppTick " << base::fmt(tick_hz) << " Hz\n";
+  out << moos::alog_header(fs::path(options.input_path).filename().string(), log.logstart_s());
+  if (!first) {
+    err << "hazard_replay: '" << options.input_path << "' holds no input lines\n";
+    return 0;
+  }
+  Writer writer(out, err, options.app_name);
+  const StreamCounts counts = replay_stream(
+      driver,
+      [&, given = false]() mutable { return std::exchange(given, true) ? log.next() : first; },
+      options.until_s, tick_hz, [&](const hazard::TimedOutputs& t) { writer.write(t); });
+  writer.finish();
+  out.flush();
+  report_too_far(counts, tick_hz, err);
+  return 0;
+}
 
 }  // namespace
 
@@ -154,89 +262,65 @@ int run(const Options& options, std::ostream& out, std::ostream& err) {
     return 1;
   }
   std::string problem;
-  const auto input = read_input(options.input_path, problem, err);
-  if (!input) {
+  std::optional<InputLog> log = InputLog::open(options.input_path, err, problem);
+  if (!log) {
     err << "hazard_replay: cannot read input log '" << options.input_path << "': " << problem
         << "\n";
     return 1;
   }
-
   // Hazard files are named relative to the mission file.
   // LatOrigin/LongOrigin place LAT/LON-only node reports and lat/lon hazard lines (geodesy).
   hazard::Engine built = app_support::make_sensor_engine(
       block->lines, mission->directory(), app_support::mission_origin(*mission),
       options.seeds ? options.seeds->first : options.seed, app_support::operating_system_seed);
-  const double tick_hz = built.config().app_tick_hz;
-  const auto& mail = input->entries;
-  const double start_s = mail.empty() ? 0.0 : mail.front().time_s;
-  const double end_s = options.until_s.value_or(mail.empty() ? start_s : mail.back().time_s);
-  if ((end_s - start_s) * tick_hz > kMaxIterations) {
-    err << "hazard_replay: " << fix((end_s - start_s) * tick_hz, 0)
-        << " iterations from the first input to the end; more than " << fix(kMaxIterations, 0)
-        << " is refused (check --until and AppTick)\n";
-    return 1;
-  }
-  const Timeline timeline{&mail, start_s, end_s, tick_hz};
-  if (options.seeds) {
-    std::optional<double> score;
-    if (options.score) {
-      // The recorded report does not depend on the dice: graded once, the same on every line.
-      const RecordedScore graded = score_recorded_reports(*mission, mail, end_s, err);
-      if (!graded.error.empty()) {
-        err << "hazard_replay: " << graded.error << " (in '" << options.config_path << "')\n";
-        return 1;
-      }
-      score = graded.score;
-      if (!score) {
-        err << "hazard_replay: --score: '" << options.input_path
-            << "' holds no HAZARDSET_REPORT the metric accepts; the lines carry no score\n";
-      }
-    }
-    err << "hazard_replay: seeds " << options.seeds->first << ".." << options.seeds->last
-        << ", AppTick " << base::fmt(tick_hz) << " Hz\n";
-    for (std::uint64_t seed = options.seeds->first;; ++seed) {
-      hazard::Driver seeded(study_engine(built, seed));
-      out << seed_summary_json(seed, count_reports(seeded, timeline), score) << "\n";
-      if (seed == options.seeds->last) break;
-    }
-    out.flush();
-    return 0;
-  }
+  const int status = options.seeds ? run_seeds(options, *mission, built, *log, out, err)
+                                   : run_single(options, std::move(built), *log, out, err);
+  log->finish(err);
+  return status;
+}
 
-  hazard::Driver driver(std::move(built));
-  const hazard::SeedChoice& seed = driver.engine().seed();
-  err << "hazard_replay: seed " << seed.seed << " (" << hazard::seed_source_name(seed.source)
-      << "), AppTick " << base::fmt(tick_hz) << " Hz\n";
-  out << moos::alog_header(fs::path(options.input_path).filename().string(), input->logstart_s);
-  if (mail.empty()) {
-    err << "hazard_replay: '" << options.input_path << "' holds no input lines\n";
-    return 0;
+StreamCounts replay_stream(hazard::Driver& driver,
+                           const std::function<const hazard::Mail*()>& next_mail,
+                           std::optional<double> until_s, double tick_hz,
+                           const std::function<void(const hazard::TimedOutputs&)>& sink) {
+  StreamCounts counts;
+  const hazard::Mail* mail = next_mail();
+  if (mail == nullptr) return counts;
+  const double start_s = mail->time_s;
+  const double last_allowed_s = start_s + kMaxIterations / tick_hz;
+  sink(driver.start(start_s));
+  long k = 0;
+  double now_s = start_s;
+  // Iterations before `t` (or at it too): mail stamped at an iteration's time goes first.
+  const auto step_until = [&](double t, bool at_t_too) {
+    while (at_t_too ? now_s <= t : now_s < t) {
+      sink(driver.step(now_s));
+      ++k;
+      now_s = start_s + static_cast<double>(k) / tick_hz;
+    }
+  };
+  double last_s = start_s;
+  for (; mail != nullptr; mail = next_mail()) {
+    if (until_s && mail->time_s > *until_s) continue;  // read on: a pipe's writer finishes
+    if (mail->time_s > last_allowed_s) {
+      ++counts.too_far;
+      continue;
+    }
+    step_until(mail->time_s, false);
+    sink(driver.deliver(*mail));
+    last_s = std::max(last_s, mail->time_s);
   }
-  Writer writer(out, err, options.app_name);
-  replay(driver, timeline, [&](const hazard::TimedOutputs& t) { writer.write(t); });
-  writer.flush();
-  out.flush();
-  return 0;
+  step_until(until_s.value_or(last_s), true);
+  return counts;
 }
 
 void replay(hazard::Driver& driver, const Timeline& timeline,
             const std::function<void(const hazard::TimedOutputs&)>& sink) {
-  const std::vector<hazard::Mail>& mail = *timeline.mail;
-  if (mail.empty()) return;
-  sink(driver.start(timeline.start_s));
   std::size_t next = 0;
-  auto deliver_until = [&](double t) {
-    for (; next < mail.size() && mail[next].time_s <= t; ++next) {
-      sink(driver.deliver(mail[next]));
-    }
-  };
-  for (long k = 0;; ++k) {
-    const double now_s = timeline.start_s + static_cast<double>(k) / timeline.tick_hz;
-    if (now_s > timeline.end_s) break;
-    deliver_until(now_s);
-    sink(driver.step(now_s));
-  }
-  deliver_until(timeline.end_s);
+  const std::vector<hazard::Mail>& mail = *timeline.mail;
+  (void)replay_stream(
+      driver, [&]() { return next < mail.size() ? &mail[next++] : nullptr; }, timeline.end_s,
+      timeline.tick_hz, sink);
 }
 
 }  // namespace hazard_replay

@@ -34,8 +34,9 @@ namespace hazard_replay {
 
 inline constexpr const char* kDefaultAppName = "uFldHazardSensor";
 
-/// The largest input log, in bytes. A regular file is mapped (base::WholeFile), which costs no
-/// memory of ours, but its entries take about 40 bytes per line: about 1.5 GB at this bound.
+/// The most input --seeds holds, in bytes of entries (their text and about 40 bytes a line): it
+/// replays the input once per seed. A single replay holds only a reorder window of its log
+/// (input_log.hpp), whatever the log's size.
 inline constexpr std::size_t kMaxInputLogBytes = std::size_t{4} << 30;
 
 /// Seeds first..last, both included.
@@ -77,6 +78,20 @@ struct Timeline {
 /// call's outputs go to `sink`. Nothing when there is no mail.
 void replay(hazard::Driver& driver, const Timeline& timeline,
             const std::function<void(const hazard::TimedOutputs&)>& sink);
+
+/// What the streamed loop left out: mail more than kMaxIterations iterations after the first
+/// (a time no run reaches; the rest of the replay goes on).
+struct StreamCounts {
+  std::size_t too_far = 0;
+};
+
+/// The same loop over mail that arrives one at a time (`next_mail` gives nullptr at the end), in
+/// time order, with the end at `until_s` or else at the last mail: no mail is held, so a log of
+/// any size replays in bounded memory. Mail after `until_s` is read and not delivered.
+StreamCounts replay_stream(hazard::Driver& driver,
+                           const std::function<const hazard::Mail*()>& next_mail,
+                           std::optional<double> until_s, double tick_hz,
+                           const std::function<void(const hazard::TimedOutputs&)>& sink);
 
 /// What one seed's replay produced (--seeds): detection and classification reports, counted
 /// once each (the un-suffixed UHZ_DETECTION_REPORT and UHZ_HAZARD_REPORT postings).

@@ -56,6 +56,7 @@ std::optional<ReplayLog> read_log(const std::string& path, const OfflineSetup& s
   std::string error;
   auto log = read_replay_log(path, s.config.watch, ReplayLimits{}, &error);
   if (!log) err << kAppName << ": " << error << "\n";
+  if (log) for (const std::string& w : log->warnings) err << kAppName << ": warning: " << w << "\n";
   return log;
 }
 

@@ -1,8 +1,8 @@
 #include "replay_log.hpp"
 
 #include <filesystem>
-#include <fstream>
 
+#include "base/line_stream.hpp"
 #include "base/text.hpp"
 #include "moos/alog.hpp"
 #include "moos/wildcard.hpp"
@@ -15,11 +15,28 @@ bool watch_matches(const std::vector<std::string>& watch, const std::string& var
   return false;
 }
 
+namespace {
+
+void add_skip_warnings(const std::string& path, const base::LineStream& in,
+                       const ReplayLimits& limits, ReplayLog& log) {
+  if (log.unusable_times > 0) {
+    log.warnings.push_back(path + ": " + moos::unusable_times_warning(log.unusable_times));
+  }
+  if (in.long_lines() > 0) {
+    log.warnings.push_back(path + ": " + std::to_string(in.long_lines()) + " lines over " +
+                           std::to_string(limits.max_line_bytes) + " bytes skipped");
+  }
+  if (!in.error().empty()) log.warnings.push_back(path + ": " + in.error());
+}
+
+}  // namespace
+
 std::optional<ReplayLog> read_replay_log(const std::string& path, const std::vector<std::string>& watch,
                                          const ReplayLimits& limits, std::string* error) {
   std::error_code ec;
   const std::uintmax_t bytes = std::filesystem::file_size(path, ec);
-  std::ifstream in(path, std::ios::binary);
+  std::string problem;
+  std::optional<base::LineStream> in = base::LineStream::open(path, limits.max_line_bytes, problem);
   if (ec || !in) {
     *error = path + ": cannot read the log";
     return std::nullopt;
@@ -30,19 +47,20 @@ std::optional<ReplayLog> read_replay_log(const std::string& path, const std::vec
     return std::nullopt;
   }
   ReplayLog log;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (++log.lines > limits.max_lines) {
+  for (std::optional<std::string_view> line; (line = in->next());) {
+    log.lines = in->line_number();
+    if (log.lines > limits.max_lines) {
       *error = path + ":" + std::to_string(log.lines) + ": more than " +
                std::to_string(limits.max_lines) + " lines";
       return std::nullopt;
     }
-    const moos::AlogParse parsed = moos::parse_alog_line(line);
+    const moos::AlogParse parsed = moos::parse_alog_line(*line);
     if (parsed.kind == moos::AlogLineKind::kHeader) {
-      if (const auto start = moos::alog_logstart(line)) log.logstart_s = *start;
+      if (const auto start = moos::alog_logstart(*line)) log.logstart_s = *start;
       continue;
     }
     if (parsed.kind == moos::AlogLineKind::kMalformed) ++log.malformed;
+    if (parsed.kind == moos::AlogLineKind::kUnusableTime) ++log.unusable_times;
     if (parsed.kind != moos::AlogLineKind::kEntry || !watch_matches(watch, parsed.entry.variable)) continue;
     if (log.mail.size() >= limits.max_mail) {
       *error = path + ":" + std::to_string(log.lines) + ": more than " +
@@ -61,6 +79,7 @@ std::optional<ReplayLog> read_replay_log(const std::string& path, const std::vec
     }
     log.mail.push_back(std::move(m));
   }
+  add_skip_warnings(path, *in, limits, log);
   return log;
 }
 

@@ -6,7 +6,9 @@
 #include "fields.hpp"
 #include "hazard/ranges.hpp"
 #include "hazard/style.hpp"
+#include "base/key_value_reader.hpp"
 #include "base/text.hpp"
+#include "base/warning_budget.hpp"
 
 namespace hazard {
 
@@ -22,6 +24,9 @@ constexpr double kMaxAspectWindowDeg = 90.0;  // aspect_min, aspect_max in [0, 9
 std::string quoted(std::string_view s) { return "'" + base::escape_for_log(s) + "'"; }
 
 // Collects what parse_hazard_line finds, field by field.
+// Keys remembered to warn of a repeat: every known key and more, but not a million unknown ones.
+constexpr std::size_t kMaxKeysTracked = 64;
+
 struct LineReader {
   HazardLineParse result;
   HazardObject object;
@@ -31,6 +36,13 @@ struct LineReader {
   std::optional<ObjectType> type_from_hazard_key;
   std::optional<std::string> lat_text, lon_text;
   const GeoPlacement* placement = nullptr;
+  base::WarningBudget budget{base::kMaxWarningsPerLine};
+
+  // A line of a million unknown keys gives a few warnings and a count, not a million.
+  void warn(std::string text) { budget.add(result.warnings, std::move(text)); }
+  void finish_warnings() {
+    if (budget.dropped() > 0) result.warnings.push_back(budget.summary("warnings on this line"));
+  }
 
   void reject(std::string why) {
     if (result.error.empty()) result.error = std::move(why);
@@ -94,21 +106,21 @@ struct LineReader {
       if (is_known_color(value)) {
         object.color = std::string(value);
       } else {
-        result.warnings.push_back(field_value(key, value) + " is not a known colour; hint ignored");
+        warn(field_value(key, value) + " is not a known colour; hint ignored");
       }
     } else if (key == "shape") {
       const std::string shape = base::to_lower(value);
       if (is_known_shape(shape)) {
         object.shape = shape;
       } else {
-        result.warnings.push_back(field_value(key, value) + " is not a known shape; hint ignored");
+        warn(field_value(key, value) + " is not a known shape; hint ignored");
       }
     } else if (key == "width") {
       const auto w = base::parse_number(value);
       if (w && *w >= 0.0) {
         object.marker_width_m = *w;
       } else {
-        result.warnings.push_back(field_value(key, value) +
+        warn(field_value(key, value) +
                                   " is not a number >= 0; hint ignored");
       }
     } else if (key == "source") {
@@ -118,7 +130,7 @@ struct LineReader {
     } else if (key == "lon") {
       lon_text = std::string(value);
     } else {
-      result.warnings.push_back("unknown key " + quoted(raw_key) + " (value " +
+      warn("unknown key " + quoted(raw_key) + " (value " +
                                 quoted(base::excerpt(value)) + ") ignored");
     }
   }
@@ -134,7 +146,7 @@ struct LineReader {
     const int present = static_cast<int>(object.aspect_deg.has_value()) +
                         static_cast<int>(lo.has_value()) + static_cast<int>(hi.has_value());
     if (present > 0 && present < 3) {
-      result.warnings.push_back(
+      warn(
           "partial aspect data (aspect, aspect_min and aspect_max are needed together); the "
           "object loads without aspect sensitivity");
     }
@@ -193,20 +205,22 @@ HazardLineParse parse_hazard_line(std::string_view spec) { return parse_hazard_l
 HazardLineParse parse_hazard_line(std::string_view spec, const GeoPlacement* placement) {
   LineReader reader;
   reader.placement = placement;
-  std::set<std::string> seen;
-  for (const base::KeyValue& kv : base::split_key_values(spec)) {
+  std::set<std::string> seen;  // keys already read: the known ones and a few more (bounded)
+  base::KeyValueReader pieces(spec);  // one at a time: a line of a million keys, no vector of them
+  for (base::KeyValue kv; pieces.next(kv);) {
     if (!kv.has_equals) {
-      reader.result.warnings.push_back("piece " + quoted(base::excerpt(kv.key)) +
+      reader.warn("piece " + quoted(base::excerpt(kv.key)) +
                                        " has no '='; ignored");
       continue;
     }
-    if (!seen.insert(base::to_lower(kv.key)).second) {
-      reader.result.warnings.push_back("key " + quoted(kv.key) +
+    if (seen.size() < kMaxKeysTracked && !seen.insert(base::to_lower(kv.key)).second) {
+      reader.warn("key " + quoted(kv.key) +
                                        " repeated; the later value is used");
     }
     reader.read(kv.key, kv.value);
   }
   reader.finish();
+  reader.finish_warnings();
   if (!reader.result.error.empty()) reader.result.object.reset();
   return std::move(reader.result);
 }

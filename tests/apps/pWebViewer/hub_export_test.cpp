@@ -75,6 +75,30 @@ TEST(ReplayLog, KeepsWatchedPostingsWithMoosTimesAndNumbers) {
   EXPECT_EQ(log->malformed, 1u);
 }
 
+// Times no clock wrote and over-long lines are skipped, one warning each kind with its count:
+// a 1e300 time would have put the page's clock beyond any other posting.
+TEST(ReplayLog, UnusableTimesAndLongLinesAreSkippedWithOneWarningEach) {
+  test_support::ScratchDir dir("pwv_replay");
+  const std::string path = (dir / "run.alog").string();
+  test_support::write_file(path, "0.1 NODE_REPORT a NAME=x\nnan NODE_REPORT a NAME=x\n"
+                                 "-inf NODE_REPORT a NAME=x\n1e300 NODE_REPORT a NAME=x\n"
+                                 "%% 3 lines dropped\n0.2 NODE_REPORT a NAME=" +
+                                 std::string(100, 'y') + "\n0.3 NODE_REPORT a NAME=z\n");
+  ReplayLimits limits;
+  limits.max_line_bytes = 64;
+  std::string error;
+  const auto log = read_replay_log(path, {"NODE_REPORT"}, limits, &error);
+  ASSERT_TRUE(log) << error;
+  ASSERT_EQ(log->mail.size(), 2u);
+  EXPECT_EQ(log->mail[1].sval, "NAME=z");
+  EXPECT_EQ(log->malformed, 0u);
+  EXPECT_EQ(log->unusable_times, 3u);
+  ASSERT_EQ(log->warnings.size(), 2u);
+  EXPECT_EQ(log->warnings[0],
+            path + ": 3 lines with unusable times (not finite, or beyond 1e10 s) skipped");
+  EXPECT_EQ(log->warnings[1], path + ": 1 lines over 64 bytes skipped");
+}
+
 TEST(ReplayLog, BoundsAreErrorsNamingTheFile) {
   test_support::ScratchDir dir("pwv_replay");
   const std::string path = (dir / "big.alog").string();

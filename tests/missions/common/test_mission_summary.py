@@ -89,6 +89,8 @@ with tempfile.TemporaryDirectory() as d:
 NAN_ALOG = """%% LOG FILE:       nan.alog
 5.000      DEPLOY_ALL           launch-1         true
 nan        DEPLOY_ALL           launch-1         true
+-inf       DEPLOY_ALL           launch-1         true
+1e300      DEPLOY_ALL           launch-1         true
 6.000      UHZ_CONFIG_ACK       uFldHazardSensor vname=archie,width=nan,pd=inf,pfa=0.5,pclass=0.8
 20.100     HAZARDSET_EVAL       uFldHazardMetric vname=archie,norm_score=nan,missed_hazards=0,correct_hazards=1,false_alarms=inf
 """
@@ -109,7 +111,9 @@ with tempfile.TemporaryDirectory() as d:
     r = subprocess.run([sys.executable, SCRIPT, "--alog", alog, "--hazards", hazards, "--out", out,
                         "--final", "archie"], capture_output=True, text=True)
     check(r.returncode == 0, "nan run: exit 0: %s" % r.stderr)
-    check("1 malformed log lines skipped" in r.stderr, "a time of nan is malformed: %r" % r.stderr)
+    check("3 lines with unusable times (not finite, or beyond 1e10 s) skipped" in r.stderr,
+          "times of nan, -inf and 1e300 are skipped and counted once: %r" % r.stderr)
+    check("malformed" not in r.stderr, "no warning a line: %r" % r.stderr)
     try:
         s = strict_json(out)
     except ValueError as e:

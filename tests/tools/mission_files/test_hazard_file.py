@@ -86,6 +86,19 @@ class ReadHazardFile(unittest.TestCase):
             "hazards.txt:1: unknown key 'colour' (value 'red') ignored",
             "hazards.txt:1: key 'x' repeated; the later value is used"])
 
+    def test_warnings_are_bounded_per_line_and_per_file(self):
+        # A line of 100,000 unknown keys: eight warnings and a count, as the sensor gives.
+        keys = "".join(",k%d=1" % i for i in range(100000))
+        objects, warnings = one("hazard = x=1,y=2,label=a,type=hazard" + keys)
+        self.assertEqual(len(objects), 1)
+        self.assertEqual(warnings, ["hazards.txt:1: unknown key 'k%d' (value '1') ignored" % i
+                                    for i in range(8)] +
+                         ["hazards.txt:1: ... and 99992 more warnings on this line"])
+        # A file of 500 bad lines: 100 warnings and a count.
+        field = parse_hazard_text("nonsense\n" * 500, "h.txt")
+        self.assertEqual(len(field.warnings), 101)
+        self.assertEqual(field.warnings[-1], "h.txt: ... and 400 more warnings")
+
     def test_aspect_windows(self):
         self.assertEqual(one("hazard = x=1,y=2,label=a,type=benign,aspect=10,aspect_min=30,"
                              "aspect_max=20")[1],
