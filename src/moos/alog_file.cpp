@@ -175,8 +175,18 @@ void AlogFile::Impl::add(const Message& msg, double now_s) {
     }
     time_s = now_s;
   }
-  add_line(
-      format_alog_line(AlogEntry{time_s - logstart_s_, msg.key, msg.source, alog_value(msg)}));
+  // format_alog_line(alog_entry(...)) without copying the columns (a server logs every NOTIFY).
+  const bool text = msg.data_type != data_type::kDouble && msg.data_type != data_type::kBinary &&
+                    msg.data_type != data_type::kNotSet;  // alog_value is the string itself
+  std::string line;
+  line.reserve(48 + msg.key.size() + msg.source.size() + (text ? msg.sval.size() : 32));
+  append_alog_columns(line, time_s - logstart_s_, msg.key, msg.source);
+  if (text) {
+    append_alog_value(line, msg.sval);
+  } else {
+    append_alog_value(line, alog_value(msg));
+  }
+  add_line(std::move(line));
 }
 
 void AlogFile::Impl::add_line(std::string line) {
