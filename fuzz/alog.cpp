@@ -6,6 +6,7 @@
 // kUnusableTime, which readers skip and count. The same bytes read from a file by
 // base::LineStream (the streamed readers' splitter, with a 64-byte bound) give the same lines,
 // less those over the bound, which it counts.
+// A gap marker's count reads back from the marker written for it, a comment line.
 
 #include <unistd.h>
 
@@ -20,6 +21,7 @@
 #include "base/text.hpp"
 #include "fuzz_input.hpp"
 #include "moos/alog.hpp"
+#include "moos/alog_file.hpp"
 
 namespace {
 
@@ -56,6 +58,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   check_line_stream(fuzz::as_text(data, size));
   for (const std::string_view line : fuzz::lines_of(fuzz::as_text(data, size))) {
     (void)moos::alog_logstart(line);
+    if (const auto lost = moos::alog_gap_count(line)) {
+      const std::string marker = moos::format_alog_gap(*lost, line);
+      if (moos::alog_gap_count(marker) != lost ||
+          moos::parse_alog_line(std::string_view(marker).substr(0, marker.size() - 1)).kind !=
+              moos::AlogLineKind::kHeader)
+        std::abort();
+    }
     const moos::AlogParse parsed = moos::parse_alog_line(line);
     if (parsed.kind == moos::AlogLineKind::kUnusableTime && parsed.error.empty()) std::abort();
     if (parsed.kind != moos::AlogLineKind::kEntry) continue;

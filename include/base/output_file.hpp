@@ -71,6 +71,10 @@ class OutputFile {
   const std::string& path() const { return path_; }
   /// Whether the file is written through (a device or a FIFO) rather than a regular file.
   bool written_through() const { return through_; }
+  /// The open descriptor (-1 once closed), for a writer that does its own writing
+  /// (moos::AlogFile: non-blocking writes of whole records). Such a writer never calls write()
+  /// or flush(); commit() still syncs and closes the file.
+  int descriptor() const { return fd_; }
 
  private:
   OutputFile() = default;

@@ -3,6 +3,7 @@
 #include <fcntl.h>
 #include <signal.h>
 #include <sys/prctl.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -23,8 +24,15 @@ constexpr const char* kDiscard = "/dev/null";
 /// The child's side of spawn: only async-signal-safe calls (the test process may have threads),
 /// so every string was built before fork.
 [[noreturn]] void exec_child(pid_t parent, const char* out_path, const char* err_path,
-                             const char* working_dir, char* const* argv) {
+                             const char* working_dir, const rlim_t* max_file_bytes,
+                             char* const* argv) {
   ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+  if (max_file_bytes != nullptr) {
+    rlimit limit{};
+    ::getrlimit(RLIMIT_FSIZE, &limit);
+    limit.rlim_cur = *max_file_bytes;
+    if (::setrlimit(RLIMIT_FSIZE, &limit) != 0) ::_exit(kExecFailed);
+  }
   if (::getppid() != parent) ::_exit(kExecFailed);  // the parent died before the request
   const int out = ::open(out_path, O_WRONLY | O_CREAT | O_TRUNC, 0600);
   const int err = ::open(err_path, O_WRONLY | O_CREAT | O_TRUNC, 0600);
@@ -53,11 +61,14 @@ std::optional<Child> Child::spawn(const std::string& program, const std::vector<
   for (auto& a : argv_text) argv.push_back(a.data());
   argv.push_back(nullptr);
   const char* working_dir = options.working_dir.empty() ? nullptr : options.working_dir.c_str();
+  const rlim_t max_file_bytes = options.max_file_bytes.value_or(0);
+  const rlim_t* limit = options.max_file_bytes ? &max_file_bytes : nullptr;
 
   const pid_t parent = ::getpid();
   const pid_t pid = ::fork();
   if (pid < 0) return std::nullopt;
-  if (pid == 0) exec_child(parent, out_path.c_str(), err_path.c_str(), working_dir, argv.data());
+  if (pid == 0)
+    exec_child(parent, out_path.c_str(), err_path.c_str(), working_dir, limit, argv.data());
   child.pid_ = pid;
   return child;
 }

@@ -6,7 +6,9 @@
 // - Child::spawn forks and executes `program` with `args` (argv[0] is `program`, no shell). The
 //   child's standard output and error go to two files in the Child's own scratch folder (no pipe
 //   can fill up and block it), or to /dev/null when `keep_output` is false; `working_dir`, when
-//   given, is its current folder. An exec that fails ends the child with kExecFailed.
+//   given, is its current folder; `max_file_bytes`, when given, is its soft RLIMIT_FSIZE (an
+//   unprivileged full disk: writes past it fail, with EFBIG once SIGXFSZ is ignored; the test
+//   may raise it again with prlimit). An exec that fails ends the child with kExecFailed.
 // - The child asks the kernel for SIGKILL when the test process dies (PR_SET_PDEATHSIG) and
 //   checks that its parent did not die before it asked; the handle's destructor kills (SIGKILL)
 //   and reaps a child still running. So no child outlives a test that passes, fails or crashes.
@@ -15,6 +17,7 @@
 
 #include <sys/types.h>
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -29,6 +32,7 @@ inline constexpr int kExecFailed = 127;
 struct SpawnOptions {
   std::string working_dir;   ///< the child's current folder; empty: the test's
   bool keep_output = true;   ///< false: standard output and error go to /dev/null
+  std::optional<std::uint64_t> max_file_bytes;  ///< the child's soft RLIMIT_FSIZE
 };
 
 /// A running (or finished) child process.

@@ -11,6 +11,7 @@
 #include <ostream>
 
 #include "moos/alog.hpp"
+#include "moos/alog_file.hpp"
 #include "moos/limits.hpp"
 #include "moos/mail_signal.hpp"
 #include "moos/tcp_client.hpp"
@@ -165,9 +166,10 @@ std::optional<Poke> parse_poke(std::string_view assignment, bool all_strings, st
   return p;
 }
 
-std::string format_watch_line(const moos::Message& m, double start_moos_s) {
-  return moos::format_alog_line(
-      moos::alog_entry(m, start_moos_s));
+std::string format_watch_line(const moos::Message& m, double start_moos_s, double now_moos_s) {
+  moos::AlogEntry entry = moos::alog_entry(m, start_moos_s);
+  if (!moos::alog_time_is_sane(m.time, now_moos_s)) entry.time_s = now_moos_s - start_moos_s;
+  return moos::format_alog_line(entry);
 }
 
 int run_poke(const Options& o, std::ostream& out, std::ostream& err) {
@@ -224,7 +226,7 @@ int run_watch(const Options& o, std::ostream& out, std::ostream& err) {
   while (true) {
     mail.take();  // before the fetch: mail arriving from now on ends the next wait at once
     for (const auto& m : client.fetch()) {
-      out << format_watch_line(m, start_moos_s) << std::flush;
+      out << format_watch_line(m, start_moos_s, client.moos_time()) << std::flush;
       if (o.count && ++received >= *o.count) return kExitOk;
     }
     // Without --timeout the watch never ends by itself: wait in steps of a second.

@@ -2,65 +2,48 @@
 
 #include "alog_writer.hpp"
 
-#include "moos/alog.hpp"
+#include "moos/clock.hpp"
 
 namespace moosdb_lite {
-
-namespace {
-
-std::string file_name_of(const std::string& path) {
-  const auto slash = path.find_last_of('/');
-  return slash == std::string::npos ? path : path.substr(slash + 1);
-}
-
-}  // namespace
 
 AlogWriter::~AlogWriter() { close(); }
 
 bool AlogWriter::open(const std::string& path, double logstart_moos_s, LogSink log,
-                      std::string* error) {
+                      std::string* error, MoosClock now, moos::AlogFileOptions options) {
   close();
+  log_ = std::move(log);
+  now_ = now ? std::move(now) : MoosClock([] { return moos::system_clock().unix_now_s(); });
+  options.notice = [this](const std::string& text) { report(text); };
   std::string problem;
-  file_ = base::OutputFile::open(path, base::OutputMode::kInPlace, problem);
-  const std::string header = moos::alog_header(file_name_of(path), logstart_moos_s);
-  if (!file_ || !file_->write(header, problem) || !file_->flush(problem)) {
+  file_ = moos::AlogFile::open(path, logstart_moos_s, std::move(options), problem);
+  if (!file_) {
     if (error) *error = "--log: " + problem;
-    file_.reset();
     return false;
   }
-  logstart_moos_s_ = logstart_moos_s;
-  log_ = std::move(log);
-  failed_ = false;
-  dirty_ = false;
+  lost_ = 0;
   return true;
 }
 
 void AlogWriter::report(const std::string& problem) {
-  if (failed_) return;
-  failed_ = true;
-  if (log_) log_("--log: " + problem + "; logging stopped");
+  if (log_) log_("warning: --log " + problem);
 }
 
 void AlogWriter::write(const moos::Message& msg) {
-  if (!file_ || failed_) return;
-  const std::string line = moos::format_alog_line(moos::alog_entry(msg, logstart_moos_s_));
-  std::string problem;
-  if (!file_->write(line, problem)) report(problem);
-  dirty_ = true;
+  if (file_) file_->add(msg, now_());
 }
 
 void AlogWriter::flush() {
-  if (!file_ || !dirty_ || failed_) return;
-  std::string problem;
-  if (!file_->flush(problem)) report(problem);
-  dirty_ = false;
+  if (file_) file_->pump();
 }
 
-void AlogWriter::close() {
-  if (!file_) return;
+bool AlogWriter::close() {
+  if (!file_) return lost_ == 0;
   std::string problem;
-  if (!file_->commit(problem)) report(problem);
+  const bool whole = file_->close(problem);
+  lost_ = file_->records_lost();
+  if (!whole && log_) log_("error: --log '" + file_->path() + "' is not whole: " + problem);
   file_.reset();
+  return whole;
 }
 
 }  // namespace moosdb_lite

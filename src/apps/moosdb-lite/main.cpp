@@ -2,7 +2,8 @@
 // mission globals, options.hpp), wires the Hub to the socket loop and the --log writer,
 // and turns SIGINT/SIGTERM into a clean stop. Exit codes: 0 after a clean stop or
 // --help/--version, 1 if the server cannot start (port, log file), 2 for a bad command
-// line or configuration.
+// line or configuration, 3 after a stop when the --log file is not whole (records were lost:
+// a full disk, a stalled FIFO reader, a deleted file; alog_writer.hpp).
 
 #include <unistd.h>
 
@@ -29,6 +30,7 @@ using namespace moosdb_lite;
 constexpr int kExitOk = 0;
 constexpr int kExitCannotStart = 1;
 constexpr int kExitBadConfiguration = 2;
+constexpr int kExitLogNotWhole = 3;
 /// Host name buffer (POSIX HOST_NAME_MAX is 255 on Linux).
 constexpr std::size_t kHostNameBytes = 256;
 
@@ -52,6 +54,9 @@ bool install_signal_handlers() {
   sigaction(SIGINT, &action, nullptr);
   sigaction(SIGTERM, &action, nullptr);
   std::signal(SIGPIPE, SIG_IGN);
+  // A file size limit (ulimit -f) is then a write error the --log writer counts, like a full
+  // disk, instead of the end of the server.
+  std::signal(SIGXFSZ, SIG_IGN);
   return true;
 }
 
@@ -139,7 +144,9 @@ int main(int argc, char** argv) {
   AlogWriter alog;
   if (options.log_file) {
     std::string error;
-    if (!alog.open(*options.log_file, start_real_s * options.time_warp, log_line, &error)) {
+    const double warp = options.time_warp;
+    const auto moos_now = [warp] { return moos::system_clock().unix_now_s() * warp; };
+    if (!alog.open(*options.log_file, start_real_s * warp, log_line, &error, moos_now)) {
       log_line("error: " + error);
       return kExitCannotStart;
     }
@@ -165,7 +172,7 @@ int main(int argc, char** argv) {
            (options.mission_file ? ", mission " + *options.mission_file : std::string()));
 
   loop.run(g_wake_pipe[0], g_stop_requested, [&alog] { alog.flush(); });
-  alog.close();
+  const bool log_whole = alog.close();
   log_line("stopped");
-  return kExitOk;
+  return log_whole ? kExitOk : kExitLogNotWhole;
 }

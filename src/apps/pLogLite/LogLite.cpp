@@ -2,6 +2,7 @@
 
 #include <ctime>
 #include <filesystem>
+#include <iostream>
 
 #include "base/text.hpp"
 #include "moos/alog.hpp"
@@ -33,28 +34,31 @@ std::string file_time_stamp(double unix_s) {
   return text;
 }
 
-LogLite::LogLite() : mission_app::MissionApp(logger_traits()) {}
+LogLite::LogLite(std::shared_ptr<LogOutcome> outcome)
+    : mission_app::MissionApp(logger_traits()), outcome_(std::move(outcome)) {}
 
 LogLite::~LogLite() { close(); }
 
 void LogLite::close() {
+  if (!log_) return;
+  closing_ = true;
   std::string problem;
-  if (out_ && !out_->commit(problem)) write_failed(problem);
-  out_.reset();
+  log_->close(problem);
+  if (!problem.empty()) std::cerr << kAppName << ": the log is not whole: " << problem << std::endl;
+  if (outcome_) *outcome_ = LogOutcome{log_->records_written(), log_->records_lost(), problem};
+  log_.reset();
 }
 
-void LogLite::write_failed(const std::string& problem) {
-  if (write_failed_) return;
-  write_failed_ = true;
-  report_run_warning(problem);
+void LogLite::log_notice(const std::string& text) {
+  if (!closing_) report_run_warning("log " + text);
+  std::cerr << kAppName << ": log " << text << std::endl;
 }
 
-std::string LogLite::open_log(const std::string& name) {
+std::string LogLite::open_log() {
+  moos::AlogFileOptions options;
+  options.notice = [this](const std::string& text) { log_notice(text); };
   std::string problem;
-  out_ = base::OutputFile::open(file_path_, base::OutputMode::kInPlace, problem);
-  const std::string header = moos::alog_header(name + ".alog", start_time());
-  if (out_ && out_->write(header, problem) && out_->flush(problem)) return "";
-  out_.reset();
+  log_ = moos::AlogFile::open(file_path_, start_time(), std::move(options), problem);
   return problem;
 }
 
@@ -101,7 +105,7 @@ bool LogLite::on_start_up() {
   std::error_code ignored;
   std::filesystem::create_directories(folder, ignored);
   file_path_ = (folder / (name + ".alog")).string();
-  if (const std::string problem = open_log(name); !problem.empty()) {
+  if (const std::string problem = open_log(); !problem.empty()) {
     report_config_warning("the log file: " + problem);
     return false;
   }
@@ -118,25 +122,27 @@ bool LogLite::omitted(const std::string& variable) const {
 }
 
 void LogLite::on_new_mail(const std::vector<moos::Message>& mail) {
-  if (!out_) return;
-  for (const moos::Message& m : mail) {
-    if (omitted(m.key)) continue;
-    const std::string line = moos::format_alog_line(moos::alog_entry(m, start_time()));
-    std::string problem;
-    if (!out_->write(line, problem)) write_failed(problem);
-    ++lines_written_;
-  }
+  if (!log_) return;
+  for (const moos::Message& m : mail)
+    if (!omitted(m.key)) log_->add(m, cycle_time());
 }
 
 void LogLite::on_iterate() {
-  std::string problem;
-  if (out_ && !write_failed_ && !out_->flush(problem)) write_failed(problem);
+  if (log_) log_->pump();
 }
 
 std::string LogLite::build_report() {
   std::string out;
   out += "File:     " + file_path_ + "\n";
-  out += "Lines:    " + std::to_string(lines_written_) + "\n";
+  if (log_) {
+    out += "Records:  " + std::to_string(log_->records_written()) + " written, " +
+           std::to_string(log_->records_lost()) + " lost";
+    if (log_->times_clamped() > 0)
+      out += ", " + std::to_string(log_->times_clamped()) + " times clamped";
+    if (log_->reopened() > 0)
+      out += ", file created again " + std::to_string(log_->reopened()) + "x";
+    out += "\n";
+  }
   out += std::string("Logging:  ") + (wildcard_logging_ ? "every variable" : "listed variables") +
          ", " + std::to_string(requests_.size()) + " log lines, " +
          std::to_string(omit_patterns_.size()) + " omit patterns\n";

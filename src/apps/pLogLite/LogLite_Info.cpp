@@ -25,6 +25,8 @@ std::string help_text() {
       "A small logger: writes every message it hears as pLogger's asynchronous log\n"
       "(.alog: TIME VARIABLE SOURCE VALUE after a LOGSTART header), for a community on a\n"
       "real MOOSDB. (moosdb-lite writes the same file itself with --log.)\n"
+      "Records lost (a full disk, a deleted log file) are counted: a `%% GAP: N records\n"
+      "lost` line marks where, a run warning says why, and the exit status is 3.\n"
       "See docs/missions.md.\n");
 }
 

@@ -1,10 +1,13 @@
 // moos-cli option parsing, poke value typing and watch line formatting (no processes).
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
 #include <set>
 
 #include "MoosCli_Info.hpp"
 #include "moos/alog.hpp"
+#include "moos/alog_file.hpp"
 #include "moos/limits.hpp"
 #include "doc_tables.hpp"
 #include "moos_cli.hpp"
@@ -142,13 +145,26 @@ TEST(MoosCliWatch, ValuesAndLinesFollowTheHelpText) {
   moos::Message u = d;
   u.data_type = moos::data_type::kNotSet;
   EXPECT_EQ(moos::alog_value(u), "<not set>");
-  const std::string line = format_watch_line(d, 1700000000.0);
+  const std::string line = format_watch_line(d, 1700000000.0, 1700000002.0);
   const auto parsed = moos::parse_alog_line(line.substr(0, line.size() - 1));
   ASSERT_EQ(parsed.kind, moos::AlogLineKind::kEntry);
   EXPECT_DOUBLE_EQ(parsed.entry.time_s, 1.25);
   EXPECT_EQ(parsed.entry.variable, "X");
   EXPECT_EQ(parsed.entry.source, "src");
   EXPECT_EQ(parsed.entry.value, "0.1");
+}
+
+TEST(MoosCliWatch, ATimeThatIsNotFiniteOrADayOffIsPrintedAtMoosCliClock) {
+  const double start = 1700000000.0;
+  const double now = start + 5.0;
+  for (const double bad : {std::nan(""), -std::numeric_limits<double>::infinity(), 1e300,
+                           now + 2 * moos::kAlogMaxClockSkew_s}) {
+    const std::string line =
+        format_watch_line(moos::make_double_notify("X", 1, "src", bad), start, now);
+    const auto parsed = moos::parse_alog_line(line.substr(0, line.size() - 1));
+    ASSERT_EQ(parsed.kind, moos::AlogLineKind::kEntry) << line;
+    EXPECT_EQ(parsed.entry.time_s, 5.0) << bad;
+  }
 }
 
 TEST(MoosCliInfo, HelpDocumentsEveryOptionAndExitCode) {

@@ -45,7 +45,7 @@ TEST(AlogWriter, WritesHeaderAndOneLinePerMessageRelativeToLogstart) {
   {
     AlogWriter writer;
     std::string error;
-    ASSERT_TRUE(writer.open(path, kT0, nullptr, &error)) << error;
+    ASSERT_TRUE(writer.open(path, kT0, nullptr, &error, [] { return kT0; })) << error;
     writer.write(notify_double("NAV_X", 12.5, "pSim", kT0 + 1.25));
     writer.write(notify_string("MODE", "SURVEY now", "pHelm", kT0 + 2.5));
     writer.flush();

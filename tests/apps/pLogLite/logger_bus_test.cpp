@@ -3,6 +3,8 @@
 // patterns), the file name, and its configuration warnings.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <memory>
 #include <regex>
 
 #include "LogLite.hpp"
@@ -39,8 +41,8 @@ Logged parse(const std::string& text) {
 
 class LoggerOnBus : public ::testing::Test {
  protected:
-  bool start(const std::string& block) {
-    app.emplace();
+  bool start(const std::string& block, std::shared_ptr<LogOutcome> outcome = nullptr) {
+    app.emplace(std::move(outcome));
     return bus.start(*app, kAppName, mission_text(kAppName, "  path = " + bus.dir.path().string() +
                                                                 "/logs\n" + block));
   }
@@ -73,7 +75,29 @@ TEST_F(LoggerOnBus, WritesPLoggersAlogWithLogstartAndRelativeTimes) {
   EXPECT_EQ(mine[0].value, "1.5");
   EXPECT_NEAR(mine[0].time_s, 2.0, 1e-3);  // posted 2 s after start-up
   EXPECT_EQ(mine[1].value, "a value with blanks");
-  EXPECT_EQ(app->lines_written(), static_cast<long>(log.entries.size()));
+  EXPECT_EQ(app->records_written(), log.entries.size());
+}
+
+TEST_F(LoggerOnBus, ADeletedLogFolderIsARunWarningAndTheReportAndTheOutcomeCountTheLoss) {
+  const auto outcome = std::make_shared<LogOutcome>();
+  ASSERT_TRUE(start("  file = run\n  file_timestamp = false\n  wildcard_logging = true\n", outcome));
+  bus.post("BEFORE", 1.0);
+  app->run_for(1.0);
+  std::filesystem::remove_all(bus.dir / "logs");
+  bus.post("AFTER", 2.0);
+  app->run_for(1.0);
+  EXPECT_EQ(logged_variables(), std::vector<std::string>{"AFTER"});
+  const std::uint64_t lost = app->records_lost();
+  EXPECT_GT(lost, 0u);
+  bool warned = false;
+  for (const auto& [text, count] : app->appcast().run_warnings())
+    warned = warned || text.find("deleted") != std::string::npos;
+  EXPECT_TRUE(warned);
+  const std::string report = app->terminal_report();
+  EXPECT_NE(report.find(std::to_string(lost) + " lost"), std::string::npos) << report;
+  app.reset();  // closes the log: the outcome main turns into the exit status
+  EXPECT_EQ(outcome->records_lost, lost);
+  EXPECT_NE(outcome->problem.find("records lost"), std::string::npos) << outcome->problem;
 }
 
 TEST_F(LoggerOnBus, OmitPatternsAreNotWritten) {
