@@ -41,12 +41,16 @@
 #include <string>
 #include <string_view>
 
+#include "moos/alog.hpp"
 #include "moos/message.hpp"
 
 namespace moos {
 
-/// How far (MOOS seconds) a message time may lie from the writer's own clock: a day.
-inline constexpr double kAlogMaxClockSkew_s = 86400.0;
+/// How far (MOOS seconds) a message time may lie from the writer's own clock: as far as a reader
+/// places a line (kMaxAlogTimeS). A time some clock could have written is logged as it is, even
+/// years off (a client whose clock is set otherwise, old stamps replayed): only a time no reader
+/// could place is not.
+inline constexpr double kAlogMaxClockSkew_s = kMaxAlogTimeS;
 
 /// Whether a writer whose clock reads `now_s` logs `message_time_s` as it is (see the contract).
 bool alog_time_is_sane(double message_time_s, double now_s);

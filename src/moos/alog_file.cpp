@@ -170,7 +170,7 @@ void AlogFile::Impl::add(const Message& msg, double now_s) {
   if (!alog_time_is_sane(time_s, now_s)) {
     if (clamped_++ == 0) {
       notice("message time " + base::format_g(time_s) + " of " + base::log_excerpt(msg.key) +
-             " is not finite or more than a day from this program's clock: such times are " +
+             " is not finite or beyond what a log reader places: such times are " +
              "logged at this program's clock (and counted)");
     }
     time_s = now_s;

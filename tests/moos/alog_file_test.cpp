@@ -106,13 +106,15 @@ TEST(AlogFileTimes, NonFiniteAndAbsurdTimesAreLoggedAtTheWritersClockCountedAndW
     log->add(notify_double("BAD", 1.0, "p", bad), now);
   }
   log->add(notify_double("GOOD", 1.0, "p", now - 3600.0), now);
+  log->add(notify_double("OLD", 1.0, "p", now - 1e8), now);  // years off, yet a clock's time
   log->pump();
   EXPECT_EQ(log->times_clamped(), 6u);
   ASSERT_TRUE(log->close(problem)) << problem;
   const LogLines lines = read_log(test_support::read_file(dir / "t.alog"));
-  ASSERT_EQ(lines.entries.size(), 7u);
+  ASSERT_EQ(lines.entries.size(), 8u);
   for (std::size_t i = 0; i < 6; ++i) EXPECT_EQ(lines.entries[i].time_s, 10.0) << i;
   EXPECT_EQ(lines.entries[6].time_s, 10.0 - 3600.0);
+  EXPECT_EQ(lines.entries[7].time_s, 10.0 - 1e8);
   ASSERT_EQ(notices.lines.size(), 1u);
   EXPECT_NE(notices.lines[0].find("BAD"), std::string::npos) << notices.lines[0];
 }

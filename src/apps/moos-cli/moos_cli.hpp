@@ -56,8 +56,9 @@ struct Poke {
 std::optional<Poke> parse_poke(std::string_view assignment, bool all_strings, std::string* error);
 
 /// One .alog line (newline-terminated) for a received message; time relative to `start_moos_s`.
-/// A message time that is not finite or more than a day from `now_moos_s` (moos-cli's clock) is
-/// printed as `now_moos_s` (moos/alog_file.hpp), so the line stays one a reader can place.
+/// A message time that is not finite or beyond a log reader's ±1e10 s of `now_moos_s`
+/// (moos-cli's clock) is printed as `now_moos_s` (moos/alog_file.hpp), so the line stays one a
+/// reader can place.
 std::string format_watch_line(const moos::Message& m, double start_moos_s, double now_moos_s);
 
 int run_poke(const Options& options, std::ostream& out, std::ostream& err);

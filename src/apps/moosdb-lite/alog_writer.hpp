@@ -8,8 +8,8 @@
 //   VARIABLE, SOURCE, VALUE. Doubles are written in the shortest form that reads back to
 //   the same double; strings as they are (a newline becomes a blank, see alog.hpp); binary
 //   values as `<binary:N:HEX>` (N bytes in lower-case hex), the form moos-cli prints, so the
-//   text file loses nothing. A message time that is not finite or more than a day from the
-//   server's clock is logged at the server's clock (moos/alog_file.hpp).
+//   text file loses nothing. A message time that is not finite or beyond a log reader's
+//   ±1e10 s of the server's clock is logged at the server's clock (moos/alog_file.hpp).
 // - FILE is opened by the rule of every user-named output (base/output_file.hpp, kInPlace): a
 //   regular file is created or truncated and grows in place (a reader may follow it), a device
 //   or FIFO is written through, a link is followed and stays a link, a folder is refused. The

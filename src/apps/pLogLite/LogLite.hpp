@@ -29,8 +29,9 @@
 //   (a full disk) the records lost are counted and a gap marker line `%% GAP: N records lost
 //   (REASON)` stands where they are missing; a file deleted while it is written (its folder
 //   too) is created again, with its header and a gap marker; a message time that is not finite
-//   or more than a day from the app's clock is logged at the app's clock. Each such problem is
-//   a run warning and a line on standard error; the report counts records written and lost.
+//   or beyond a log reader's ±1e10 s of the app's clock is logged at the app's clock. Each such
+//   problem is a run warning and a line on standard error; the report counts records written
+//   and lost.
 // - The outcome (records lost) goes to the LogOutcome given at construction when the file is
 //   closed; main exits kExitLogNotWhole when records were lost.
 

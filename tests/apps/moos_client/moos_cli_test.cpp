@@ -154,7 +154,7 @@ TEST(MoosCliWatch, ValuesAndLinesFollowTheHelpText) {
   EXPECT_EQ(parsed.entry.value, "0.1");
 }
 
-TEST(MoosCliWatch, ATimeThatIsNotFiniteOrADayOffIsPrintedAtMoosCliClock) {
+TEST(MoosCliWatch, ATimeNoLogReaderPlacesIsPrintedAtMoosCliClock) {
   const double start = 1700000000.0;
   const double now = start + 5.0;
   for (const double bad : {std::nan(""), -std::numeric_limits<double>::infinity(), 1e300,
@@ -165,6 +165,10 @@ TEST(MoosCliWatch, ATimeThatIsNotFiniteOrADayOffIsPrintedAtMoosCliClock) {
     ASSERT_EQ(parsed.kind, moos::AlogLineKind::kEntry) << line;
     EXPECT_EQ(parsed.entry.time_s, 5.0) << bad;
   }
+  // A time years before moos-cli's clock is some clock's time: printed as it is.
+  const std::string old = format_watch_line(moos::make_double_notify("X", 1, "src", start - 1e8),
+                                            start, now);
+  EXPECT_EQ(moos::parse_alog_line(old.substr(0, old.size() - 1)).entry.time_s, -1e8) << old;
 }
 
 TEST(MoosCliInfo, HelpDocumentsEveryOptionAndExitCode) {
