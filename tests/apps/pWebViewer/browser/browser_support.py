@@ -1,11 +1,13 @@
 """What the browser tests share: Debian's chromium driven by Playwright (no browser download),
 a static HTTP server for the page's files plus a replay.json, and mail-object builders."""
 
+import argparse
 import functools
 import http.server
 import json
 import os
 import shutil
+import sys
 import tempfile
 import threading
 import unittest
@@ -121,3 +123,15 @@ class ReplayPageCase(unittest.TestCase):
     def tearDownClass(cls):
         cls._browser.__exit__(None, None, None)
         cls._site.__exit__(None, None, None)
+
+
+def run_with_binaries(binaries, names):
+    """Runs the calling module's tests with `--NAME=PATH` for each of `names` read into
+    `binaries` (the programs the tests start); the other arguments go to unittest. Exit status."""
+    parser = argparse.ArgumentParser()
+    for name in names:
+        parser.add_argument("--" + name, required=True)
+    args, rest = parser.parse_known_args()
+    binaries.update(vars(args))
+    result = unittest.main(module="__main__", argv=[sys.argv[0]] + rest, exit=False).result
+    return 0 if result.wasSuccessful() else 1

@@ -11,7 +11,6 @@ HTML file opened from disk, must show the same objects.
 Usage: python test_viewer_live.py --moosdb=BIN --sensor=BIN --viewer=BIN
 """
 
-import argparse
 import os
 import re
 import shutil
@@ -29,7 +28,7 @@ from pymoos2.core.time import set_moos_time_warp  # noqa: E402
 
 import moosdb_harness  # noqa: E402
 from moosdb_harness import Mailbox, MoosdbLite, pymoos2_client, stop_client, wait_until  # noqa: E402
-from browser_support import browser_page  # noqa: E402
+from browser_support import browser_page, run_with_binaries  # noqa: E402
 
 BINARIES = {}
 WARP = 4
@@ -238,15 +237,5 @@ class LiveMissionThenReplay(unittest.TestCase):
             self.assertEqual(page.errors, [])
 
 
-def main():
-    ap = argparse.ArgumentParser()
-    for name in ("moosdb", "sensor", "viewer"):
-        ap.add_argument("--" + name, required=True)
-    args, rest = ap.parse_known_args()
-    BINARIES.update(vars(args))
-    result = unittest.main(argv=[sys.argv[0]] + rest, exit=False).result
-    return 0 if result.wasSuccessful() else 1
-
-
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(run_with_binaries(BINARIES, ("moosdb", "sensor", "viewer")))

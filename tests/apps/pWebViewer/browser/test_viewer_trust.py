@@ -19,7 +19,6 @@ name would resolve. Then:
 Usage: python test_viewer_trust.py --moosdb=BIN --viewer=BIN
 """
 
-import argparse
 import functools
 import http.server
 import os
@@ -39,7 +38,7 @@ sys.path.insert(0, str(HERE.parents[2] / "interop" / "pymoos2"))
 
 import moosdb_harness  # noqa: E402
 from moosdb_harness import Mailbox, MoosdbLite, pymoos2_client, stop_client, wait_until  # noqa: E402
-from browser_support import browser_page  # noqa: E402
+from browser_support import browser_page, run_with_binaries  # noqa: E402
 
 BINARIES = {}
 PAGE_TIMEOUT_MS = 20000
@@ -271,15 +270,5 @@ class TrustInTheBrowser(unittest.TestCase):
             self.assertEqual(page.errors, [])
 
 
-def main():
-    ap = argparse.ArgumentParser()
-    for name in ("moosdb", "viewer"):
-        ap.add_argument("--" + name, required=True)
-    args, rest = ap.parse_known_args()
-    BINARIES.update(vars(args))
-    result = unittest.main(argv=[sys.argv[0]] + rest, exit=False).result
-    return 0 if result.wasSuccessful() else 1
-
-
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(run_with_binaries(BINARIES, ("moosdb", "viewer")))
