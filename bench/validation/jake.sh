@@ -20,7 +20,10 @@
 # The copy differs from the mission in what a headless run needs: pMarineViewer and pRealm are
 # not launched (no display), the ports are moved to --port-base, the survey lanes the mission
 # writes for charlie and davis are given to archie and betty (as written, archie and betty have
-# no survey and return at once), and the deploy buttons are posted by uPokeDB.
+# no survey and return at once), the vehicles find the shoreside's pShare at its localhost port
+# instead of by multicast, the vehicles are launched as kayaks (launch.sh makes them UUVs, whose
+# helm then has a depth domain and no depth behaviour and stays in all-stop with
+# "MissingDecVars:depth"), and the deploy buttons are posted by uPokeDB.
 set -euo pipefail
 HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 ROOT="$(cd "$HERE/../.." && pwd)"
@@ -60,11 +63,12 @@ prepare() {
     sed -i -E '/Run *= *(pMarineViewer|pRealm)/d' meta_shoreside.moos meta_vehicle.moos
     sed -i -E "s/ServerPort *= *9000/ServerPort = $base/; s/localhost:9300/localhost:$((base + 300))/" meta_shoreside.moos
     sed -i -E 's/#ifdef VNAME charlie/#ifdef VNAME archie/; s/#elseifdef VNAME davis/#elseifdef VNAME betty/' meta_vehicle.bhv
+    sed -i -E "s/pshare_route=multicast_9/pshare_route=localhost:$((base + 300))/" plug_uFldNodeBroker.moos
     [[ "$seeded" == yes ]] && sed -i -E 's/seed_random *= *false/seed_random = true/' meta_shoreside.moos
     PATH="$bin:$PATH" nsplug meta_shoreside.moos targ_shoreside.moos -f WARP="$warp" VNAME=shoreside HAZARD_FILE=hazards.txt
     local i=1
     for v in archie betty; do
-      PATH="$bin:$PATH" nsplug meta_vehicle.moos "targ_$v.moos" -f WARP="$warp" VTYPE=UUV VNAME=$v \
+      PATH="$bin:$PATH" nsplug meta_vehicle.moos "targ_$v.moos" -f WARP="$warp" VTYPE=KAYAK VNAME=$v \
         START_POS=0,0 VPORT=$((base + i)) SHARE_LISTEN=$((base + 300 + i))
       PATH="$bin:$PATH" nsplug meta_vehicle.bhv "targ_$v.bhv" -f VNAME=$v START_POS=0,0
       i=$((i + 1))
