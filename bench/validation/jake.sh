@@ -23,7 +23,9 @@
 # no survey and return at once), the vehicles find the shoreside's pShare at its localhost port
 # instead of by multicast, the vehicles are launched as kayaks (launch.sh makes them UUVs, whose
 # helm then has a depth domain and no depth behaviour and stays in all-stop with
-# "MissingDecVars:depth"), and the deploy buttons are posted by uPokeDB.
+# "MissingDecVars:depth"), the shoreside's pLogger logs the sensor's variables by name as well
+# (wildcard logging misses each variable's first posting), and the deploy buttons are posted by
+# uPokeDB.
 set -euo pipefail
 HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 ROOT="$(cd "$HERE/../.." && pwd)"
@@ -64,6 +66,11 @@ prepare() {
     sed -i -E "s/ServerPort *= *9000/ServerPort = $base/; s/localhost:9300/localhost:$((base + 300))/" meta_shoreside.moos
     sed -i -E 's/#ifdef VNAME charlie/#ifdef VNAME archie/; s/#elseifdef VNAME davis/#elseifdef VNAME betty/' meta_vehicle.bhv
     sed -i -E "s/pshare_route=multicast_9/pshare_route=localhost:$((base + 300))/" plug_uFldNodeBroker.moos
+    # Wildcard logging registers a variable only after its first posting, which it misses.
+    local logged="UHZ_CONFIG_REQUEST UHZ_CONFIG_ACK UHZ_CONFIG_ACK_ARCHIE UHZ_CONFIG_ACK_BETTY"
+    logged+=" UHZ_DETECTION_REPORT UHZ_CLASSIFY_REQUEST UHZ_HAZARD_REPORT HAZARD_SEARCH_SCORE"
+    logged+=" HAZARDSET_EVAL_ARCHIE HAZARDSET_EVAL_BETTY"
+    for var in $logged; do sed -i -E "/WildCardLogging/i\\  Log = $var @ 0" plug_pLogger.moos; done
     [[ "$seeded" == yes ]] && sed -i -E 's/seed_random *= *false/seed_random = true/' meta_shoreside.moos
     PATH="$bin:$PATH" nsplug meta_shoreside.moos targ_shoreside.moos -f WARP="$warp" VNAME=shoreside HAZARD_FILE=hazards.txt
     local i=1

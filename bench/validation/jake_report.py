@@ -4,7 +4,8 @@
     jake_report.py --ours RUN_DIR... --original RUN_DIR...
 
 Each RUN_DIR holds the mission copy (hazards.txt, the ground truth) and the shoreside's
-LOG_SHORESIDE_*/*.alog. From the log, per run: the grader's HAZARD_SEARCH_SCORE and
+LOG_SHORESIDE_*/*.alog. From the log (each posting once: the identical lines pLogger's wildcard
+logging writes when it registers a variable anew are skipped), per run: the grader's HAZARD_SEARCH_SCORE and
 HAZARDSET_EVAL per vehicle, the sensor's detections of hazards and of benign objects, its
 classification answers and how many named the true type, the configuration requests and the
 acknowledgement variables and texts, and the run warnings of the sensor's last AppCast.
@@ -58,7 +59,14 @@ def read_run(run_dir):
     def wanted(var):
         return var in WANTED or var.startswith(("UHZ_CONFIG_ACK", "HAZARDSET_EVAL_"))
 
-    for _, var, source, value, _ in read_alog(logs[0], wanted):
+    seen = set()
+    for time_s, var, source, value, _ in read_alog(logs[0], wanted):
+        value = value.strip()
+        # pLogger's wildcard logging writes a variable's current value again, with its original
+        # time, each time it registers anew: one posting, several identical lines.
+        if (time_s, var, source, value) in seen:
+            continue
+        seen.add((time_s, var, source, value))
         f = fields(value)
         if var == "HAZARD_SEARCH_SCORE":
             r["scores"].append(value)
@@ -84,6 +92,12 @@ def read_run(run_dir):
     return r
 
 
+def evals(run, key):
+    """`key` of the grader's HAZARDSET_EVAL_<V> for each vehicle ("-" where there is none)."""
+    return " / ".join(fields(run["evals"][v]).get(key, "-") if v in run["evals"] else "-"
+                      for v in VEHICLES)
+
+
 def per_vehicle(counter, kind=None):
     return " / ".join(str(counter[(v, kind)] if kind else counter[v]) for v in VEHICLES)
 
@@ -92,8 +106,13 @@ def table(named):
     """Markdown: one column per run."""
     rows = [
         ("HAZARD_SEARCH_SCORE (per graded report)", lambda r: ", ".join(r["scores"]) or "-"),
-        ("HAZARDSET_EVAL archie", lambda r: r["evals"].get("archie", "-")),
-        ("HAZARDSET_EVAL betty", lambda r: r["evals"].get("betty", "-")),
+        ("grader: norm_score, archie / betty", lambda r: evals(r, "norm_score")),
+        ("grader: correct hazards, archie / betty", lambda r: evals(r, "correct_hazards")),
+        ("grader: missed hazards, archie / betty", lambda r: evals(r, "missed_hazards")),
+        ("grader: false alarms, archie / betty", lambda r: evals(r, "false_alarms")),
+        ("grader: total_time (s), archie / betty",
+         lambda r: " / ".join(f"{float(t):.0f}" if t != "-" else t
+                              for t in evals(r, "total_time").split(" / "))),
         ("detections of hazards, archie / betty", lambda r: per_vehicle(r["detections"], "hazard")),
         ("detections of benign objects, archie / betty",
          lambda r: per_vehicle(r["detections"], "benign")),
@@ -101,7 +120,7 @@ def table(named):
         ("classification answers, archie / betty", lambda r: per_vehicle(r["answers"])),
         ("answers naming the true type, archie / betty", lambda r: per_vehicle(r["correct"])),
         ("UHZ_CONFIG_REQUEST, archie / betty", lambda r: per_vehicle(r["config_requests"])),
-        ("acknowledgements (variable = value: count)",
+        ("acknowledgements (variable = value: postings)",
          lambda r: "<br>".join(f"`{k}`: {n}" for k, n in sorted(r["acks"].items())) or "-"),
         ("sensor run warnings (total; count:text)",
          lambda r: f"{r['run_warning_total']}; {r['warnings']}"),

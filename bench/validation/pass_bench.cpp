@@ -1,4 +1,4 @@
-// pass_bench: one scripted vehicle makes straight passes, back and forth, over a grid of
+// pass_bench: a scripted vehicle makes straight passes, back and forth, over a grid of
 // hazards and benign objects (bench/validation/pass_scene.hpp) against any uFldHazardSensor
 // through any MOOSDB, asks for a classification of every detection, and writes what the sensor
 // reported per group of objects as a CSV file. bench/validation/validate.py turns such files of
@@ -26,10 +26,12 @@ namespace {
 
 constexpr const char* kHelp = R"(Usage: pass_bench --out=FILE [OPTIONS]
 
-Plays one vehicle (NODE_REPORT at 10 Hz, UHZ_SENSOR_REQUEST every second, a
-UHZ_CLASSIFY_REQUEST per detection) in straight lanes over the validation scene against a
+Plays one vehicle, archie (NODE_REPORT at 10 Hz, UHZ_SENSOR_REQUEST every second, a
+UHZ_CLASSIFY_REQUEST per detection), in straight lanes over the validation scene against a
 uFldHazardSensor through a MOOSDB at a time warp, and writes per group and kind of object the
 passes, detections, classification answers and correct answers to FILE (docs/validation.md).
+A second vehicle, ctrl, drives the same track at pd = 1 without classifying: its detections
+(groups ctrl_*) count the sensor events the sensor saw.
 
   --out=FILE         the result CSV (required)
   --sensor=PATH      the uFldHazardSensor to run (default: ours, built with this benchmark)
@@ -44,6 +46,11 @@ passes, detections, classification answers and correct answers to FILE (docs/val
 )";
 
 constexpr const char* kVehicle = "archie";
+/// A second vehicle on the same track at pd = 1 (so pfa = 1): its detections of the inside
+/// hazards and benign objects without hr count the sensor events the sensor saw, the check
+/// that no event was missed (a process held off the CPU longer than an object stays in the
+/// swath would miss it).
+constexpr const char* kControl = "ctrl";
 constexpr const char* kCommunity = "shoreside";
 constexpr double kWidth_m = 25;
 constexpr double kExp = 4;
@@ -189,39 +196,48 @@ class Run {
     return std::exchange(inbox_, {});
   }
 
-  /// The request comes from the vehicle's own community: the original answers no other.
+  void post_config_request(const char* vname, double pd) {
+    moos::Message m = moos::make_string_notify(
+        "UHZ_CONFIG_REQUEST",
+        std::string("vname=") + vname + ",width=" + base::format_g(kWidth_m) +
+            ",pd=" + base::format_g(pd),
+        std::string(), moos::kUnsetDouble);
+    m.community = vname;  // the original answers only a request from the vehicle's community
+    client_->post(std::move(m));
+  }
+
+  /// Repeats both vehicles' requests until both are acknowledged.
   bool configure() {
     const double deadline = bench::steady_now_s() + kStartupTimeout_real_s;
     double next = 0;
+    bool control_acked = false;
     while (bench::steady_now_s() < deadline && sensor_.running()) {
       if (bench::steady_now_s() >= next) {
-        moos::Message m = moos::make_string_notify(
-            "UHZ_CONFIG_REQUEST",
-            std::string("vname=") + kVehicle + ",width=" + base::format_g(kWidth_m) +
-                ",pd=" + base::format_g(o_.pd),
-            std::string(), moos::kUnsetDouble);
-        m.community = kVehicle;
-        client_->post(std::move(m));
+        if (ack_.empty()) post_config_request(kVehicle, o_.pd);
+        if (!control_acked) post_config_request(kControl, 1.0);
         next = bench::steady_now_s() + 0.5;
       }
-      for (const auto& m : take())
-        if (base::starts_with(m.key, "UHZ_CONFIG_ACK") && bench::value_of(m.sval, "vname") == kVehicle) {
-          ack_ = m.sval;
-          return true;
-        }
+      for (const auto& m : take()) {
+        if (!base::starts_with(m.key, "UHZ_CONFIG_ACK")) continue;
+        const std::string vname = bench::value_of(m.sval, "vname");
+        if (vname == kVehicle) ack_ = m.sval;
+        if (vname == kControl) control_acked = true;
+      }
+      if (!ack_.empty() && control_acked) return true;
       std::this_thread::sleep_for(std::chrono::milliseconds(5));
     }
     return false;
   }
 
-  validation::Tally& tally_of(const validation::SceneObject& o) {
-    return tallies_[o.group + "," + o.kind];
+  validation::Tally& tally_of(const validation::SceneObject& o, bool control = false) {
+    return tallies_[(control ? "ctrl_" : "") + o.group + "," + o.kind];
   }
 
   void handle_mail() {
     for (const auto& m : take()) {
       if (m.key != "UHZ_DETECTION_REPORT" && m.key != "UHZ_HAZARD_REPORT") continue;
-      if (bench::value_of(m.sval, "vname") != kVehicle) continue;
+      const std::string vname = bench::value_of(m.sval, "vname");
+      if (vname != kVehicle && vname != kControl) continue;
       const std::string label = bench::value_of(m.sval, "label");
       const auto found = index_.find(label);
       if (found == index_.end()) {
@@ -229,6 +245,10 @@ class Run {
         continue;
       }
       const auto& object = objects_[found->second];
+      if (vname == kControl) {
+        if (m.key == "UHZ_DETECTION_REPORT") ++tally_of(object, true).detections;
+        continue;
+      }
       auto& t = tally_of(object);
       if (m.key == "UHZ_DETECTION_REPORT") {
         ++t.detections;
@@ -257,11 +277,13 @@ class Run {
       const double distance = std::min(static_cast<double>(step) / kReportHz * kSpeed_mps,
                                        static_cast<double>(o_.lanes) * lane);
       const auto pose = validation::pose_at(spec_, distance);
-      client_->notify("NODE_REPORT",
-                      bench::node_report(kVehicle, {pose.x_m, pose.y_m, pose.heading_deg},
-                                         kSpeed_mps, client_->moos_time()));
-      if (step % static_cast<long long>(kReportHz) == 0)
-        client_->notify("UHZ_SENSOR_REQUEST", std::string("vname=") + kVehicle);
+      for (const char* vname : {kVehicle, kControl}) {
+        client_->notify("NODE_REPORT",
+                        bench::node_report(vname, {pose.x_m, pose.y_m, pose.heading_deg},
+                                           kSpeed_mps, client_->moos_time()));
+        if (step % static_cast<long long>(kReportHz) == 0)
+          client_->notify("UHZ_SENSOR_REQUEST", std::string("vname=") + vname);
+      }
       handle_mail();
       if (step % 64 == 0 && !sensor_.running()) return false;
     }
@@ -284,9 +306,11 @@ class Run {
 
   bool write() {
     for (const auto& o : objects_) {
-      auto& t = tally_of(o);
-      ++t.objects;
-      t.passes += validation::passes_by(o, o_.lanes);
+      for (const bool control : {false, true}) {
+        auto& t = tally_of(o, control);
+        ++t.objects;
+        t.passes += validation::passes_by(o, o_.lanes);
+      }
     }
     const std::vector<std::pair<std::string, std::string>> header = {
         {"sensor", o_.sensor},

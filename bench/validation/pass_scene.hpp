@@ -74,7 +74,8 @@ struct Tally {
   long long answers = 0;     ///< hazard reports received
   long long correct = 0;     ///< answers naming the true type
 };
-/// Key: group + "," + kind.
+/// Key: group + "," + kind; pass_bench writes the pd = 1 control vehicle's groups as "ctrl_" +
+/// group.
 using Tallies = std::map<std::string, Tally>;
 
 /// The result file: `#` lines of `header` (key=value each), then the CSV header line

@@ -9,7 +9,8 @@ alarms of benign objects without hr, with hr=0 and with hr>0, correct classifica
 detections outside the swath), ours with the original and both with the manual's model:
 Wilson 95 % intervals, a two-sided two-proportion z test of ours against the original with
 Holm's correction over the figures, a TOST equivalence test with a margin of +-3 percentage
-points, and a z test of each program against the model (Holm over both programs' figures). `control` prints,
+points, and a z test of each program against the model (Holm over both programs' figures);
+then per run the detection rates and the passes the pd = 1 vehicle saw as sensor events. `control` prints,
 for runs at pd = 1, the detections per pass of each group of objects: every pass of an inside
 object and none outside, and the edge groups that show each program's swath length.
 
@@ -156,10 +157,15 @@ def read_run(text):
 
 
 def read_runs(paths):
+    """The result files at `paths`; a file that is not one raises ValueError naming it."""
     runs = []
     for path in paths:
         with open(path, encoding="utf-8") as f:
-            runs.append(read_run(f.read()))
+            text = f.read()
+        try:
+            runs.append(read_run(text))
+        except (ValueError, KeyError, TypeError) as error:
+            raise ValueError(f"{path}: not a pass_bench result file ({error})") from None
     return runs
 
 
@@ -213,6 +219,13 @@ def scene_figures(ours, original):
     return figures
 
 
+def events_seen(runs):
+    """(detections, passes) of the pd = 1 vehicle over the inside hazards and benign objects
+    without hr: both are detected on every pass that is a sensor event."""
+    counts = [pooled(runs, "ctrl_inside", kind, "detections", "passes") for kind in ("H", "B")]
+    return tuple(map(sum, zip(*counts)))
+
+
 def percent(value, decimals=2):
     return f"{100 * value:.{decimals}f}"
 
@@ -249,17 +262,29 @@ def scene_table(figures, margin):
 
 
 def runs_table(named_runs):
-    """One line per run: its seed and its detection rates per kind (the streams differ)."""
+    """One line per run: its seed, its detection rates per kind (the streams differ) and the
+    passes the pd = 1 vehicle saw as sensor events; then one pooled line per program."""
     lines = ["| program | seed | lanes | hazard | benign, no hr | benign, hr=0 | benign, hr>0 "
-             "| unanswered |",
-             "|---|---|---|---|---|---|---|---|"]
-    for name, run in named_runs:
+             "| passes sensed (pd = 1 vehicle) | unanswered |",
+             "|---|---|---|---|---|---|---|---|---|"]
+    programs = []
+    for name, _ in named_runs:
+        if name not in programs:
+            programs.append(name)
+    pooled_runs = [(f"{name}, all runs", [r for n, r in named_runs if n == name])
+                   for name in programs]
+    for name, run in named_runs + pooled_runs:
+        runs = run if isinstance(run, list) else [run]
         rates = []
         for kind in ("H", "B", "B0", "Bh"):
-            k, n = pooled([run], "inside", kind, "detections", "passes")
+            k, n = pooled(runs, "inside", kind, "detections", "passes")
             rates.append(f"{percent(k / n) if n else '-'} %")
-        lines.append(f"| {name} | {run.header.get('seed', '?')} | {run.header.get('lanes', '?')} "
-                     f"| {' | '.join(rates)} | {run.header.get('unanswered', '?')} |")
+        seen = "{} / {}".format(*events_seen(runs))
+        seed = runs[0].header.get("seed", "?") if len(runs) == 1 else "-"
+        lanes = sum(int(r.header.get("lanes", 0)) for r in runs)
+        unanswered = sum(int(r.header.get("unanswered", 0)) for r in runs)
+        lines.append(f"| {name} | {seed} | {lanes} | {' | '.join(rates)} | {seen} "
+                     f"| {unanswered} |")
     return "\n".join(lines)
 
 

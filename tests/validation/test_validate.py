@@ -138,6 +138,16 @@ class Tables(unittest.TestCase):
         self.assertEqual(status, 0)
         self.assertIn("| ours | 1 | 25 |", out.getvalue())
 
+    def test_a_file_that_is_not_a_result_is_refused_with_its_name(self):
+        import tempfile
+        with tempfile.NamedTemporaryFile("w", suffix=".csv", delete=False) as f:
+            f.write("group,kind,objects,passes\ninside,H,two,3\n")
+        try:
+            with self.assertRaisesRegex(ValueError, "not a pass_bench result file"):
+                validate.read_runs([f.name])
+        finally:
+            os.unlink(f.name)
+
     def test_the_command_line_names_a_missing_file(self):
         import contextlib
         import io
