@@ -103,6 +103,7 @@ class Tables(unittest.TestCase):
         self.assertEqual(figures[0].name, "detection, hazard")
         self.assertAlmostEqual(figures[0].model, 0.8)
         self.assertEqual(figures[0].ours[1], 10000)   # two copies of 5,000 passes
+        self.assertEqual(figures[0].original, (3936, 5000))
         self.assertEqual(figures[-1].name, "detected outside the swath")
         self.assertEqual(figures[-1].ours[0], 0)
 
@@ -112,14 +113,27 @@ class Tables(unittest.TestCase):
         lines = table.splitlines()
         self.assertEqual(len(lines), 2 + 9)
         self.assertIn("equivalent within ±3 points", lines[0])
-        # Recorded: ours 3941 of 5000 hazards detected, the original 3980; nothing outside.
+        # Recorded: ours 3965 of 5000 hazards detected, the original 3936; nothing outside.
         self.assertEqual(lines[2], "| detection, hazard | 80.00 % "
-                         "| 3941 / 5000 = 78.82 % [77.67, 79.93] "
-                         "| 3980 / 5000 = 79.60 % [78.46, 80.69] "
-                         "| 1.000 | yes (0.0031) | 0.666 / 1.000 |")
+                         "| 3965 / 5000 = 79.30 % [78.15, 80.40] "
+                         "| 3936 / 5000 = 78.72 % [77.56, 79.83] "
+                         "| 1.000 | yes (0.0015) | 1.000 / 0.426 |")
         self.assertEqual(lines[10], "| detected outside the swath | 0.00 % "
                          "| 0 / 10000 = 0.00 % [0.00, 0.04] | 0 / 10000 = 0.00 % [0.00, 0.04] "
                          "| 1.000 | yes (0) | 1.000 / 1.000 |")
+
+    def test_runs_table_counts_the_passes_the_control_vehicle_sensed(self):
+        ours, original = recorded("scene-ours.csv"), recorded("scene-original.csv")
+        self.assertEqual(validate.events_seen(ours), (9992, 10000))
+        table = validate.runs_table([("ours", ours[0]), ("original", original[0]),
+                                     ("ours", ours[0])])
+        lines = table.splitlines()
+        self.assertEqual(len(lines), 2 + 3 + 2)   # three runs, then one pooled line per program
+        self.assertEqual(lines[2], "| ours | 1 | 25 | 79.30 % | 40.06 % | 19.72 % | 45.54 % "
+                         "| 9992 / 10000 | 0 |")
+        self.assertTrue(lines[5].startswith("| ours, all runs | - | 50 | 79.30 % |"), lines[5])
+        self.assertTrue(lines[5].endswith("| 19984 / 20000 | 0 |"), lines[5])
+        self.assertTrue(lines[6].startswith("| original, all runs | time | 25 | 78.72 % |"))
 
     def test_control_table_shows_the_swath_length_of_each_program(self):
         table = validate.control_table(recorded("control-ours.csv"),
