@@ -6,7 +6,7 @@
 #
 #   bench/validation/build_original.sh --core-moos=SRC --moos-ivp=SRC --out=DIR [--jobs=N]
 #
-# --core-moos  a core-moos source tree (github.com/themoos/core-moos)
+# --core-moos  a core-moos source tree (the public repository themoos/core-moos)
 # --moos-ivp   a MOOS-IvP source tree at a revision that still holds ivp/src/uFldHazardSensor
 #              (its MOOS_Dec3120 folder provides MOOSEssentials and MOOSGeodesy)
 # --out        where the build folders go; the programs end in DIR/bin
