@@ -12,7 +12,6 @@ Usage: python test_viewer_live.py --moosdb=BIN --sensor=BIN --viewer=BIN
 """
 
 import os
-import re
 import shutil
 import subprocess
 import sys
@@ -26,9 +25,9 @@ sys.path.insert(0, str(HERE.parents[2] / "interop" / "pymoos2"))
 
 from pymoos2.core.time import set_moos_time_warp  # noqa: E402
 
-import moosdb_harness  # noqa: E402
 from moosdb_harness import Mailbox, MoosdbLite, pymoos2_client, stop_client, wait_until  # noqa: E402
 from browser_support import browser_page, run_with_binaries  # noqa: E402
+from viewer_process import served_url, start, stop  # noqa: E402
 
 BINARIES = {}
 WARP = 4
@@ -52,38 +51,6 @@ VIEWER_BLOCK = """\
   http_port = 0
   button_one = DEPLOY # DEPLOY_ALL=true # MOOS_MANUAL_OVERRIDE_ALL=false
 """
-
-
-def start(args, log_path):
-    log = open(log_path, "w")
-    proc = subprocess.Popen(args, stdout=subprocess.PIPE, stderr=log, text=True,
-                            preexec_fn=moosdb_harness.die_with_parent)
-    log.close()
-    return proc
-
-
-def served_url(proc, timeout_s=20):
-    """The URL pWebViewer prints at start-up (`pWebViewer: serving http://.../?token=...`),
-    token included: the page's buttons need it."""
-    deadline = time.time() + timeout_s
-    while time.time() < deadline:
-        line = proc.stdout.readline()
-        if not line:
-            break
-        m = re.search(r"serving (http://\S+/\?token=[0-9a-f]+)", line)
-        if m:
-            return m.group(1)
-    raise RuntimeError("pWebViewer printed no URL")
-
-
-def stop(proc):
-    if proc.poll() is None:
-        proc.terminate()
-        try:
-            proc.wait(timeout=10)
-        except subprocess.TimeoutExpired:
-            proc.kill()
-            proc.wait()
 
 
 def view_sets(s):
@@ -114,7 +81,7 @@ class LiveMissionThenReplay(unittest.TestCase):
         self.addCleanup(stop, self.sensor)
         self.viewer = start([BINARIES["viewer"], self.mission], os.path.join(self.dir, "viewer.err"))
         self.addCleanup(stop, self.viewer)
-        self.url = served_url(self.viewer)
+        self.url = served_url(self.viewer).url
         self.vehicle = pymoos2_client(self.server.port, "alpha_pymoos2")
         self.addCleanup(stop_client, self.vehicle)
         self.assertTrue(self.vehicle.wait_until_connected(10))
@@ -208,7 +175,7 @@ class LiveMissionThenReplay(unittest.TestCase):
         replay = start([BINARIES["viewer"], self.mission, "--replay=" + self.alog],
                        os.path.join(self.dir, "replay.err"))
         self.addCleanup(stop, replay)
-        url = served_url(replay)
+        url = served_url(replay).url
         with browser_page() as page:
             page.goto(url)
             self.wait_page(page, "window.viewerState().replay !== undefined", "replay loaded")

@@ -24,7 +24,6 @@ import http.server
 import os
 import re
 import shutil
-import subprocess
 import sys
 import tempfile
 import threading
@@ -36,9 +35,9 @@ from pathlib import Path
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parents[2] / "interop" / "pymoos2"))
 
-import moosdb_harness  # noqa: E402
 from moosdb_harness import Mailbox, MoosdbLite, pymoos2_client, stop_client, wait_until  # noqa: E402
 from browser_support import browser_page, run_with_binaries  # noqa: E402
+from viewer_process import served_url, start, stop  # noqa: E402
 
 BINARIES = {}
 PAGE_TIMEOUT_MS = 20000
@@ -95,37 +94,6 @@ REBOUND_READS = """async () => {
 }"""
 
 
-def start(args, log_path):
-    log = open(log_path, "w")
-    proc = subprocess.Popen(args, stdout=subprocess.PIPE, stderr=log, text=True,
-                            preexec_fn=moosdb_harness.die_with_parent)
-    log.close()
-    return proc
-
-
-def stop(proc):
-    if proc.poll() is None:
-        proc.terminate()
-        try:
-            proc.wait(timeout=10)
-        except subprocess.TimeoutExpired:
-            proc.kill()
-            proc.wait()
-
-
-def served_url(proc, timeout_s=20):
-    """The URL pWebViewer prints at start-up, token included."""
-    deadline = time.time() + timeout_s
-    while time.time() < deadline:
-        line = proc.stdout.readline()
-        if not line:
-            break
-        m = re.search(r"serving (http://127\.0\.0\.1:(\d+)/)\?token=([0-9a-f]{32})\s", line)
-        if m:
-            return m.group(1), int(m.group(2)), m.group(3)
-    raise RuntimeError("pWebViewer printed no URL with a token")
-
-
 class _Quiet(http.server.SimpleHTTPRequestHandler):
     def log_message(self, *args):
         pass
@@ -170,7 +138,9 @@ class TrustInTheBrowser(unittest.TestCase):
                     "ProcessConfig = pWebViewer\n{\n%s}\n" % (self.server.port, VIEWER_BLOCK))
         self.viewer = start([BINARIES["viewer"], mission], os.path.join(self.dir, "viewer.err"))
         self.addCleanup(stop, self.viewer)
-        self.base, self.port, self.token = served_url(self.viewer)
+        served = served_url(self.viewer)
+        self.assertEqual((served.host, len(served.token)), ("127.0.0.1", 32), served.url)
+        self.base, self.port, self.token = served.base, served.port, served.token
         self.client = pymoos2_client(self.server.port, "watcher_pymoos2")
         self.addCleanup(stop_client, self.client)
         self.assertTrue(self.client.wait_until_connected(10))
