@@ -58,4 +58,7 @@ class LineStream {
   std::string error_;
 };
 
+/// "N lines over B bytes skipped": the one warning every reader gives for its long lines.
+std::string long_lines_warning(std::size_t count, std::size_t max_line_bytes);
+
 }  // namespace base

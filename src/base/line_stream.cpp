@@ -130,4 +130,9 @@ std::optional<std::string_view> LineStream::next() {
   return std::nullopt;
 }
 
+std::string long_lines_warning(std::size_t count, std::size_t max_line_bytes) {
+  return std::to_string(count) + " lines over " + std::to_string(max_line_bytes) +
+         " bytes skipped";
+}
+
 }  // namespace base

@@ -126,7 +126,7 @@ void InputLog::finish(std::ostream& err) const {
   if (unusable_times_ > 0) err << where << moos::unusable_times_warning(unusable_times_) << "\n";
   const std::size_t long_lines = stream_ ? stream_->long_lines() : long_lines_;
   if (long_lines > 0) {
-    err << where << long_lines << " lines over " << kMaxInputLineBytes << " bytes skipped\n";
+    err << where << base::long_lines_warning(long_lines, kMaxInputLineBytes) << "\n";
   }
   if (late_ > 0) {
     err << where << late_ << " lines out of time order by more than the reorder window ("

@@ -23,8 +23,8 @@ void add_skip_warnings(const std::string& path, const base::LineStream& in,
     log.warnings.push_back(path + ": " + moos::unusable_times_warning(log.unusable_times));
   }
   if (in.long_lines() > 0) {
-    log.warnings.push_back(path + ": " + std::to_string(in.long_lines()) + " lines over " +
-                           std::to_string(limits.max_line_bytes) + " bytes skipped");
+    log.warnings.push_back(path + ": " +
+                           base::long_lines_warning(in.long_lines(), limits.max_line_bytes));
   }
   if (!in.error().empty()) log.warnings.push_back(path + ": " + in.error());
 }
