@@ -186,14 +186,13 @@ HazardFileCounts load_hazard_file_text(std::string_view text, std::string_view f
   const auto lines = static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1;
   field.reserve(field.size() + lines);
   int line_number = 0;
-  // A file of a million bad lines keeps kMaxWarningsPerKind warnings and counts the others.
-  const std::size_t first_warning = warnings.size();
-  std::size_t warnings_dropped = 0;
-  const auto bound_warnings = [&] {
-    while (warnings.size() - first_warning > base::kMaxWarningsPerKind) {
-      warnings.pop_back();
-      ++warnings_dropped;
-    }
+  // A file of a million bad lines keeps kMaxWarningsPerKind warnings and counts the others:
+  // each line's warnings are gathered, then pass the file's budget.
+  base::WarningBudget budget{base::kMaxWarningsPerKind};
+  std::vector<std::string> line_warnings;
+  const auto keep_line_warnings = [&] {
+    for (std::string& w : line_warnings) budget.add(warnings, std::move(w));
+    line_warnings.clear();
   };
   // A UTF-8 byte-order mark is accepted at the start, as in mission files.
   std::size_t start = base::starts_with(text, "\xEF\xBB\xBF") ? 3 : 0;
@@ -203,14 +202,15 @@ HazardFileCounts load_hazard_file_text(std::string_view text, std::string_view f
         text.substr(start, end == std::string_view::npos ? std::string_view::npos : end - start);
     start = end == std::string_view::npos ? text.size() + 1 : end + 1;
     ++line_number;
-    bound_warnings();
+    keep_line_warnings();
     const std::string_view line = base::trim(without_comment(raw));
     if (line.empty()) continue;
     const auto eq = line.find('=');
     const std::string_view key = base::trim(line.substr(0, eq));
     if (eq != std::string_view::npos && base::iequals(key, "hazard")) {
       const std::size_t before = field.size();
-      if (load_hazard_spec(line.substr(eq + 1), file, line_number, field, warnings, placement)) {
+      if (load_hazard_spec(line.substr(eq + 1), file, line_number, field, line_warnings,
+                           placement)) {
         (field.is_hazard(static_cast<ObjectId>(before)) ? counts.hazards
                                                                  : counts.benign) += 1;
       } else {
@@ -219,15 +219,15 @@ HazardFileCounts load_hazard_file_text(std::string_view text, std::string_view f
     } else if (eq != std::string_view::npos && (base::iequals(key, "region") || base::iequals(key, "source"))) {
       continue;  // gen_hazards' region and the grader's source: not the sensor's business
     } else {
-      warnings.push_back(place(file, line_number) + "unrecognised line '" +
-                         base::log_excerpt(line) +
-                         "' ignored (expected 'hazard = ...', 'region = ...' or 'source = ...')");
+      line_warnings.push_back(place(file, line_number) + "unrecognised line '" +
+                              base::log_excerpt(line) +
+                              "' ignored (expected 'hazard = ...', 'region = ...' or "
+                              "'source = ...')");
     }
   }
-  bound_warnings();
-  if (warnings_dropped > 0) {
-    warnings.push_back(std::string(file) + ": ... and " + std::to_string(warnings_dropped) +
-                       " more warnings");
+  keep_line_warnings();
+  if (budget.dropped() > 0) {
+    warnings.push_back(std::string(file) + ": " + budget.summary("warnings"));
   }
   return counts;
 }
