@@ -6,6 +6,7 @@
 #include <cmath>
 #include <random>
 
+#include "base/warning_budget.hpp"
 #include "hazard/hazard_field.hpp"
 #include "hazard/swath.hpp"
 #include "scenario.hpp"
@@ -49,6 +50,22 @@ TEST(HazardFile, DuplicateLabelKeepsFirstAndNamesLine_T8) {
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_EQ(warnings[0].substr(0, 8), "h.txt:2:");
   EXPECT_NE(warnings[0].find("duplicate label '12'"), std::string::npos);
+}
+
+// A file of many bad lines keeps the first kMaxWarningsPerKind warnings, in file order, then one
+// line counting the rest; the good lines among them still load.
+TEST(HazardFile, WarningsOfOneFileStopAtTheBoundAndTheRestAreCounted) {
+  std::string text;
+  for (int i = 0; i < 500; ++i) text += "bogus line " + std::to_string(i) + "\n";
+  text += "hazard = x=0,y=0,label=a,type=hazard\n";
+  HazardField field;
+  std::vector<std::string> warnings{"an earlier file's warning"};
+  load_hazard_file_text(text, "h.txt", field, warnings);
+  EXPECT_EQ(field.size(), 1u);
+  ASSERT_EQ(warnings.size(), 1 + base::kMaxWarningsPerKind + 1);
+  EXPECT_EQ(warnings[1].substr(0, 8), "h.txt:1:");
+  EXPECT_EQ(warnings[base::kMaxWarningsPerKind].substr(0, 10), "h.txt:100:");
+  EXPECT_EQ(warnings.back(), "h.txt: ... and 400 more warnings");
 }
 
 // The bad-input file: each bad line warns with file and line; every good line loads.
