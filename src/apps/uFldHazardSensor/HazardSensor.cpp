@@ -60,15 +60,21 @@ void HazardSensor::on_connect_to_server() {
 }
 
 void HazardSensor::on_new_mail(const std::vector<moos::Message>& mail) {
-  report_dropped(backlog_.add(mail));
-  handle_backlog();
+  if (backlog_.passes_through(mail.size())) {
+    deliver(mail);  // every normal cycle: no copy into the backlog
+  } else {
+    report_dropped(backlog_.add(mail));
+    handle_backlog();
+  }
   handled_this_cycle_ = true;
 }
 
-void HazardSensor::handle_backlog() {
+void HazardSensor::handle_backlog() { deliver(backlog_.take()); }
+
+void HazardSensor::deliver(const std::vector<moos::Message>& mail) {
   const double cycle_s = cycle_time();
   std::string formatted;
-  for (const moos::Message& m : backlog_.take()) {
+  for (const moos::Message& m : mail) {
     const std::string_view text = mail_text(m, formatted);
     publish(driver_->deliver(hazard::Mail{m.key, text, m.time}, cycle_s));
   }

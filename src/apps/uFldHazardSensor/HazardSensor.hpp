@@ -94,6 +94,8 @@ class HazardSensor final : public moos::MoosApp {
   void write_verbose(double now_s, const std::string& variable, const std::string& value) const;
   /// Hands this cycle's share of the backlog to the engine.
   void handle_backlog();
+  /// Hands `mail` to the engine, in order.
+  void deliver(const std::vector<moos::Message>& mail);
   /// The run warning that counts the mail the backlog dropped.
   void report_dropped(std::size_t dropped);
 

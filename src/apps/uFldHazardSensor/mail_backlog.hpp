@@ -44,6 +44,11 @@ class MailBacklog {
   /// The mail to handle now (see the contract); removed from the backlog.
   std::vector<moos::Message> take();
 
+  /// Whether `incoming` messages would all be taken at once: an empty backlog and no more than
+  /// `per_iteration` of them. The caller then hands them over itself, without queuing a copy.
+  bool passes_through(std::size_t incoming) const {
+    return mail_.empty() && incoming <= per_iteration_;
+  }
   bool empty() const { return mail_.empty(); }
   std::size_t size() const { return mail_.size(); }
   std::size_t bytes() const { return bytes_; }

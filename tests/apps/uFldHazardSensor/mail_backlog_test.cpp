@@ -30,6 +30,23 @@ TEST(MailBacklog, WithinTheBudgetEverythingIsHandedOverInArrivalOrder) {
   EXPECT_EQ(backlog.bytes(), 0u);
 }
 
+// Mail within the budget passes through an empty backlog (the caller hands it over itself, as
+// take() would); with a backlog waiting, or above the budget, it must queue behind it.
+TEST(MailBacklog, OnlyMailWithinTheBudgetPassesThroughAnEmptyBacklog) {
+  MailBacklog backlog(4);
+  EXPECT_TRUE(backlog.passes_through(0));
+  EXPECT_TRUE(backlog.passes_through(4));
+  EXPECT_FALSE(backlog.passes_through(5));
+  std::vector<moos::Message> five;
+  for (int n = 1; n <= 5; ++n) five.push_back(mail("a", "NODE_REPORT", n));
+  backlog.add(five);
+  EXPECT_FALSE(backlog.passes_through(1));
+  EXPECT_EQ(backlog.take().size(), 4u);
+  EXPECT_FALSE(backlog.passes_through(1));  // one still waits
+  EXPECT_EQ(backlog.take().size(), 1u);
+  EXPECT_TRUE(backlog.passes_through(1));
+}
+
 TEST(MailBacklog, AboveTheBudgetARequestBehindAFloodIsInTheFirstShare) {
   MailBacklog backlog(10);
   std::vector<moos::Message> flood;
