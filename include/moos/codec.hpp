@@ -43,6 +43,8 @@ std::string encode_message(const Message& msg);
 /// One packet holding the messages in order. Never call with an empty list for a peer that
 /// expects mail (protocol.md 3.4); the function itself allows it for tests.
 std::string encode_packet(const std::vector<Message>& messages);
+/// One packet holding the messages [first, last) in order (a slice of a list, uncopied).
+std::string encode_packet(const Message* first, const Message* last);
 
 struct DecodeError {
   std::string reason;       ///< human-readable, names the field that failed

@@ -211,14 +211,18 @@ std::string encode_message(const Message& msg) {
 }
 
 std::string encode_packet(const std::vector<Message>& messages) {
+  return encode_packet(messages.data(), messages.data() + messages.size());
+}
+
+std::string encode_packet(const Message* first, const Message* last) {
   std::size_t total = kPacketHeaderSize;
-  for (const auto& m : messages) total += m.encoded_size();
+  for (const Message* m = first; m != last; ++m) total += m->encoded_size();
   std::string out;
   out.reserve(total);
   put_int32(out, static_cast<std::int32_t>(total));
-  put_int32(out, static_cast<std::int32_t>(messages.size()));
+  put_int32(out, static_cast<std::int32_t>(last - first));
   out.push_back('\0');  // compression flag: v10 has no compression (protocol.md 3.2)
-  for (const auto& m : messages) append_message(out, m);
+  for (const Message* m = first; m != last; ++m) append_message(out, *m);
   return out;
 }
 

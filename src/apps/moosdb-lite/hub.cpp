@@ -247,14 +247,12 @@ void Hub::collect_database_output(double now) {
 
 void Hub::queue_send(moos::OutPacket packet) {
   const auto send = [&](const moos::Message* first, const moos::Message* last) {
-    actions_.push_back(Action{Action::Kind::kSend, packet.to,
-                              moos::encode_packet(std::vector<moos::Message>(first, last)),
-                              source_});
+    actions_.push_back(
+        Action{Action::Kind::kSend, packet.to, moos::encode_packet(first, last), source_});
   };
   const std::vector<moos::Message>& messages = packet.messages;
   if (!db_.is_async(packet.to)) {
-    actions_.push_back(
-        Action{Action::Kind::kSend, packet.to, moos::encode_packet(messages), source_});
+    send(messages.data(), messages.data() + messages.size());
     return;
   }
   // Slices in order: an echoed TIMING stays the first message of the first packet (5.6).
