@@ -6,11 +6,13 @@
 #                       ends with the score table and the picture's path (missions/jake/launch.sh)
 #   ./build.sh test     install dependencies, then every test phase CI runs, in order (each
 #                       builds its own preset): release (the suite, warnings as errors),
-#                       sanitize (the whole suite again under ASan + UBSan, halting), fuzz (each
+#                       sanitize (the whole suite again under ASan + UBSan, halting), tsan (the
+#                       threaded test programs and the programs they start under ThreadSanitizer,
+#                       halting), fuzz (each
 #                       fuzz target for HAZARD_FUZZ_SECONDS seconds on its seed corpus, default 20,
 #                       HAZARD_JOBS at a time)
 #                       HAZARD_TEST_PHASES="release sanitize" runs only the phases named
-#   ./build.sh test-release | test-sanitize | test-fuzz   one phase
+#   ./build.sh test-release | test-sanitize | test-tsan | test-fuzz   one phase
 #   ./build.sh build    install dependencies and build only
 #   ./build.sh install [PREFIX]
 #                       build, then install the programs, man pages, engine libraries and
@@ -43,6 +45,7 @@ DEBIAN_PACKAGES=(
   libcpp-httplib-dev chromium
   clang libclang-rt-14-dev
   help2man dpkg-dev file lintian
+  valgrind               # the instruction-count gate (./build.sh test-perf)
   jq parallel            # docs/performance.md's study examples, run by the docs test
 )
 # playwright drives Debian's chromium in pWebViewer's browser tests (no browser download).
@@ -153,7 +156,7 @@ run_tests() {
 
 # The test phases of `./build.sh test` (docs/robustness.md, "Sanitizer CI"). Each selects its
 # own preset and build folder, so a phase never reuses another's objects.
-TEST_PHASES_ALL=(release sanitize fuzz)
+TEST_PHASES_ALL=(release sanitize tsan fuzz)
 FUZZ_SECONDS="${HAZARD_FUZZ_SECONDS:-20}"
 
 use_preset() {
@@ -169,6 +172,13 @@ test_phase_release() {
 
 test_phase_sanitize() {
   use_preset sanitize
+  configure_and_build
+  run_tests
+}
+
+# The tsan preset builds only the threaded_tests target and runs the tests labelled `threads`.
+test_phase_tsan() {
+  use_preset tsan
   configure_and_build
   run_tests
 }
@@ -216,7 +226,7 @@ run_test_phases() {
   read -r -a phases <<<"${HAZARD_TEST_PHASES:-${TEST_PHASES_ALL[*]}}"
   for phase in "${phases[@]}"; do
     case "$phase" in
-      release|sanitize|fuzz) ;;
+      release|sanitize|tsan|fuzz) ;;
       *) say "unknown test phase '$phase' (phases: ${TEST_PHASES_ALL[*]})"; return 2 ;;
     esac
   done
@@ -234,8 +244,8 @@ case "${1:-build}" in
   install) shift; run_install "$@" ;;
   package) run_package ;;
   test)  install_dependencies; run_test_phases ;;
-  test-release|test-sanitize|test-fuzz)
+  test-release|test-sanitize|test-tsan|test-fuzz)
          install_dependencies; HAZARD_TEST_PHASES="${1#test-}" run_test_phases ;;
-  -h|--help|help) sed -n '2,26p' "$0" ;;
-  *) say "unknown job '$1' (try: demo, test, test-release, test-sanitize, test-fuzz, build, install, package, deps, packages)"; exit 2 ;;
+  -h|--help|help) sed -n '2,29p' "$0" ;;
+  *) say "unknown job '$1' (try: demo, test, test-release, test-sanitize, test-tsan, test-fuzz, build, install, package, deps, packages)"; exit 2 ;;
 esac
