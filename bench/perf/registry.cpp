@@ -12,7 +12,7 @@ const std::vector<Workload>& workloads() {
       {"sensor-sparse", "uFldHazardSensor on the in-process bus: 10,000 objects, 10 vehicles, 60 s", sensor_sparse},
       {"sensor-dense", "uFldHazardSensor on the in-process bus: 40,000 objects 5 m apart, 100 vehicles, 20 s",
        sensor_dense},
-      {"sensor-dense-late", "sensor-dense with 2 MOOS seconds of mail per turn (the mail backlog), 10 s",
+      {"sensor-dense-late", "sensor-dense with 20 MOOS seconds of mail at once: the mail backlog drains it",
        sensor_dense_late},
       {"replay", "hazard_replay::run: 100,000 objects, 100 vehicles, 30 s log (30,000 node reports)", replay_log},
       {"moosdb-relay", "moos::Database with the codec: 21 clients, 120 s of a 20-vehicle mission's mail",
