@@ -203,6 +203,9 @@ def main(argv):
               % (json.dumps(baseline.get("toolchain")), json.dumps(tools)))
     rows, failed = compare(baseline, measured, tolerance)
     print_table(rows)
+    if not args.workloads:
+        for name in sorted(set(baseline["workloads"]) - set(measured)):
+            print("note: %s is in the baseline but perf_workloads has no such workload (not built here?)" % name)
     for name in sorted(measured):
         recorded = baseline["workloads"].get(name, {}).get("checksum")
         if recorded is not None and recorded != measured[name]["checksum"]:
