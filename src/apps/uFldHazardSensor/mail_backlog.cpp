@@ -3,8 +3,7 @@
 #include "mail_backlog.hpp"
 
 #include <algorithm>
-#include <map>
-#include <string>
+#include <iterator>
 #include <utility>
 
 namespace ufld_hazard_sensor {
@@ -17,46 +16,77 @@ MailBacklog::MailBacklog(std::size_t per_iteration, std::size_t max_messages,
 
 std::size_t MailBacklog::add(std::vector<moos::Message> mail) {
   for (moos::Message& m : mail) {
-    bytes_ += m.encoded_size();
+    const std::size_t size = m.encoded_size();
+    bytes_ += size;
+    Held& held = held_[m.source];
+    ++held.messages;
+    held.bytes += size;
     mail_.push_back(std::move(m));
   }
   return enforce_bounds();
 }
 
+void MailBacklog::forget(const moos::Message& m) {
+  const std::size_t size = m.encoded_size();
+  bytes_ -= size;
+  const auto it = held_.find(m.source);
+  if (--it->second.messages == 0) {
+    held_.erase(it);
+  } else {
+    it->second.bytes -= size;
+  }
+}
+
+template <typename Pick, typename Leave, typename Done>
+void MailBacklog::remove_in_order(Pick pick, Leave leave, Done done) {
+  // The scanned part is rebuilt (kept messages in order), the rest is not touched.
+  std::vector<moos::Message> kept;
+  std::size_t scanned = 0;
+  for (auto it = mail_.begin(); it != mail_.end() && !done(); ++it, ++scanned) {
+    if (pick(*it)) {
+      forget(*it);
+      leave(std::move(*it));
+    } else {
+      kept.push_back(std::move(*it));
+    }
+  }
+  mail_.erase(mail_.begin(), mail_.begin() + static_cast<std::ptrdiff_t>(scanned));
+  mail_.insert(mail_.begin(), std::make_move_iterator(kept.begin()), std::make_move_iterator(kept.end()));
+}
+
+std::string MailBacklog::busiest_source(bool by_bytes) const {
+  const std::string* best = nullptr;
+  std::size_t most = 0;
+  for (const auto& [source, held] : held_) {
+    const std::size_t amount = by_bytes ? held.bytes : held.messages;
+    if (best == nullptr || amount > most || (amount == most && source < *best)) {
+      best = &source;
+      most = amount;
+    }
+  }
+  return best ? *best : std::string();
+}
+
 std::size_t MailBacklog::enforce_bounds() {
   std::size_t dropped = 0;
-  while (mail_.size() > max_messages_ || (bytes_ > max_bytes_ && mail_.size() > 1)) {
-    // The busiest source by bytes when bytes overflow, else by messages.
-    const bool by_bytes = bytes_ > max_bytes_;
-    std::map<std::string, std::size_t> held;
-    for (const moos::Message& m : mail_) held[m.source] += by_bytes ? m.encoded_size() : 1;
-    const auto busiest = std::max_element(
-        held.begin(), held.end(), [](const auto& a, const auto& b) { return a.second < b.second; });
-    const std::string source = busiest->first;
-    // One pass: the busiest source's oldest messages go until the bounds hold.
-    std::deque<moos::Message> kept;
+  while (over_bounds()) {
+    // The busiest source by bytes when bytes overflow, else by messages; its oldest messages
+    // go until the bounds hold.
+    const std::string source = busiest_source(bytes_ > max_bytes_);
     std::size_t removed = 0;
-    for (moos::Message& m : mail_) {
-      const bool over = mail_.size() - removed > max_messages_ || bytes_ > max_bytes_;
-      if (over && m.source == source) {
-        bytes_ -= m.encoded_size();
-        ++removed;
-      } else {
-        kept.push_back(std::move(m));
-      }
-    }
-    mail_.swap(kept);
+    remove_in_order([&](const moos::Message& m) { return m.source == source; },
+                    [&](moos::Message&&) { ++removed; },
+                    [&] { return !(mail_.size() - removed > max_messages_ || bytes_ > max_bytes_); });
     dropped += removed;
   }
   return dropped;
 }
 
 std::size_t MailBacklog::share_per_source() const {
-  std::map<std::string, std::size_t> counts;
-  for (const moos::Message& m : mail_) ++counts[m.source];
   // The largest share s with sum(min(count, s)) <= per_iteration (water filling).
   std::vector<std::size_t> sizes;
-  for (const auto& entry : counts) sizes.push_back(entry.second);
+  sizes.reserve(held_.size());
+  for (const auto& entry : held_) sizes.push_back(entry.second.messages);
   std::sort(sizes.begin(), sizes.end());
   std::size_t budget = per_iteration_;
   for (std::size_t i = 0; i < sizes.size(); ++i) {
@@ -72,23 +102,22 @@ std::vector<moos::Message> MailBacklog::take() {
   if (mail_.size() <= per_iteration_) {
     out.assign(std::make_move_iterator(mail_.begin()), std::make_move_iterator(mail_.end()));
     mail_.clear();
+    held_.clear();
     bytes_ = 0;
     return out;
   }
   const std::size_t share = share_per_source();
-  std::map<std::string, std::size_t> taken;
-  std::deque<moos::Message> kept;
-  for (moos::Message& m : mail_) {
-    std::size_t& count = taken[m.source];
-    if (count < share && out.size() < per_iteration_) {
-      ++count;
-      bytes_ -= m.encoded_size();
-      out.push_back(std::move(m));
-    } else {
-      kept.push_back(std::move(m));
-    }
-  }
-  mail_.swap(kept);
+  out.reserve(per_iteration_);
+  std::unordered_map<std::string, std::size_t> taken;
+  remove_in_order(
+      [&](const moos::Message& m) {
+        std::size_t& count = taken[m.source];
+        if (count >= share) return false;
+        ++count;
+        return true;
+      },
+      [&](moos::Message&& m) { out.push_back(std::move(m)); },
+      [&] { return out.size() >= per_iteration_; });
   return out;
 }
 

@@ -16,11 +16,17 @@
 //   all of it. Why not "requests first": the engine's outcome depends on the order of a
 //   vehicle's node reports and requests (a sensor request uses the last position), and its
 //   random draws are shared by all vehicles, so reordering would change normal missions.
+// Cost: add() and take() cost what they hand over or drop, not what the backlog holds: each
+// source's messages and bytes are counted as they come and go, and a take() or a drop stops
+// scanning once it has what it needs (a sensor that falls behind must not fall further behind
+// because every iteration re-read a full backlog).
 // Pure: no clock, no I/O.
 
 #include <cstddef>
 #include <cstdint>
 #include <deque>
+#include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "moos/message.hpp"
@@ -54,16 +60,34 @@ class MailBacklog {
   std::size_t bytes() const { return bytes_; }
 
  private:
+  struct Held {
+    std::size_t messages = 0;
+    std::size_t bytes = 0;
+  };
   /// Drops the oldest mail of the busiest source until the bounds hold; returns the count.
   std::size_t enforce_bounds();
+  bool over_bounds() const {
+    return mail_.size() > max_messages_ || (bytes_ > max_bytes_ && mail_.size() > 1);
+  }
+  /// The source holding the most (bytes when `by_bytes`, else messages); of equals, the
+  /// smallest name.
+  std::string busiest_source(bool by_bytes) const;
   /// The most each source may hand over in one take() of an over-budget backlog.
   std::size_t share_per_source() const;
+  /// Counts `m` out of the backlog's totals.
+  void forget(const moos::Message& m);
+  /// Scans the backlog from the oldest message; `pick(m)` says whether m leaves (it is then
+  /// counted out and handed to `leave`), `done()` when the scan may stop. The messages kept
+  /// stay in their order.
+  template <typename Pick, typename Leave, typename Done>
+  void remove_in_order(Pick pick, Leave leave, Done done);
 
   std::size_t per_iteration_;
   std::size_t max_messages_;
   std::size_t max_bytes_;
   std::deque<moos::Message> mail_;
   std::size_t bytes_ = 0;
+  std::unordered_map<std::string, Held> held_;  ///< by source
 };
 
 }  // namespace ufld_hazard_sensor

@@ -1,5 +1,7 @@
 #include "object_report.hpp"
 
+#include "base/text_appender.hpp"
+
 namespace hazard::detail {
 
 std::string read_object_report(const Fields& f, ObjectReportFields& out) {
@@ -24,16 +26,37 @@ std::string read_object_report(const Fields& f, ObjectReportFields& out) {
   return {};
 }
 
+// Written through one TextAppender into a string reserved once: every detection posts two
+// reports and every classification two more (the same text as appending field by field).
 std::string write_object_report(const ObjectReportFields& r, std::string_view type) {
   std::string out;
-  if (r.vname) append_field(out, "vname", *r.vname);
-  append_field(out, "x", base::fmt(r.x_m, 2));
-  append_field(out, "y", base::fmt(r.y_m, 2));
-  append_field(out, "label", r.label);
-  if (!type.empty()) append_field(out, "type", type);
-  if (r.aspect_deg) append_field(out, "aspect", base::fmt(*r.aspect_deg));
-  if (r.aspect_min_deg) append_field(out, "aspect_min", base::fmt(*r.aspect_min_deg));
-  if (r.aspect_max_deg) append_field(out, "aspect_max", base::fmt(*r.aspect_max_deg));
+  out.reserve(96 + (r.vname ? r.vname->size() : 0) + r.label.size() + type.size());
+  {
+    base::TextAppender text(out);
+    if (r.vname) {
+      text.put("vname=");
+      text.put(*r.vname);
+      text.put(',');
+    }
+    text.put("x=");
+    text.put_fmt(r.x_m, 2);
+    text.put(",y=");
+    text.put_fmt(r.y_m, 2);
+    text.put(",label=");
+    text.put(r.label);
+    if (!type.empty()) {
+      text.put(",type=");
+      text.put(type);
+    }
+    const auto angle = [&text](std::string_view comma_key_equals, const std::optional<double>& value) {
+      if (!value) return;
+      text.put(comma_key_equals);
+      text.put_fmt(*value, 5);
+    };
+    angle(",aspect=", r.aspect_deg);
+    angle(",aspect_min=", r.aspect_min_deg);
+    angle(",aspect_max=", r.aspect_max_deg);
+  }  // flushed here
   return out;
 }
 

@@ -1,7 +1,11 @@
 #include "hazard/messages/view_circle.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
+#include <string_view>
+
+#include "base/text_appender.hpp"
 
 #include "fields.hpp"
 
@@ -35,19 +39,43 @@ Result parse_view_circle(std::string_view text) {
   return Result::ok(std::move(c));
 }
 
+// Written through one TextAppender into a string reserved once: every detection and
+// classification posts a circle (the same text as appending field by field).
 std::string format_view_circle(const ViewCircle& c) {
   std::string out;
-  detail::append_field(out, "x", base::fmt(c.x_m, 2));
-  detail::append_field(out, "y", base::fmt(c.y_m, 2));
-  detail::append_field(out, "radius", base::fmt(c.radius_m));
-  detail::append_field(out, "vertices", std::to_string(c.vertices));
-  if (c.duration_s) detail::append_field(out, "duration", base::fmt(*c.duration_s, 1));
-  if (!c.edge_color.empty()) detail::append_field(out, "edge_color", c.edge_color);
-  if (!c.fill_color.empty()) detail::append_field(out, "fill_color", c.fill_color);
-  detail::append_field(out, "time", base::fmt(c.time_s, 2));
-  detail::append_field(out, "vertex_size", base::fmt(c.vertex_size, 1));
-  detail::append_field(out, "edge_size", base::fmt(c.edge_size, 1));
-  detail::append_field(out, "fill_transparency", base::fmt(std::clamp(c.fill_transparency, 0.0, 1.0), 2));
+  out.reserve(200 + c.edge_color.size() + c.fill_color.size());
+  {
+    base::TextAppender text(out);
+    text.put("x=");
+    text.put_fmt(c.x_m, 2);
+    text.put(",y=");
+    text.put_fmt(c.y_m, 2);
+    text.put(",radius=");
+    text.put_fmt(c.radius_m, 5);
+    text.put(",vertices=");
+    char digits[16];
+    const auto written = std::to_chars(digits, digits + sizeof digits, c.vertices);
+    text.put(std::string_view(digits, static_cast<std::size_t>(written.ptr - digits)));
+    if (c.duration_s) {
+      text.put(",duration=");
+      text.put_fmt(*c.duration_s, 1);
+    }
+    const auto field = [&text](std::string_view comma_key_equals, const std::string& value) {
+      if (value.empty()) return;
+      text.put(comma_key_equals);
+      text.put(value);
+    };
+    field(",edge_color=", c.edge_color);
+    field(",fill_color=", c.fill_color);
+    text.put(",time=");
+    text.put_fmt(c.time_s, 2);
+    text.put(",vertex_size=");
+    text.put_fmt(c.vertex_size, 1);
+    text.put(",edge_size=");
+    text.put_fmt(c.edge_size, 1);
+    text.put(",fill_transparency=");
+    text.put_fmt(std::clamp(c.fill_transparency, 0.0, 1.0), 2);
+  }  // flushed here
   return out;
 }
 

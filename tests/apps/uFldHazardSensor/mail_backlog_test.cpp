@@ -4,6 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <deque>
+#include <map>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -94,6 +98,105 @@ TEST(MailBacklog, BeyondItsByteBoundTheBusiestSourcesOldestMailIsDropped) {
             1u);
   EXPECT_LE(backlog.bytes(), 3 * one);
   EXPECT_EQ(labels(backlog.take()), (std::vector<std::string>{"v:1", "flood:2", "flood:3"}));
+}
+
+// The backlog's rules written the plain way (a pass over everything it holds per call): the
+// counted backlog must hand over and drop exactly what this does.
+class PlainBacklog {
+ public:
+  PlainBacklog(std::size_t per_iteration, std::size_t max_messages, std::size_t max_bytes)
+      : per_(per_iteration), max_messages_(max_messages), max_bytes_(max_bytes) {}
+
+  std::size_t add(const std::vector<moos::Message>& mail) {
+    for (const auto& m : mail) {
+      bytes_ += m.encoded_size();
+      mail_.push_back(m);
+    }
+    std::size_t dropped = 0;
+    while (mail_.size() > max_messages_ || (bytes_ > max_bytes_ && mail_.size() > 1)) {
+      const bool by_bytes = bytes_ > max_bytes_;
+      std::map<std::string, std::size_t> held;
+      for (const auto& m : mail_) held[m.source] += by_bytes ? m.encoded_size() : 1;
+      const std::string source = std::max_element(held.begin(), held.end(), [](const auto& a, const auto& b) {
+                                   return a.second < b.second;
+                                 })->first;
+      std::deque<moos::Message> kept;
+      std::size_t removed = 0;
+      for (auto& m : mail_) {
+        if ((mail_.size() - removed > max_messages_ || bytes_ > max_bytes_) && m.source == source) {
+          bytes_ -= m.encoded_size();
+          ++removed;
+        } else {
+          kept.push_back(m);
+        }
+      }
+      mail_.swap(kept);
+      dropped += removed;
+    }
+    return dropped;
+  }
+
+  std::vector<moos::Message> take() {
+    std::vector<moos::Message> out;
+    std::map<std::string, std::size_t> counts;
+    for (const auto& m : mail_) ++counts[m.source];
+    std::vector<std::size_t> sizes;
+    for (const auto& c : counts) sizes.push_back(c.second);
+    std::sort(sizes.begin(), sizes.end());
+    std::size_t share = per_, budget = per_;
+    for (std::size_t i = 0; i < sizes.size(); ++i) {
+      if (sizes[i] * (sizes.size() - i) > budget) {
+        share = std::max<std::size_t>(budget / (sizes.size() - i), 1);
+        break;
+      }
+      budget -= sizes[i];
+    }
+    std::map<std::string, std::size_t> taken;
+    std::deque<moos::Message> kept;
+    for (auto& m : mail_) {
+      if (taken[m.source] < share && out.size() < per_) {
+        ++taken[m.source];
+        bytes_ -= m.encoded_size();
+        out.push_back(m);
+      } else {
+        kept.push_back(m);
+      }
+    }
+    mail_.swap(kept);
+    return out;
+  }
+
+  std::size_t bytes() const { return bytes_; }
+
+ private:
+  std::size_t per_, max_messages_, max_bytes_, bytes_ = 0;
+  std::deque<moos::Message> mail_;
+};
+
+// Random floods from up to five sources of uneven sizes, against tight bounds: every take(),
+// drop count and byte total is the plain rules' (the counted backlog only avoids re-reading
+// what it holds).
+TEST(MailBacklog, HandsOverAndDropsExactlyWhatThePlainRulesDo) {
+  std::mt19937 random(7);
+  for (int round = 0; round < 200; ++round) {
+    const std::size_t per = 1 + random() % 20, max_messages = 1 + random() % 60;
+    const std::size_t max_bytes = 200 + random() % 4000;
+    MailBacklog counted(per, max_messages, max_bytes);
+    PlainBacklog plain(per, max_messages, max_bytes);
+    int n = 0;
+    for (int call = 0; call < 30; ++call) {
+      std::vector<moos::Message> batch;
+      const int size = static_cast<int>(random() % 40);
+      for (int i = 0; i < size; ++i) {
+        const std::string source(1 + random() % 3, static_cast<char>('a' + random() % 5));
+        batch.push_back(mail(source, "NODE_REPORT", n++));
+        batch.back().sval.append(random() % 50, 'x');
+      }
+      ASSERT_EQ(counted.add(batch), plain.add(batch)) << "round " << round << " call " << call;
+      ASSERT_EQ(labels(counted.take()), labels(plain.take())) << "round " << round << " call " << call;
+      ASSERT_EQ(counted.bytes(), plain.bytes());
+    }
+  }
 }
 
 }  // namespace
