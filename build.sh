@@ -5,14 +5,15 @@
 #                       install dependencies, build the programs, run the Jake mission headless;
 #                       ends with the score table and the picture's path (missions/jake/launch.sh)
 #   ./build.sh test     install dependencies, then every test phase CI runs, in order (each
-#                       builds its own preset): release (the suite, warnings as errors),
+#                       builds its own preset): release (the suite, warnings as errors), perf
+#                       (the instruction-count gate on the release build, bench/perf/gate.py),
 #                       sanitize (the whole suite again under ASan + UBSan, halting), tsan (the
 #                       threaded test programs and the programs they start under ThreadSanitizer,
 #                       halting), fuzz (each
 #                       fuzz target for HAZARD_FUZZ_SECONDS seconds on its seed corpus, default 20,
 #                       HAZARD_JOBS at a time)
 #                       HAZARD_TEST_PHASES="release sanitize" runs only the phases named
-#   ./build.sh test-release | test-sanitize | test-tsan | test-fuzz   one phase
+#   ./build.sh test-release | test-perf | test-sanitize | test-tsan | test-fuzz   one phase
 #   ./build.sh build    install dependencies and build only
 #   ./build.sh install [PREFIX]
 #                       build, then install the programs, man pages, engine libraries and
@@ -156,7 +157,7 @@ run_tests() {
 
 # The test phases of `./build.sh test` (docs/robustness.md, "Sanitizer CI"). Each selects its
 # own preset and build folder, so a phase never reuses another's objects.
-TEST_PHASES_ALL=(release sanitize tsan fuzz)
+TEST_PHASES_ALL=(release perf sanitize tsan fuzz)
 FUZZ_SECONDS="${HAZARD_FUZZ_SECONDS:-20}"
 
 use_preset() {
@@ -168,6 +169,14 @@ test_phase_release() {
   use_preset release
   configure_and_build
   run_tests
+}
+
+# Counts the instructions of bench/perf's fixed workloads under cachegrind and fails when one
+# grew beyond the tolerance of bench/perf/baseline.json (docs/performance.md).
+test_phase_perf() {
+  use_preset release
+  configure_and_build --target perf_workloads
+  python3 "$HERE/bench/perf/gate.py" --program="$BUILD_DIR/bench/perf/perf_workloads" --jobs="$JOBS"
 }
 
 test_phase_sanitize() {
@@ -226,7 +235,7 @@ run_test_phases() {
   read -r -a phases <<<"${HAZARD_TEST_PHASES:-${TEST_PHASES_ALL[*]}}"
   for phase in "${phases[@]}"; do
     case "$phase" in
-      release|sanitize|tsan|fuzz) ;;
+      release|perf|sanitize|tsan|fuzz) ;;
       *) say "unknown test phase '$phase' (phases: ${TEST_PHASES_ALL[*]})"; return 2 ;;
     esac
   done
@@ -244,8 +253,8 @@ case "${1:-build}" in
   install) shift; run_install "$@" ;;
   package) run_package ;;
   test)  install_dependencies; run_test_phases ;;
-  test-release|test-sanitize|test-tsan|test-fuzz)
+  test-release|test-perf|test-sanitize|test-tsan|test-fuzz)
          install_dependencies; HAZARD_TEST_PHASES="${1#test-}" run_test_phases ;;
-  -h|--help|help) sed -n '2,29p' "$0" ;;
-  *) say "unknown job '$1' (try: demo, test, test-release, test-sanitize, test-tsan, test-fuzz, build, install, package, deps, packages)"; exit 2 ;;
+  -h|--help|help) sed -n '2,30p' "$0" ;;
+  *) say "unknown job '$1' (try: demo, test, test-release, test-perf, test-sanitize, test-tsan, test-fuzz, build, install, package, deps, packages)"; exit 2 ;;
 esac
