@@ -1,5 +1,5 @@
 // Fuzz target: the fast paths of the text grammar against their references.
-// parse_number (the exact short-decimal path, std::from_chars, strtod) must give bit for bit
+// parse_number (std::from_chars, strtod for what it reports out of range) must give bit for bit
 // what the grammar of differences.md "Numbers", checked by a regular expression, and strtod
 // give; fix and fmt (integer arithmetic, exact ties to even, std::to_chars) and write_fmt_fast
 // must write what C printf writes for a double taken from the input's bytes. Any difference aborts.

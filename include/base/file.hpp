@@ -7,7 +7,8 @@
 //   the caller, and its type is checked on the open descriptor before any byte is read.
 // - At most `max_bytes` are read: a larger file (or one that grows past the bound while it is
 //   read) is refused with its size in the reason, so memory stays bounded.
-// - The reason is a short lower-case phrase to follow the path, e.g. "is a directory".
+// - Failures are a base::Result's error (docs/architecture.md "Error convention"): a short
+//   lower-case phrase to follow the path the caller names, e.g. "is a directory".
 
 #include <cstddef>
 #include <optional>
@@ -15,17 +16,24 @@
 #include <string_view>
 #include <vector>
 
+#include "base/result.hpp"
+
 namespace base {
 
 /// The largest input file the programs read whole, in bytes (mission files, hazard files): a
 /// field of 1,000,000 objects is about 80 MB. docs/robustness.md lists it.
 inline constexpr std::size_t kMaxInputFileBytes = std::size_t{512} * 1024 * 1024;
 
+/// The file's bytes, or why not (the contract above).
+Result<std::string> read_file_text(const std::string& path,
+                                   std::size_t max_bytes = kMaxInputFileBytes);
+
+/// read_file_text in the older form, kept for the two calls in src/moos (mission.cpp) until
+/// they move to read_file_text.
 struct FileText {
   std::optional<std::string> text;  ///< the bytes, when the file was read
   std::string problem;              ///< why not, when text is empty
 };
-
 FileText read_regular_file(const std::string& path, std::size_t max_bytes = kMaxInputFileBytes);
 
 /// The whole of a file for a reader that takes every byte at once and may be given large ones
@@ -37,9 +45,8 @@ FileText read_regular_file(const std::string& path, std::size_t max_bytes = kMax
 /// as in any program that maps its input: read a copy of a file that is still being written.
 class WholeFile {
  public:
-  /// The file's bytes, or nullopt with `problem` set (as read_regular_file's reasons).
-  static std::optional<WholeFile> open(const std::string& path, std::size_t max_bytes,
-                                       std::string& problem);
+  /// The file's bytes, or why not (as read_file_text's reasons).
+  static Result<WholeFile> open(const std::string& path, std::size_t max_bytes);
   WholeFile(WholeFile&& other) noexcept;
   WholeFile& operator=(WholeFile&& other) noexcept;
   WholeFile(const WholeFile&) = delete;

@@ -30,7 +30,7 @@
 
 #include <optional>
 #include <string>
-#include <variant>
+#include "base/result.hpp"
 #include <vector>
 
 #include "mission/polygon.hpp"
@@ -61,8 +61,8 @@ struct LawnmowerPlan {
 
 /// Plans the lanes. Errors name the option and its value (W <= 0, overlap outside [0, 1),
 /// negative extension, non-finite numbers).
-std::variant<LawnmowerPlan, std::string> plan_lawnmower(const ConvexPolygon& region,
-                                                        const LawnmowerOptions& options);
+base::Result<LawnmowerPlan> plan_lawnmower(const ConvexPolygon& region,
+                                           const LawnmowerOptions& options);
 
 struct ReacquireOptions {
   double leg_half_length_m = 30.0;  ///< straight flight before and after each object (> 0)

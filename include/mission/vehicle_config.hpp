@@ -16,7 +16,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
-#include <variant>
+#include "base/result.hpp"
 #include <vector>
 
 #include "mission/params.hpp"
@@ -43,6 +43,6 @@ std::string apply_survey_vehicle_param(SurveyVehicleConfig& config, std::string_
                                        std::string_view value);
 
 /// The route described above (an error names the lawnmower option at fault).
-std::variant<std::vector<glm::dvec2>, std::string> plan_route(const SurveyVehicleConfig& config);
+base::Result<std::vector<glm::dvec2>> plan_route(const SurveyVehicleConfig& config);
 
 }  // namespace mission

@@ -61,15 +61,16 @@ bool read_to_end(int fd, std::size_t max_bytes, std::vector<char>& bytes, std::s
 
 }  // namespace
 
-FileText read_regular_file(const std::string& path, std::size_t max_bytes) {
+Result<std::string> read_file_text(const std::string& path, std::size_t max_bytes) {
+  using R = Result<std::string>;
   // O_NONBLOCK: opening a FIFO without a writer returns at once instead of waiting for one.
   const Descriptor file{::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC)};
-  if (file.fd < 0) return {std::nullopt, cannot("cannot be opened: ")};
+  if (file.fd < 0) return R::fail(cannot("cannot be opened: "));
   struct stat info {};
   if (::fstat(file.fd, &info) != 0)
-    return {std::nullopt, cannot("cannot be examined: ")};
-  if (!S_ISREG(info.st_mode)) return {std::nullopt, kind_of(info.st_mode)};
-  if (static_cast<unsigned long long>(info.st_size) > max_bytes) return {std::nullopt, too_large(max_bytes)};
+    return R::fail(cannot("cannot be examined: "));
+  if (!S_ISREG(info.st_mode)) return R::fail(kind_of(info.st_mode));
+  if (static_cast<unsigned long long>(info.st_size) > max_bytes) return R::fail(too_large(max_bytes));
 
   std::string text(static_cast<std::size_t>(info.st_size), '\0');
   std::size_t used = 0;
@@ -82,43 +83,36 @@ FileText read_regular_file(const std::string& path, std::size_t max_bytes) {
     const ssize_t got = ::read(file.fd, into, want);
     if (got < 0) {
       if (errno == EINTR) continue;
-      return {std::nullopt, cannot("cannot be read: ")};
+      return R::fail(cannot("cannot be read: "));
     }
     if (got == 0) break;
     if (!room) {
-      if (used + static_cast<std::size_t>(got) > max_bytes) return {std::nullopt, too_large(max_bytes)};
+      if (used + static_cast<std::size_t>(got) > max_bytes) return R::fail(too_large(max_bytes));
       text.append(spare, static_cast<std::size_t>(got));
     }
     used += static_cast<std::size_t>(got);
   }
   text.resize(used);
-  return {std::move(text), {}};
+  return R::ok(std::move(text));
 }
 
-std::optional<WholeFile> WholeFile::open(const std::string& path, std::size_t max_bytes,
-                                         std::string& problem) {
+FileText read_regular_file(const std::string& path, std::size_t max_bytes) {
+  Result<std::string> read = read_file_text(path, max_bytes);
+  return {std::move(read.value), std::move(read.error)};
+}
+
+Result<WholeFile> WholeFile::open(const std::string& path, std::size_t max_bytes) {
+  using R = Result<WholeFile>;
   // Blocking: a FIFO waits for its writer, as a reader of a pipe should.
   const Descriptor file{::open(path.c_str(), O_RDONLY | O_CLOEXEC)};
-  if (file.fd < 0) {
-    problem = cannot("cannot be opened: ");
-    return std::nullopt;
-  }
+  if (file.fd < 0) return R::fail(cannot("cannot be opened: "));
   struct stat info {};
-  if (::fstat(file.fd, &info) != 0) {
-    problem = cannot("cannot be examined: ");
-    return std::nullopt;
-  }
-  if (!S_ISREG(info.st_mode) && !S_ISFIFO(info.st_mode)) {
-    problem = kind_of(info.st_mode);
-    return std::nullopt;
-  }
+  if (::fstat(file.fd, &info) != 0) return R::fail(cannot("cannot be examined: "));
+  if (!S_ISREG(info.st_mode) && !S_ISFIFO(info.st_mode)) return R::fail(kind_of(info.st_mode));
   WholeFile whole;
   if (S_ISREG(info.st_mode) && info.st_size > 0) {
     const auto size = static_cast<unsigned long long>(info.st_size);
-    if (size > max_bytes) {
-      problem = too_large(max_bytes);
-      return std::nullopt;
-    }
+    if (size > max_bytes) return R::fail(too_large(max_bytes));
     int flags = MAP_PRIVATE;
 #ifdef MAP_POPULATE
     flags |= MAP_POPULATE;  // the page tables filled in one call, not one fault per page
@@ -128,11 +122,12 @@ std::optional<WholeFile> WholeFile::open(const std::string& path, std::size_t ma
     if (mapped != MAP_FAILED) {
       whole.mapped_ = mapped;
       whole.mapped_bytes_ = static_cast<std::size_t>(size);
-      return whole;
+      return R::ok(std::move(whole));
     }
   }
-  if (!read_to_end(file.fd, max_bytes, whole.read_, problem)) return std::nullopt;
-  return whole;
+  std::string problem;
+  if (!read_to_end(file.fd, max_bytes, whole.read_, problem)) return R::fail(std::move(problem));
+  return R::ok(std::move(whole));
 }
 
 WholeFile::WholeFile(WholeFile&& other) noexcept

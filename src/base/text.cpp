@@ -22,75 +22,6 @@ using detail::lower_ascii;
 // ASCII case folding, as std::toupper does in the "C" locale our programs never change.
 char upper_ascii(char c) { return c >= 'a' && c <= 'z' ? static_cast<char>(c - ('a' - 'A')) : c; }
 
-// A text read against the grammar of parse_number's contract, in one pass. `exact` is set when
-// the value could be had exactly on the way: at most 19 digits (leading zeros count) forming a
-// whole number m <= 2^53, and a decimal exponent e (the written one minus the digits after the
-// point) in [-22, 22]. Then m and 10^|e| are exact doubles and one multiplication or division rounds
-// correctly (Clinger's fast path), which is the value strtod gives.
-// Plain members, not a std::optional<double>: an optional built in memory and then read back
-// whole stalls that load (a store forwarded to a wider load), on every number of every message.
-struct DecimalScan {
-  bool valid = false;
-  bool exact = false;  ///< `value` is the number
-  double value = 0.0;
-};
-
-constexpr int kMaxExactDigits = 19;          // a uint64 holds any 19 digits
-constexpr int kMaxExactPow10 = 22;           // 10^22 is the largest exact power of ten
-constexpr std::uint64_t kMaxExactMantissa = std::uint64_t{1} << 53;
-constexpr int kExponentCap = 100000;         // far past any double; keeps the int from overflow
-
-DecimalScan scan_decimal(std::string_view s) {
-  static constexpr double kPow10[kMaxExactPow10 + 1] = {
-      1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
-      1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
-  DecimalScan scan;
-  std::size_t i = 0;
-  bool negative = false;
-  if (i < s.size() && (s[i] == '+' || s[i] == '-')) negative = s[i++] == '-';
-  std::uint64_t mantissa = 0;
-  int digits = 0;
-  int exponent = 0;
-  // The digits and at most one point, in one loop whose only exit inside is for a byte that is
-  // neither (an exponent or a bad byte): the digits and the point are selected, not branched
-  // on, so the end of the whole part costs no mispredicted branch.
-  bool after_point = false;
-  for (; i < s.size(); ++i) {
-    const unsigned digit = static_cast<unsigned>(static_cast<unsigned char>(s[i])) - '0';
-    const bool is_digit = digit <= 9;  // unsigned: below '0' wraps
-    const bool is_point = s[i] == '.';
-    if (!is_digit && !(is_point && !after_point)) break;
-    const std::uint64_t appended = mantissa * 10 + digit;
-    mantissa = is_digit && digits < kMaxExactDigits ? appended : mantissa;
-    digits += is_digit ? 1 : 0;
-    exponent -= is_digit && after_point ? 1 : 0;
-    after_point = after_point || is_point;
-  }
-  if (digits == 0) return scan;
-  if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
-    ++i;
-    bool exponent_negative = false;
-    if (i < s.size() && (s[i] == '+' || s[i] == '-')) exponent_negative = s[i++] == '-';
-    int written = 0;
-    int exponent_digits = 0;
-    for (; i < s.size() && is_digit(s[i]); ++i, ++exponent_digits) {
-      if (written < kExponentCap) written = written * 10 + (s[i] - '0');
-    }
-    if (exponent_digits == 0) return scan;
-    exponent += exponent_negative ? -written : written;
-  }
-  if (i != s.size()) return scan;
-  scan.valid = true;
-  if (digits <= kMaxExactDigits && mantissa <= kMaxExactMantissa &&
-      exponent >= -kMaxExactPow10 && exponent <= kMaxExactPow10) {
-    const auto m = static_cast<double>(mantissa);
-    const double v = exponent >= 0 ? m * kPow10[exponent] : m / kPow10[-exponent];
-    scan.exact = true;
-    scan.value = negative ? -v : v;
-  }
-  return scan;
-}
-
 // FIX for the common case, with integer arithmetic: |value| * 10^decimals below 2^53 and at
 // most kMaxFastDecimals decimals. The product is off by at most half an ulp, which matters only
 // when it lies that close to a rounding tie (x.5); the exact error settles those, and an exact
@@ -99,6 +30,11 @@ DecimalScan scan_decimal(std::string_view s) {
 // With `fmt` the text is FMT's (trailing zeros and then a trailing '.' removed, "-0" as "0").
 // Every other case has no FixedText: the caller uses std::to_chars, which rounds the exact
 // binary value as printf does.
+// Kept hand-written because std::to_chars with a precision (libstdc++'s Ryu printf) alone costs
+// 3.6 times the instructions here: 2,319 instead of 647 per node report for the swath
+// polygon's numbers, the replay loop 7,586 instead of 5,534 (+37 %), and about 4 times the time
+// per FMT (120 ns instead of 30); that would take hazard_replay below the 2,000,000 node reports
+// per CPU second docs/performance.md quotes ("hazard_replay's digest rate", measured there).
 constexpr int kMaxFastDecimals = 9;
 
 // The pieces of the text: [-]whole[.decimals], the decimals `shown` digits of `fraction`
@@ -344,36 +280,35 @@ std::vector<std::string_view> split(std::string_view text, char separator) {
 
 namespace {
 
-// The reference conversion of a text that passed scan_decimal. strtod needs a terminated
-// string; the grammar check makes it locale-safe in the "C" locale that our programs never
-// change. Underflow (1e-400) yields a finite 0 and is kept.
-std::optional<double> convert_with_strtod(std::string_view text) {
+// A text that std::from_chars took whole but reported out of range: the grammar reads an
+// overflow (1e999) as no number and an underflow (1e-400) as the 0 (or subnormal) strtod gives.
+// strtod needs a terminated string; in the "C" locale our programs never change it reads the
+// grammar's texts as from_chars does.
+std::optional<double> convert_out_of_range(std::string_view text) {
   const std::string copy(text);
-  char* end = nullptr;
-  const double v = std::strtod(copy.c_str(), &end);
-  if (end != copy.c_str() + copy.size() || !std::isfinite(v)) return std::nullopt;
+  const double v = std::strtod(copy.c_str(), nullptr);
+  if (!std::isfinite(v)) return std::nullopt;
   return v;
 }
 
 }  // namespace
 
-// Most numbers in messages are short decimals, converted exactly during the grammar check.
-// For the rest, std::from_chars is correctly rounded, as glibc's strtod is, so both give the
-// same double for every text of the grammar; it needs no copy. It takes no '+' and reports
-// overflow and underflow as errors: those texts (and anything else it does not take whole) go
-// to strtod, which decides them as it always did (tests/base/number_differential_test.cpp).
+// The grammar is std::from_chars's (libstdc++'s is fast_float's, correctly rounded as strtod
+// is) with three differences: a leading '+' is taken, "inf", "nan" and "infinity" are not
+// numbers (the byte after the sign must be a digit or a point), and the whole trimmed text must
+// be used (tests/base/number_differential_test.cpp holds it to a regular expression and strtod).
 std::optional<double> parse_number(std::string_view text) {
   text = trim(text);
-  const DecimalScan scan = scan_decimal(text);
-  if (!scan.valid) return std::nullopt;
-  if (scan.exact) return scan.value;
-  const std::string_view unsigned_or_minus =
-      text.front() == '+' ? text.substr(1) : text;
-  const char* const end = unsigned_or_minus.data() + unsigned_or_minus.size();
+  const std::size_t sign = !text.empty() && (text[0] == '+' || text[0] == '-') ? 1 : 0;
+  if (sign >= text.size() || !(is_digit(text[sign]) || text[sign] == '.')) return std::nullopt;
+  const char* const first = text.data() + (text[0] == '+' ? 1 : 0);
+  const char* const last = text.data() + text.size();
   double v = 0.0;
-  const auto [ptr, ec] = std::from_chars(unsigned_or_minus.data(), end, v);
-  if (ec == std::errc() && ptr == end && std::isfinite(v)) return v;
-  return convert_with_strtod(text);
+  const auto [ptr, ec] = std::from_chars(first, last, v);
+  if (ptr != last) return std::nullopt;
+  if (ec == std::errc()) return v;
+  if (ec == std::errc::result_out_of_range) return convert_out_of_range(text);
+  return std::nullopt;
 }
 
 std::optional<std::uint64_t> parse_unsigned(std::string_view text) {

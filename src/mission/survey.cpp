@@ -82,9 +82,10 @@ double heading_of(glm::dvec2 direction) {
   return base::norm360(std::atan2(direction.x, direction.y) * kDegPerRad);
 }
 
-std::variant<LawnmowerPlan, std::string> plan_lawnmower(const ConvexPolygon& region,
-                                                        const LawnmowerOptions& options) {
-  if (std::string problem = check_options(options); !problem.empty()) return problem;
+base::Result<LawnmowerPlan> plan_lawnmower(const ConvexPolygon& region,
+                                           const LawnmowerOptions& options) {
+  using R = base::Result<LawnmowerPlan>;
+  if (std::string problem = check_options(options); !problem.empty()) return R::fail(problem);
   const glm::dvec2 along = heading_vector(options.lane_heading_deg);
   const glm::dvec2 across = heading_vector(options.lane_heading_deg + 90.0);
   LawnmowerPlan plan;
@@ -135,7 +136,7 @@ std::variant<LawnmowerPlan, std::string> plan_lawnmower(const ConvexPolygon& reg
     plan.waypoints_m.push_back(forward ? wp_low : wp_high);
     plan.waypoints_m.push_back(forward ? wp_high : wp_low);
   }
-  return plan;
+  return R::ok(std::move(plan));
 }
 
 std::vector<glm::dvec2> plan_reacquire_route(glm::dvec2 start_m,

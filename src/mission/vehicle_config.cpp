@@ -122,13 +122,14 @@ std::string apply_survey_vehicle_param(SurveyVehicleConfig& config, std::string_
   return "unknown parameter '" + std::string(base::trim(key)) + "'";
 }
 
-std::variant<std::vector<glm::dvec2>, std::string> plan_route(const SurveyVehicleConfig& config) {
-  if (!config.region) return config.waypoints_m;
+base::Result<std::vector<glm::dvec2>> plan_route(const SurveyVehicleConfig& config) {
+  using R = base::Result<std::vector<glm::dvec2>>;
+  if (!config.region) return R::ok(config.waypoints_m);
   LawnmowerOptions options = config.lawnmower;
   options.start_m = config.start_m;
-  auto plan = plan_lawnmower(*config.region, options);
-  if (auto* error = std::get_if<std::string>(&plan)) return *error;
-  return std::get<LawnmowerPlan>(std::move(plan)).waypoints_m;
+  base::Result<LawnmowerPlan> plan = plan_lawnmower(*config.region, options);
+  if (!plan) return R::fail(std::move(plan.error));
+  return R::ok(std::move(plan.value->waypoints_m));
 }
 
 }  // namespace mission

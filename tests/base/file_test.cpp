@@ -37,57 +37,67 @@ class ReadRegularFile : public ::testing::Test {
 
 TEST_F(ReadRegularFile, ReadsTheWholeFileByteForByte) {
   const std::string bytes = std::string("a\0b\r\nc", 6) + std::string(100000, 'x');
-  const FileText read = read_regular_file(write("f.txt", bytes));
-  ASSERT_TRUE(read.text.has_value()) << read.problem;
-  EXPECT_EQ(*read.text, bytes);
-  EXPECT_EQ(read.problem, "");
+  const Result<std::string> read = read_file_text(write("f.txt", bytes));
+  ASSERT_TRUE(read.value.has_value()) << read.error;
+  EXPECT_EQ(*read.value, bytes);
+  EXPECT_EQ(read.error, "");
 }
 
 TEST_F(ReadRegularFile, AnEmptyFileIsEmptyText) {
-  const FileText read = read_regular_file(write("empty.txt", ""));
-  ASSERT_TRUE(read.text.has_value());
-  EXPECT_EQ(*read.text, "");
+  const Result<std::string> read = read_file_text(write("empty.txt", ""));
+  ASSERT_TRUE(read.value.has_value());
+  EXPECT_EQ(*read.value, "");
 }
 
 TEST_F(ReadRegularFile, AMissingFileSaysWhy) {
-  const FileText read = read_regular_file((dir_ / "nope").string());
-  EXPECT_FALSE(read.text.has_value());
-  EXPECT_EQ(read.problem, "cannot be opened: No such file or directory");
+  const Result<std::string> read = read_file_text((dir_ / "nope").string());
+  EXPECT_FALSE(read.value.has_value());
+  EXPECT_EQ(read.error, "cannot be opened: No such file or directory");
 }
 
 TEST_F(ReadRegularFile, ADirectoryIsRefused_Hardening) {
-  const FileText read = read_regular_file(dir_.string());
-  EXPECT_FALSE(read.text.has_value());
-  EXPECT_EQ(read.problem, "is a directory");
+  const Result<std::string> read = read_file_text(dir_.string());
+  EXPECT_FALSE(read.value.has_value());
+  EXPECT_EQ(read.error, "is a directory");
 }
 
 TEST_F(ReadRegularFile, AFifoWithoutWriterIsRefusedAtOnce_Hardening) {
   const std::string fifo = (dir_ / "fifo").string();
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
-  const FileText read = read_regular_file(fifo);  // would block forever without O_NONBLOCK
-  EXPECT_FALSE(read.text.has_value());
-  EXPECT_EQ(read.problem, "is a FIFO, not a regular file");
+  const Result<std::string> read = read_file_text(fifo);  // would block forever without O_NONBLOCK
+  EXPECT_FALSE(read.value.has_value());
+  EXPECT_EQ(read.error, "is a FIFO, not a regular file");
 }
 
 TEST_F(ReadRegularFile, ADeviceIsRefusedNotReadUntilMemoryRunsOut_Hardening) {
-  const FileText read = read_regular_file("/dev/zero");
-  EXPECT_FALSE(read.text.has_value());
-  EXPECT_EQ(read.problem, "is a device, not a regular file");
+  const Result<std::string> read = read_file_text("/dev/zero");
+  EXPECT_FALSE(read.value.has_value());
+  EXPECT_EQ(read.error, "is a device, not a regular file");
 }
 
 TEST_F(ReadRegularFile, AFileOverTheBoundIsRefusedWithTheBound) {
   const std::string path = write("big.txt", std::string(1001, 'x'));
-  const FileText read = read_regular_file(path, 1000);
-  EXPECT_FALSE(read.text.has_value());
-  EXPECT_EQ(read.problem, "is larger than 1000 bytes");
-  EXPECT_TRUE(read_regular_file(path, 1001).text.has_value());
+  const Result<std::string> read = read_file_text(path, 1000);
+  EXPECT_FALSE(read.value.has_value());
+  EXPECT_EQ(read.error, "is larger than 1000 bytes");
+  EXPECT_TRUE(read_file_text(path, 1001).value.has_value());
 }
 
 using WholeFileTest = ReadRegularFile;  // the same scratch folder
 
 std::optional<WholeFile> open_whole(const std::string& path, std::size_t max_bytes,
                                     std::string& problem) {
-  return WholeFile::open(path, max_bytes, problem);
+  Result<WholeFile> whole = WholeFile::open(path, max_bytes);
+  problem = whole.error;
+  return std::move(whole.value);
+}
+
+// The older form src/moos still calls gives the same bytes and the same reasons.
+TEST_F(ReadRegularFile, TheOlderFormGivesWhatReadFileTextGives) {
+  const std::string path = write("old.txt", "abc");
+  EXPECT_EQ(read_regular_file(path).text, read_file_text(path).value);
+  EXPECT_EQ(read_regular_file(dir_.string()).problem, read_file_text(dir_.string()).error);
+  EXPECT_EQ(read_regular_file(dir_.string()).problem, "is a directory");
 }
 
 TEST_F(WholeFileTest, MapsARegularFileByteForByte) {

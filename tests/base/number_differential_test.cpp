@@ -1,7 +1,7 @@
-// The fast paths of the text grammar against their references, on many generated inputs
-// (the speed work): parse_number (std::from_chars, strtod when it refuses) against the grammar of
-// differences.md "Numbers", checked by a regular expression and converted by strtod; fix and fmt
-// (integer arithmetic, std::to_chars when a tie is too close to call) against C printf.
+// The text grammar's numbers against their references, on many generated inputs:
+// parse_number (std::from_chars, strtod for what it reports out of range) against the grammar
+// of differences.md "Numbers", checked by a regular expression and converted by strtod; fix and
+// fmt (integer arithmetic, std::to_chars when a tie is too close to call) against C printf.
 #include <gtest/gtest.h>
 
 #include <cmath>

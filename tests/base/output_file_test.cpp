@@ -102,9 +102,9 @@ TEST_F(OutputFileTest, AReaderNeverSeesAHalfFile) {
   });
   int reads = 0;
   while (!done) {
-    const FileText read = read_regular_file(path);
-    ASSERT_TRUE(read.text) << read.problem;
-    ASSERT_TRUE(*read.text == a || *read.text == b) << "a read of " << read.text->size() << " bytes";
+    const Result<std::string> read = read_file_text(path);
+    ASSERT_TRUE(read) << read.error;
+    ASSERT_TRUE(*read.value == a || *read.value == b) << "a read of " << read.value->size() << " bytes";
     ++reads;
   }
   writer.join();

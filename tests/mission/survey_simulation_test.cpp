@@ -111,7 +111,7 @@ RunResult run_survey(std::uint64_t seed, int objects, double hazard_fraction, do
   lawn.overlap = overlap;
   lawn.start_m = glm::dvec2{-30, -30};
   SurveyVehicle vehicle(VehicleParams{}, Pose{{-30, -30}, 0, 0, 0.0});
-  vehicle.set_waypoints(std::get<LawnmowerPlan>(plan_lawnmower(region, lawn)).waypoints_m);
+  vehicle.set_waypoints(plan_lawnmower(region, lawn).value->waypoints_m);
   double t = 0.0;
   for (; t < 20000.0 && !vehicle.done(); t += 0.25) {
     const Pose pose = vehicle.advance_to(t);

@@ -12,9 +12,9 @@ ConvexPolygon region_of(std::string_view text) {
 }
 
 LawnmowerPlan must_plan(const ConvexPolygon& region, const LawnmowerOptions& options) {
-  auto plan = plan_lawnmower(region, options);
-  if (auto* error = std::get_if<std::string>(&plan)) ADD_FAILURE() << *error;
-  return std::get<LawnmowerPlan>(plan);
+  base::Result<LawnmowerPlan> plan = plan_lawnmower(region, options);
+  if (!plan) ADD_FAILURE() << plan.error;
+  return plan.value.value_or(LawnmowerPlan{});
 }
 
 double distance_to_segment(glm::dvec2 p, glm::dvec2 a, glm::dvec2 b) {
@@ -143,15 +143,15 @@ TEST(Lawnmower, BadOptionsAreRejectedNamingTheOption) {
   const ConvexPolygon region = region_of("0,0:10,0:10,10");
   LawnmowerOptions o;
   o.swath_half_width_m = 0;
-  EXPECT_EQ(std::get<std::string>(plan_lawnmower(region, o)),
+  EXPECT_EQ(plan_lawnmower(region, o).error,
             "lawnmower option swath_half_width_m=0 must be > 0");
   o = {};
   o.overlap = 1.0;
-  EXPECT_EQ(std::get<std::string>(plan_lawnmower(region, o)),
+  EXPECT_EQ(plan_lawnmower(region, o).error,
             "lawnmower option overlap=1 must be in [0, 1)");
   o = {};
   o.lane_extension_m = -1;
-  EXPECT_NE(std::get<std::string>(plan_lawnmower(region, o)).find("lane_extension_m=-1"),
+  EXPECT_NE(plan_lawnmower(region, o).error.find("lane_extension_m=-1"),
             std::string::npos);
 }
 

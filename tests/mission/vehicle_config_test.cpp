@@ -37,13 +37,14 @@ TEST(VehicleConfig, RouteIsTheLawnmowerWhenARegionIsGivenElseTheWaypoints) {
   SurveyVehicleConfig c;
   apply_survey_vehicle_param(c, "waypoints", "5,5:6,6");
   auto route = plan_route(c);
-  ASSERT_TRUE(std::holds_alternative<std::vector<glm::dvec2>>(route));
-  EXPECT_EQ(std::get<std::vector<glm::dvec2>>(route).size(), 2u);
+  ASSERT_TRUE(route) << route.error;
+  EXPECT_EQ(route.value->size(), 2u);
   apply_survey_vehicle_param(c, "region", "pts={-150,-75:-150,-400:400,-400:400,-75}");  // Jake
   apply_survey_vehicle_param(c, "start_x", "-180");
   apply_survey_vehicle_param(c, "start_y", "-40");
   route = plan_route(c);
-  const auto& wps = std::get<std::vector<glm::dvec2>>(route);
+  ASSERT_TRUE(route) << route.error;
+  const auto& wps = *route.value;
   // 550 m across at 45 m spacing (W 25, overlap 0.1): 13 lanes, 2 waypoints each, starting at
   // the north-west corner nearest the start.
   EXPECT_EQ(wps.size(), 26u);

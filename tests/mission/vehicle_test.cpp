@@ -124,7 +124,7 @@ void expect_flown_survey_covers_region(const VehicleParams& p, double heading_de
   o.swath_half_width_m = w_m;
   o.lane_heading_deg = heading_deg;
   o.start_m = glm::dvec2{-30, -30};
-  const auto plan = std::get<LawnmowerPlan>(plan_lawnmower(region, o));
+  const auto plan = *plan_lawnmower(region, o).value;
   SurveyVehicle v(p, Pose{{-30, -30}, 45, 0, 0.0});
   v.set_waypoints(plan.waypoints_m);
   const auto poses = fly(v, 0.0, 20000.0);

@@ -1,6 +1,6 @@
 #pragma once
 // The reference reading of a number (the grammar of differences.md "Numbers", checked by a regular
-// expression, then strtod; finite only), against which base::parse_number's fast paths are
+// expression, then strtod; finite only), against which base::parse_number (std::from_chars) is
 // compared bit for bit: by tests/base/number_differential_test.cpp and by fuzz/number.cpp.
 
 #include <cmath>

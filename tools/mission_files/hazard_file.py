@@ -12,13 +12,17 @@ by lat/lon are rejected (placing them needs the mission's origin), and colour wo
 written (the picture maps them).
 """
 
-from .text import excerpt, parse_bool, parse_number, parse_points, split_key_values, to_lower
+from .text import (escape_for_log, excerpt, log_excerpt, parse_bool, parse_number, parse_points,
+                   split_key_values, to_lower)
 
 KNOWN_SHAPES = ("circle", "square", "diamond", "triangle", "efield", "gateway")
 # (low, high, high included) per ranged key (differences.md D27, D28).
 RANGES = {"hr": (0.0, 1.0, True), "aspect": (0.0, 360.0, False),
           "aspect_min": (0.0, 90.0, True), "aspect_max": (0.0, 90.0, True)}
 MAX_ASPECT_WINDOW_DEG = 90.0
+MAX_LABEL_BYTES = 256            # as hazard::kMaxLabelBytes
+MAX_OBJECT_COORDINATE_M = 1.0e8  # as hazard::kMaxObjectCoordinate_m
+BYTE_ORDER_MARK = "\ufeff"      # accepted at the start, as by the sensor
 
 
 class HazardFile:
@@ -40,7 +44,7 @@ def fmt(value):
 
 
 def field_value(key, value):
-    return "field '%s' value '%s'" % (key, excerpt(value))
+    return "field '%s' value '%s'" % (key, log_excerpt(value))
 
 
 class ObjectReader:
@@ -75,7 +79,9 @@ class ObjectReader:
         key = to_lower(raw_key)
         if key in ("x", "y"):
             self.fields[key] = self.number(key, value)
-        elif key in ("label", "source", "color", "lat", "lon"):
+        elif key == "label":
+            self.read_label(key, value)
+        elif key in ("source", "color", "lat", "lon"):
             self.fields[key] = value
         elif key == "type":
             kind = to_lower(value)
@@ -106,7 +112,16 @@ class ObjectReader:
                                      " is not a number >= 0; hint ignored")
         else:
             self.warnings.append("unknown key '%s' (value '%s') ignored"
-                                 % (raw_key, excerpt(value)))
+                                 % (escape_for_log(raw_key), log_excerpt(value)))
+
+    def read_label(self, key, value):
+        """A label reaches postings and logs: no control bytes, at most MAX_LABEL_BYTES."""
+        if any(ord(c) < 0x20 or c == "\x7f" for c in value):
+            self.reject(field_value(key, value) + " contains a control byte")
+        if len(value.encode("utf-8")) > MAX_LABEL_BYTES:
+            self.reject(field_value(key, value) + " is longer than %d bytes (kMaxLabelBytes)"
+                        % MAX_LABEL_BYTES)
+        self.fields["label"] = value
 
     def check_aspect_window(self):
         lo, hi = self.fields.get("aspect_min"), self.fields.get("aspect_max")
@@ -129,6 +144,9 @@ class ObjectReader:
                             "no mission origin)")
             else:
                 self.reject("missing field '%s'" % ("x" if "x" not in f else "y"))
+        if self.error is None and max(abs(f["x"]), abs(f["y"])) > MAX_OBJECT_COORDINATE_M:
+            self.reject("position (%g, %g) is beyond %d m from the origin "
+                        "(kMaxObjectCoordinate_m)" % (f["x"], f["y"], MAX_OBJECT_COORDINATE_M))
         kind = f.get("type") or self.type_from_hazard_key
         if self.error is None and kind is None:
             self.reject("missing field 'type'")
@@ -175,11 +193,12 @@ def parse_object(spec):
     seen = set()
     for key, value, has_equals in split_key_values(spec):
         if not has_equals:
-            reader.warnings.append("piece '%s' has no '='; ignored" % excerpt(key))
+            reader.warnings.append("piece '%s' has no '='; ignored" % log_excerpt(key))
             continue
-        if to_lower(key) in seen:
-            reader.warnings.append("key '%s' repeated; the later value is used" % key)
-        if len(seen) < MAX_KEYS_TRACKED:
+        if len(seen) < MAX_KEYS_TRACKED:   # as the sensor: a key is checked while there is room
+            if to_lower(key) in seen:
+                reader.warnings.append("key '%s' repeated; the later value is used"
+                                       % escape_for_log(key))
             seen.add(to_lower(key))
         reader.read(key, value)
     obj = reader.finish()
@@ -190,6 +209,8 @@ def parse_hazard_text(text, name):
     """A HazardFile from the text of a file called `name` (in the warnings)."""
     result, labels = HazardFile(), set()
     result.warnings = BoundedWarnings(MAX_WARNINGS_PER_FILE)
+    if text.startswith(BYTE_ORDER_MARK):
+        text = text[len(BYTE_ORDER_MARK):]
     for line_no, raw in enumerate(text.split("\n"), 1):
         place = "%s:%d: " % (name, line_no)
         line = raw.split("//", 1)[0].strip(" \t\r\n")
@@ -217,7 +238,7 @@ def parse_hazard_text(text, name):
             result.source = value.strip(" \t\r\n")
         else:
             result.warnings.append(place + "unrecognised line '%s' ignored (expected 'hazard = "
-                                   "...', 'region = ...' or 'source = ...')" % excerpt(line))
+                                   "...', 'region = ...' or 'source = ...')" % log_excerpt(line))
     bounded = result.warnings
     result.warnings = bounded.kept + (["%s: ... and %d more warnings" % (name, bounded.dropped)]
                                       if bounded.dropped else [])

@@ -53,6 +53,17 @@ def json_number(text):
     return value
 
 
+def escape_for_log(text):
+    """base::escape_for_log: every control byte (below 0x20, and 0x7F) and every backslash as
+    \\xHH, so outside text can neither end a line nor forge one."""
+    return "".join("\\x%02X" % ord(c) if ord(c) < 0x20 or c in "\x7f\\" else c for c in text)
+
+
+def log_excerpt(text):
+    """base::log_excerpt: excerpt(), then escape_for_log()."""
+    return escape_for_log(excerpt(text))
+
+
 def parse_bool(text):
     word = to_lower(trim(text))
     if word in TRUE_WORDS:

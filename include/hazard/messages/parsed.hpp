@@ -1,20 +1,12 @@
 #pragma once
-// The result of parsing one message: the typed value, or the reason it was rejected.
+// The result of parsing one message: the typed value, or the reason it was rejected (the field
+// and value at fault). The base layer's result type under the name the message parsers use.
 
-#include <optional>
-#include <string>
-#include <utility>
+#include "base/result.hpp"
 
 namespace hazard {
 
 template <class T>
-struct Parsed {
-  std::optional<T> value;
-  std::string error;  ///< names the field and value at fault; empty when `value` is set
-
-  static Parsed ok(T v) { return Parsed{std::move(v), {}}; }
-  static Parsed fail(std::string why) { return Parsed{std::nullopt, std::move(why)}; }
-  explicit operator bool() const { return value.has_value(); }
-};
+using Parsed = base::Result<T>;
 
 }  // namespace hazard

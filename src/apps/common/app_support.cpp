@@ -21,7 +21,7 @@ std::uint64_t operating_system_seed() {
 }
 
 std::optional<std::string> read_text_file(const std::string& path) {
-  return base::read_regular_file(path).text;
+  return base::read_file_text(path).value;
 }
 
 hazard::HazardFileReader mission_relative_reader(std::string mission_directory) {

@@ -14,8 +14,12 @@ std::optional<InputLog> InputLog::open(const std::string& path, std::ostream& er
   InputLog log(path, err);
   struct stat info {};
   if (::stat(path.c_str(), &info) == 0 && S_ISREG(info.st_mode)) {
-    log.mapped_ = base::WholeFile::open(path, kMaxMappedLogBytes, problem);
-    if (!log.mapped_) return std::nullopt;
+    base::Result<base::WholeFile> whole = base::WholeFile::open(path, kMaxMappedLogBytes);
+    if (!whole) {
+      problem = std::move(whole.error);
+      return std::nullopt;
+    }
+    log.mapped_ = std::move(whole.value);
   } else {
     auto stream = base::LineStream::open(path, kMaxInputLineBytes, problem);
     if (!stream) return std::nullopt;

@@ -83,11 +83,11 @@ bool SimSurveyVehicle::on_start_up() {
   if (lat_origin_deg && lon_origin_deg)
     geodesy_.emplace(mission::GeoPoint{*lat_origin_deg, *lon_origin_deg});
 
-  auto route = mission::plan_route(config_);
-  if (auto* error = std::get_if<std::string>(&route)) {
-    report_config_warning("no route: " + *error);
+  base::Result<std::vector<glm::dvec2>> route = mission::plan_route(config_);
+  if (!route) {
+    report_config_warning("no route: " + route.error);
   } else {
-    route_m_ = std::get<std::vector<glm::dvec2>>(std::move(route));
+    route_m_ = std::move(*route.value);
   }
   const double now_s = cycle_time();
   last_pose_ = mission::Pose{config_.start_m, base::norm360(config_.start_heading_deg), 0.0, now_s};

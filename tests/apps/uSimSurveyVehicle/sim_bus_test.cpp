@@ -168,7 +168,7 @@ TEST_F(SimOnBus, FliesTheLibrarysLawnmowerAndMatchesTheLibraryVehicle_ThinAdapte
   for (const auto& l : std::vector<std::pair<std::string, std::string>>{
            {"start_x", "-20"}, {"start_y", "10"}, {"region", kRegion}, {"swath_width", "25"}})
     ASSERT_EQ(mission::apply_survey_vehicle_param(config, l.first, l.second), "");
-  const auto route = std::get<std::vector<glm::dvec2>>(mission::plan_route(config));
+  const auto route = *mission::plan_route(config).value;
   ASSERT_EQ(app->vehicle()->waypoints(), route);
 
   // The library's vehicle, started at the same time and pose, flown at the report times.
