@@ -21,9 +21,16 @@ namespace {
 
 constexpr const char* kRunnerName = "hazard_study";
 
-std::unique_ptr<moos::MoosApp> make_app(const std::string& program) {
-  if (base::iequals(program, "uFldHazardSensor"))
-    return std::make_unique<ufld_hazard_sensor::HazardSensor>();
+/// `logged`: every posting is read (--alog), so the sensor builds its visuals too.
+std::unique_ptr<moos::MoosApp> make_app(const std::string& program, bool logged) {
+  if (base::iequals(program, "uFldHazardSensor")) {
+    ufld_hazard_sensor::HazardSensorOptions options;
+    if (!logged) {
+      options.readers = hazard::PostingReaders::kReportCounts;
+      options.post_iteration_timing = false;
+    }
+    return std::make_unique<ufld_hazard_sensor::HazardSensor>(std::move(options));
+  }
   if (base::iequals(program, "uFldHazardMetric"))
     return std::make_unique<ufld_hazard_metric::HazardMetricApp>();
   if (base::iequals(program, "pHazardMgr")) return std::make_unique<phazard_mgr::HazardMgr>();
@@ -41,10 +48,7 @@ class Observer {
 
   void take(const std::vector<moos::Message>& mail) {
     for (const moos::Message& m : mail) {
-      if (alog_) {
-        *alog_ += moos::format_alog_line(moos::alog_entry(m, t0_));
-        *alog_ += '\n';
-      }
+      if (alog_) *alog_ += moos::format_alog_line(moos::alog_entry(m, t0_));
       note(m);
     }
   }
@@ -110,14 +114,22 @@ MissionResult run_mission(const MissionPlan& plan, const Setting& setting, std::
                                     1.0});
   if (alog) *alog += moos::alog_header(plan.community.empty() ? "hazard_study" : plan.community, t0);
   auto runner = bus.connect(kRunnerName);
-  runner->register_wildcard("*", "*");
+  // Without a log the runner reads only what the result needs (fewer copies of the mail).
+  if (alog) {
+    runner->register_wildcard("*", "*");
+  } else {
+    for (const char* var : {"UHZ_DETECTION_REPORT", "UHZ_HAZARD_REPORT", "HAZARD_SEARCH_SCORE",
+                            "HAZARDSET_REPORT"})
+      runner->register_variable(var);
+    runner->register_wildcard("HAZARDSET_EVAL_*", "*");
+  }
   Observer observer(plan, result, alog, t0);
 
   std::vector<std::unique_ptr<moos::MoosApp>> apps;
   std::vector<std::unique_ptr<moos::BusClient>> clients;
   moos::Lockstep lockstep(bus, clock);
   for (const Process& p : plan.processes) {
-    auto app = make_app(p.program);
+    auto app = make_app(p.program, alog != nullptr);
     moos::AppSettings settings = process_settings(plan, p, app->traits(), setting, seed);
     clients.push_back(bus.connect(settings.moos_name));
     app->start(*clients.back(), std::move(settings));

@@ -88,13 +88,20 @@ double t_quantile_975(std::size_t df) {
   return z + (z3 + z) / (4 * n) + (5 * z5 + 16 * z3 + 3 * z) / (96 * n * n);
 }
 
+/// A label as one table cell: tabs and other control characters become blanks.
+std::string cell(std::string text) {
+  for (char& c : text)
+    if (static_cast<unsigned char>(c) < 0x20) c = ' ';
+  return text;
+}
+
 std::string summary_table(const std::vector<SettingScores>& settings) {
   std::string out = "setting\tmissions\tscored\tmean\tsd\tci95_low\tci95_high\tmax_time\n";
   for (const SettingScores& s : settings) {
     const Stats st = stats_of(s.scores);
     const bool some = !s.scores.empty();
     const bool interval = s.scores.size() >= 2;
-    out += s.setting + "\t" + std::to_string(s.missions) + "\t" + std::to_string(s.scores.size()) +
+    out += cell(s.setting) + "\t" + std::to_string(s.missions) + "\t" + std::to_string(s.scores.size()) +
            "\t" + (some ? base::fix(st.mean, 2) : "-") + "\t" +
            (interval ? base::fix(st.sd, 2) : "-") + "\t" +
            (interval ? base::fix(st.mean - st.half_width, 2) : "-") + "\t" +
