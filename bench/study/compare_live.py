@@ -67,8 +67,9 @@ def main():
             if isinstance(r.get("score"), (int, float)):
                 lock[r["seed"]] = r
     seeds = sorted(set(live) & set(lock))
-    a = [live[s]["score"] for s in seeds]
-    b = [lock[s]["score"] for s in seeds]
+    # summary.json keeps two decimals: compare both at that precision.
+    a = [round(live[s]["score"], 2) for s in seeds]
+    b = [round(lock[s]["score"], 2) for s in seeds]
     if len(seeds) < 2:
         sys.exit("fewer than two seeds with a score in both")
     u, p_u = mann_whitney(a, b)
@@ -77,11 +78,10 @@ def main():
         len(seeds), sum(a) / len(a), stdev(a), sum(b) / len(b), stdev(b)))
     print("Mann-Whitney U = %.1f, p = %.3f" % (u, p_u))
     print("Kolmogorov-Smirnov D = %.3f, p = %.3f" % (d, p_d))
-    same = sum(1 for s in seeds if live[s]["score"] == lock[s]["score"])
-    print("same score on %d of %d seeds" % (same, len(seeds)))
-    for s in seeds:
-        if live[s]["score"] != lock[s]["score"]:
-            print("  seed %d: live %.2f, lockstep %.2f" % (s, live[s]["score"], lock[s]["score"]))
+    differ = [(s, x, y) for s, x, y in zip(seeds, a, b) if x != y]
+    print("same score on %d of %d seeds" % (len(seeds) - len(differ), len(seeds)))
+    for s, x, y in differ:
+        print("  seed %d: live %.2f, lockstep %.2f" % (s, x, y))
 
 
 def stdev(xs):
