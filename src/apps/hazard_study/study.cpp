@@ -81,7 +81,8 @@ int run(const Options& options, std::ostream& out, std::ostream& err) {
         if (r.score) summary.back().scores.push_back(*r.score);
         if (r.end == "max_time") ++summary.back().max_time;
       } else {
-        out << json_line(r);
+        // One line at a time: a study stopped midway (a cluster's time limit) keeps its lines.
+        out << json_line(r) << std::flush;
       }
       if (seed == options.last_seed) break;
     }
