@@ -9,12 +9,14 @@
 #
 #   bench/study/run.sh [N [JOBS]]      (default N = 1000 seeds per setting, JOBS = 2)
 #
+# BUILD_DIR names the build (default build/release). Finished chunks are kept: running it
+# again with a larger N runs only the seeds that are missing.
 # Output in runs/study/: <setting>.<chunk>.jsonl, cpu.json, study.md (the table), study.svg.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 repo="$(cd "$here/../.." && pwd)"
 n="${1:-1000}" jobs="${2:-2}"
-study="$repo/build/release/src/apps/hazard_study/hazard_study"
+study="${BUILD_DIR:-$repo/build/release}/src/apps/hazard_study/hazard_study"
 mission="$repo/missions/jake/jake.moos"
 out="$repo/runs/study"
 mkdir -p "$out"
@@ -39,11 +41,10 @@ ORDER=(archie_W25 archie_W50 archie_W10 betty_W25 speed_gate_off turn_blackout_o
 chunk=50
 tasks="$out/tasks.txt"
 : > "$tasks"
-for name in "${ORDER[@]}"; do
-  for ((first = 1; first <= n; first += chunk)); do
-    last=$((first + chunk - 1 < n ? first + chunk - 1 : n))
-    echo "$name $first $last" >> "$tasks"
-  done
+# Chunk by chunk across the settings, so a study stopped early has the same seeds in each.
+for ((first = 1; first <= n; first += chunk)); do
+  last=$((first + chunk - 1 < n ? first + chunk - 1 : n))
+  for name in "${ORDER[@]}"; do echo "$name $first $last" >> "$tasks"; done
 done
 export study mission out
 run_chunk() {
