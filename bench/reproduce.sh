@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Reproduces every number in docs/effects.md, docs/accuracy.md and docs/performance.md and
-# redraws docs/images/accuracy.svg and docs/images/performance.svg.
+# Reproduces every number in docs/effects.md, docs/accuracy.md, docs/performance.md and
+# docs/study.md and redraws docs/images/accuracy.svg, docs/images/performance.svg and
+# docs/images/study.svg.
 #
 #   bench/reproduce.sh [BUILD_DIR]      BUILD_DIR: a Release build (default build/release)
 #
@@ -12,7 +13,7 @@ ROOT="$(cd "$HERE/.." && pwd)"
 BUILD="${1:-$ROOT/build/release}"
 
 cmake --build "$BUILD" --target effects_bench scale_bench hazard_replay gen_hazards accuracy_bench \
-  moosdb_bench process_bench -j2 >&2
+  moosdb_bench process_bench hazard_study -j2 >&2
 echo "# docs/effects.md"
 "$BUILD/bench/engine/effects_bench"
 echo
@@ -33,3 +34,9 @@ BUILD_DIR="$BUILD" "$HERE/process/run.sh" 1M-markers -- --duration=300
 BUILD_DIR="$BUILD" "$HERE/process/run.sh" sweep -- --csv="$DATA/performance.csv"
 python3 "$HERE/process/plot_performance.py" "$DATA/performance.csv" "$ROOT/docs/images/performance.svg"
 echo "(plot: docs/images/performance.svg)" >&2
+echo
+echo "# docs/study.md (1,000 seeds per setting: about an hour of CPU; the live comparison is"
+echo "# bench/study/live_compare.sh, run by hand)"
+BUILD_DIR="$BUILD" "$HERE/study/run.sh" 1000 2
+cp "$ROOT/runs/study/study.svg" "$ROOT/docs/images/study.svg"
+echo "(plot: docs/images/study.svg)" >&2

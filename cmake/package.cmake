@@ -16,8 +16,9 @@ replacement for the original in a mission launched by pAntler: same command
 line, configuration block, messages and AppCast.
 
 The package holds the sensor, gen_hazards, an offline replay tool
-(hazard_replay), a MOOSDB-compatible server (moosdb-lite), a command-line
-MOOS client (moos-cli), a web viewer (pWebViewer), the demo mission's apps,
+(hazard_replay), a runner of whole missions over seeds (hazard_study), a
+MOOSDB-compatible server (moosdb-lite), a command-line MOOS client
+(moos-cli), a web viewer (pWebViewer), the demo mission's apps,
 the demo missions with their launcher, man pages, and the engine as static
 libraries with headers, a CMake package and a pkg-config file.
 No MOOS installation is needed.")

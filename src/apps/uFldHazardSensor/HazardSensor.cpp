@@ -34,15 +34,28 @@ moos::AppTraits hazard_sensor_traits() {
   return t;
 }
 
+namespace {
+
+moos::AppTraits traits_for(const HazardSensorOptions& options) {
+  moos::AppTraits t = hazard_sensor_traits();
+  t.post_iteration_timing = options.post_iteration_timing;
+  return t;
+}
+
+}  // namespace
+
 HazardSensor::HazardSensor(HazardSensorOptions options)
-    : moos::MoosApp(hazard_sensor_traits()), options_(std::move(options)) {
+    : moos::MoosApp(traits_for(options)), options_(std::move(options)) {
   if (!options_.os_seed) options_.os_seed = app_support::operating_system_seed;
 }
 
 bool HazardSensor::on_start_up() {
-  driver_.emplace(app_support::make_sensor_engine(config_lines(), settings().mission_directory,
-                                                  app_support::mission_origin(settings()),
-                                                  std::nullopt, options_.os_seed));
+  hazard::Engine engine = app_support::make_sensor_engine(
+      config_lines(), settings().mission_directory, app_support::mission_origin(settings()),
+      std::nullopt, options_.os_seed);
+  if (options_.readers != hazard::PostingReaders::kViewers)
+    engine = engine.with_seed(engine.seed(), options_.readers);
+  driver_.emplace(std::move(engine));
   for (const hazard::InterfaceVariable& v : hazard::Engine::subscriptions()) {
     register_variable(std::string(v.name));
   }

@@ -69,6 +69,12 @@ struct HazardSensorOptions {
   std::ostream* verbose = nullptr;
   /// The source of an operating-system seed (seed_random = true); empty: app_support::operating_system_seed.
   std::function<std::uint64_t()> os_seed;
+  /// Who reads the postings (hazard/effects.hpp): a study that reads only the reports
+  /// (hazard_study without --alog) passes kReportCounts, and no visual's text is built.
+  hazard::PostingReaders readers = hazard::PostingReaders::kViewers;
+  /// `<APP>_ITER_GAP` / `_ITER_LEN` every iteration (moos::AppTraits); a study that reads no
+  /// framework postings turns them off.
+  bool post_iteration_timing = true;
 };
 
 class HazardSensor final : public moos::MoosApp {

@@ -1,0 +1,42 @@
+#include "moos/lockstep.hpp"
+
+#include <limits>
+
+namespace moos {
+
+Lockstep::Lockstep(InProcessBus& bus, ManualClock& clock) : bus_(bus), clock_(clock) {}
+
+void Lockstep::add(MoosApp& app) { apps_.push_back(&app); }
+
+double Lockstep::next_due_moos_s() const {
+  double due = std::numeric_limits<double>::infinity();
+  for (const MoosApp* app : apps_) {
+    const double t = app->next_cycle_due_moos_s();
+    if (t < due) due = t;
+  }
+  return due;
+}
+
+void Lockstep::set_moos_time(double moos_s) {
+  // The clock never runs backwards: a due time already past leaves it where it is.
+  clock_.set_unix_s(moos_s / bus_.time_warp());
+}
+
+double Lockstep::step() {
+  if (apps_.empty()) return moos_time();
+  set_moos_time(next_due_moos_s());
+  // cycle_if_due applies the app's own tolerance, so apps on one grid cycle together.
+  for (MoosApp* app : apps_) app->cycle_if_due();
+  return moos_time();
+}
+
+bool Lockstep::run_until(double end_moos_s, const std::function<bool()>& stop) {
+  while (!apps_.empty() && next_due_moos_s() <= end_moos_s) {
+    step();
+    if (stop && stop()) return true;
+  }
+  set_moos_time(end_moos_s);
+  return false;
+}
+
+}  // namespace moos
