@@ -40,7 +40,7 @@ DEBIAN_PACKAGES=(
   libgeographiclib-dev libglm-dev libgtest-dev libbenchmark-dev
   python3 python3-venv
   librsvg2-bin
-  libcpp-httplib-dev chromium
+  libboost1.74-dev chromium   # Boost.Beast and Asio (header-only): pWebViewer's HTTP server
   clang libclang-rt-14-dev
   help2man dpkg-dev file lintian
   jq parallel            # docs/performance.md's study examples, run by the docs test
