@@ -194,8 +194,8 @@ TEST_F(HostileHttp, AHeadWithinTheBoundIsServedAndOneBeyondItIsRefused_Hardening
   expect_still_serving();
 }
 
-// Beast's header_limit holds for the bytes of one parse only; sent a line at a time, a head
-// over the bound is still refused, since the server counts the head's bytes across reads.
+// Sent 4 kB at a time, a head over the bound is refused as one sent at once is: the bound
+// holds across reads.
 TEST_F(HostileHttp, AHeadSentALineAtATimeIsBoundedAsAWhole_Hardening) {
   constexpr std::size_t kLine = 4000;
   const std::string head = head_with_lines(host(), BoundedHttpServer::kMaxRequestHeadBytes / kLine + 2, kLine);

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdlib>
 #include <cstdint>
 
 #include "base/text.hpp"
@@ -83,8 +84,10 @@ std::string dechunked(const std::string& body) {
   while (true) {
     const auto line_end = body.find("\r\n", at);
     if (line_end == std::string::npos) break;
-    const auto size = std::stoul(body.substr(at, line_end - at), nullptr, 16);
-    if (size == 0 || line_end + 2 + size + 2 > body.size()) break;
+    const std::string size_line = body.substr(at, line_end - at);
+    char* end = nullptr;
+    const unsigned long size = std::strtoul(size_line.c_str(), &end, 16);
+    if (size_line.empty() || *end != '\0' || size == 0 || line_end + 2 + size + 2 > body.size()) break;
     out += body.substr(line_end + 2, size);
     at = line_end + 2 + size + 2;
   }

@@ -21,7 +21,8 @@ int status_of(const std::string& reply);
 std::string body_of(const std::string& reply);
 /// The value of header `name` (case-insensitive) in a reply's head, "" when absent.
 std::string header_of(const std::string& reply, const std::string& name);
-/// The data of the whole chunks of a chunked body (what has arrived of it so far).
+/// The data of the whole chunks of a chunked body (what has arrived of it so far; it stops at
+/// the first line that is not a chunk size).
 std::string dechunked(const std::string& body);
 
 /// A reply, its body decoded when chunked.
