@@ -272,13 +272,12 @@ class Connection {
     return true;
   }
 
-  bool write_text(const std::string& text) {
-    const error_code ec = run(
+  error_code write_text(const std::string& text) {
+    return run(
         [&](auto done) {
           net::async_write(socket_, net::buffer(text), [done](error_code e, std::size_t) mutable { done(e); });
         },
         after_ms(BoundedHttpServer::kWriteTimeout_ms));
-    return !ec;
   }
 
   template <class Message>
@@ -302,11 +301,12 @@ class Connection {
   /// compile than the three lines it saves).
   bool write_stream(HttpResponse& response) {
     struct AtEnd {
-      std::function<void()>& on_end;
+      std::function<void(bool)>& on_end;
+      error_code failed;
       ~AtEnd() {
-        if (on_end) on_end();
+        if (on_end) on_end(failed == beast::error::timeout);
       }
-    } at_end{response.on_end};
+    } at_end{response.on_end, {}};
     http::response<http::string_body> message{static_cast<http::status>(response.status), 11};
     set_fields(message, response);
     message.keep_alive(false);
@@ -317,7 +317,8 @@ class Connection {
     while (const auto text = response.next()) {
       if (text->empty()) continue;  // an empty chunk would end the body
       std::snprintf(size, sizeof size, "%zx\r\n", text->size());
-      if (!write_text(size + *text + "\r\n")) return false;
+      at_end.failed = write_text(size + *text + "\r\n");
+      if (at_end.failed) return false;
     }
     write_text("0\r\n\r\n");
     return false;

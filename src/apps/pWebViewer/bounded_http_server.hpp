@@ -24,7 +24,8 @@
 //   503 and is closed on the accepting thread at once, never kept.
 // - The handler runs on a serving thread, once per whole request. A response with `next` set
 //   is an endless body (server-sent events): sent chunked, each text `next` returns as it comes,
-//   until `next` returns nullopt, a write fails or the server stops; `on_end` runs after it.
+//   until `next` returns nullopt, a write fails or the server stops; `on_end` runs after it,
+//   told whether a write timed out (a client that stopped reading, not one that closed).
 // - stop() ends every connection within a read or a write (and a stream within one `next`),
 //   joins the threads and closes what waits; the destructor stops.
 //
@@ -64,7 +65,8 @@ struct HttpResponse {
   std::string body;
   /// Set: the body is a stream of texts (see above); `body` is not sent.
   std::function<std::optional<std::string>()> next;
-  std::function<void()> on_end;
+  /// After a stream: true when it ended because the client took nothing for kWriteTimeout_ms.
+  std::function<void(bool write_timed_out)> on_end;
 };
 
 class BoundedHttpServer {

@@ -101,7 +101,7 @@ HttpResponse HttpServer::event_stream() {
     for (const std::string& e : *events) text += "data: " + e + "\n\n";
     return text;
   };
-  res.on_end = [this, client] { hub_.unsubscribe(client); };
+  res.on_end = [this, client](bool fell_behind) { hub_.unsubscribe(client, fell_behind); };
   return res;
 }
 

@@ -12,6 +12,7 @@
 #include "WebViewer.hpp"
 #include "WebViewer_Info.hpp"
 #include "app_on_bus.hpp"
+#include "bounded_http_server.hpp"
 #include "child_process.hpp"
 #include "raw_http.hpp"
 #include "web_files.hpp"
@@ -207,6 +208,24 @@ TEST_F(ViewerOnBus, ABrowserThatFallsBehindIsDroppedAndTheOthersKeepTheirStream)
   bus.post("VIEW_POINT", "x=1,y=2,label=after");
   app->run_for(0.5);
   EXPECT_TRUE(reader.wait_for("label=after", 20.0));
+}
+
+// A queue too long to fill: the stalled browser is dropped, and counted, when a write to it
+// waits out the write timeout.
+TEST_F(ViewerOnBus, ABrowserThatTakesNothingForTheWriteTimeoutIsDroppedAndCounted) {
+  ASSERT_TRUE(start("  max_queued = 10000000\n"));
+  StalledReader stalled(app->http_port());
+  ASSERT_TRUE(stalled.connected());
+  const double end = test_support::steady_now_s() + 4 * BoundedHttpServer::kWriteTimeout_ms / 1000.0;
+  const std::string big(30000, 'x');
+  int posted = 0;
+  while (app->feed()->hub().dropped() == 0 && test_support::steady_now_s() < end) {
+    for (int i = 0; i < 20; ++i) bus.post("VIEW_POINT", "x=1,y=2,msg=" + big + ",label=p" + std::to_string(posted++));
+    app->run_for(0.5);
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  EXPECT_EQ(app->feed()->hub().dropped(), 1u);
+  EXPECT_EQ(app->feed()->hub().clients(), 0u);
 }
 
 TEST_F(ViewerOnBus, AnAddressInUseEndsStartUp) {
