@@ -87,14 +87,19 @@ class Connection {
  public:
   using RequestParser = http::request_parser<http::string_body>;
 
-  Connection(net::io_context& context, tcp::socket& socket, const std::atomic<bool>& stopping,
-             const BoundedHttpServer::Handler& handler, std::size_t body_limit)
+  /// `buffer`: the serving thread's, emptied here (kept across connections, so that a flood of
+  /// connections allocates none).
+  Connection(net::io_context& context, tcp::socket& socket, beast::flat_buffer& buffer,
+             const std::atomic<bool>& stopping, const BoundedHttpServer::Handler& handler,
+             std::size_t body_limit)
       : context_(context),
         socket_(socket),
         stopping_(stopping),
         handler_(handler),
         body_limit_(body_limit),
-        buffer_(BoundedHttpServer::kMaxRequestHeadBytes + kReadSlack) {}
+        buffer_(buffer) {
+    buffer_.clear();
+  }
 
   void serve() {
     for (std::size_t n = 1; n <= BoundedHttpServer::kMaxRequestsPerConnection && request_starts(); ++n) {
@@ -329,7 +334,7 @@ class Connection {
   const std::atomic<bool>& stopping_;
   const BoundedHttpServer::Handler& handler_;
   std::size_t body_limit_;
-  beast::flat_buffer buffer_;  // bytes read and not yet parsed; bounded (constructor)
+  beast::flat_buffer& buffer_;  // bytes read and not yet parsed; bounded (work())
 };
 
 struct Admitted {
@@ -348,7 +353,7 @@ struct BoundedHttpServer::Impl {
   void work();
   /// The next admitted connection; nullopt when the server stops.
   std::optional<Admitted> take();
-  void serve(net::io_context& context, const Admitted& admitted);
+  void serve(net::io_context& context, beast::flat_buffer& buffer, const Admitted& admitted);
   void release(const std::string& address);
 
   const Handler handler;
@@ -411,21 +416,24 @@ std::optional<Admitted> BoundedHttpServer::Impl::take() {
 
 void BoundedHttpServer::Impl::work() {
   net::io_context context;
+  beast::flat_buffer buffer(kMaxRequestHeadBytes + kReadSlack);
+  buffer.reserve(buffer.max_size());
   {
     std::lock_guard<std::mutex> lock(mutex);
     serving_contexts.insert(&context);
   }
-  while (const auto admitted = take()) serve(context, *admitted);
+  while (const auto admitted = take()) serve(context, buffer, *admitted);
   std::lock_guard<std::mutex> lock(mutex);
   serving_contexts.erase(&context);
 }
 
-void BoundedHttpServer::Impl::serve(net::io_context& context, const Admitted& admitted) {
+void BoundedHttpServer::Impl::serve(net::io_context& context, beast::flat_buffer& buffer,
+                                    const Admitted& admitted) {
   tcp::socket socket(context);
   error_code ec;
   socket.assign(admitted.protocol, admitted.handle, ec);
   if (!ec) {
-    Connection(context, socket, stopping, handler, body_limit).serve();
+    Connection(context, socket, buffer, stopping, handler, body_limit).serve();
     socket.shutdown(tcp::socket::shutdown_both, ec);
   }
   socket.close(ec);
