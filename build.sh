@@ -43,7 +43,7 @@ DEBIAN_PACKAGES=(
   libgeographiclib-dev libglm-dev libgtest-dev libbenchmark-dev
   python3 python3-venv
   librsvg2-bin
-  libcpp-httplib-dev chromium
+  libboost1.74-dev chromium   # Boost.Beast and Asio (header-only): pWebViewer's HTTP server
   clang libclang-rt-14-dev
   help2man dpkg-dev file lintian
   valgrind               # the instruction-count gate (./build.sh test-perf)

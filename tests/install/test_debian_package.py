@@ -57,6 +57,9 @@ class DebianPackage(unittest.TestCase):
         for package in ("libc6", "libstdc++6", "libgeographiclib", "python3"):
             self.assertIn(package, depends)
         self.assertNotIn("moos", depends.lower())
+        # pWebViewer's HTTP server is Boost.Beast, header-only: no HTTP or Boost library to install.
+        self.assertNotIn("httplib", depends)
+        self.assertNotIn("libboost", depends)
 
     def test_lintian_reports_no_error(self):
         result = run(["lintian", "--no-tag-display-limit", self.deb], timeout=600)

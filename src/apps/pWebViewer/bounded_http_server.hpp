@@ -1,81 +1,110 @@
 #pragma once
-// An httplib::Server whose memory stays bounded whatever a client sends.
-//
-// Why: cpp-httplib 0.11 keeps every request header line with no count limit (a client sending
-// 8 kB header lines for 8 s took pWebViewer from 9 MB to 775 MB), reads a chunked or
-// length-less request body whole, and queues every accepted connection. Debian ships it
-// compiled, so its CPPHTTPLIB_* limits cannot be changed. This class serves each accepted
-// socket through a stream of its own (bounded_stream.hpp) instead of httplib's, which
-// httplib allows: process_and_close_socket is a virtual member and process_request is
-// protected.
+// pWebViewer's HTTP/1.1 server: Boost.Beast's parser and Asio's sockets, with every bound set
+// through their public interface, so that nothing a client sends can take more memory, threads
+// or time than below. Asio and Beast stay inside bounded_http_server.cpp (they compile slowly);
+// this header is plain C++.
 //
 // Contract
-// - A request's head (request line and header lines) may be at most kMaxRequestHeadBytes; what
-//   follows is not read. httplib then answers 400 (or 414 for an overlong target) and the
-//   connection is closed. The head is kept by httplib, so this bounds its memory per connection.
-// - After the head, at most body_limit + kBodyFramingBytes bytes of body are read; httplib
-//   answers 413 to a Content-Length over body_limit (set_payload_max_length) and 400 to a
-//   chunked or length-less body cut at the bound; the connection is then closed.
+// - listen() binds `address`:`port` (0: a port the OS picks; SO_REUSEADDR, not SO_REUSEPORT, so
+//   a second server on the port fails); false with `error` when it cannot. run(threads) then
+//   accepts on a thread of its own and serves from `threads` threads, one connection each.
+// - A request's head (request line and header lines) may be at most kMaxRequestHeadBytes
+//   (Beast's header_limit): 431 beyond it, or 414 when the request line alone passes
+//   kMaxTargetBytes or the target does. A body may be at most `body_limit` bytes (Beast's
+//   body_limit), by Content-Length or chunked: 413. Other malformed requests: 400.
 // - A request (head and body) must arrive whole within kRequestDeadline_ms of its first byte,
-//   however slowly it trickles; past it httplib answers 400 and the connection is closed.
-// - A request whose body was announced but not read (a route refused it first) closes the
-//   connection after its answer, so that the body is never read as a request.
-// - Reads wait at most the server's read timeout, writes its write timeout (httplib's
-//   defaults, or set_read_timeout / set_write_timeout); an idle keep-alive connection is closed
-//   after its keep-alive timeout, or at once when the server stops; at most
-//   keep_alive_max_count requests per connection, as httplib does. Responses, the event
-//   stream's chunks among them, are written through the same stream.
-// - Connections: set_pool_threads(n) serves at most n at once; at most kMaxWaitingConnections
-//   more wait for a thread; beyond that a new connection gets 503 and is closed at once, so
-//   queued connections cannot grow without bound either. At most kMaxConnectionsPerAddress
-//   connections of one client address are served at once: a further one gets 503 and is closed
-//   as soon as a thread takes it, so a few slow clients cannot hold every thread.
-
-#include <httplib.h>
+//   and no read waits more than kReadTimeout_ms: 408 past either.
+// - After any of these answers the connection is closed, so that unread bytes are never taken
+//   for a request.
+// - A connection waits kKeepAliveIdle_ms at most for a request's first byte and serves at most
+//   kMaxRequestsPerConnection requests; a response with a status of 400 or more ends it.
+//   Each write waits at most kWriteTimeout_ms for the client to take a slice.
+// - Connections: at most kMaxConnectionsPerAddress of one client address, waiting or served;
+//   at most kMaxWaitingConnections waiting for a thread. Beyond either a new connection gets
+//   503 and is closed on the accepting thread at once, never kept.
+// - The handler runs on a serving thread, once per whole request. A response with `next` set
+//   is an endless body (server-sent events): sent chunked, each text `next` returns as it comes,
+//   until `next` returns nullopt, a write fails or the server stops; `on_end` runs after it,
+//   told whether a write timed out (a client that stopped reading, not one that closed).
+// - stop() ends every connection within a read or a write (and a stream within one `next`),
+//   joins the threads and closes what waits; the destructor stops.
+//
+// Threads: the accepting thread owns the listening socket and hands each admitted connection
+// to the waiting queue (mutex); each serving thread owns one io_context and the connection it
+// took; stop() only sets a flag and calls io_context::stop(), which Asio makes thread-safe.
 
 #include <cstddef>
-#include <map>
-#include <mutex>
+#include <functional>
+#include <memory>
+#include <optional>
 #include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
 
 namespace web_viewer {
 
-class BoundedStream;
+using HttpHeaders = std::vector<std::pair<std::string, std::string>>;
 
-class BoundedHttpServer : public httplib::Server {
+struct HttpRequest {
+  std::string method;  ///< as sent, e.g. "GET"
+  std::string target;  ///< as sent, e.g. "/index.html?token=..."
+  HttpHeaders headers;
+  std::string body;
+
+  /// How many headers of `name` (case-insensitive) the request has.
+  std::size_t count(std::string_view name) const;
+  /// The first header of `name`; nullopt when absent.
+  std::optional<std::string> header(std::string_view name) const;
+};
+
+struct HttpResponse {
+  int status = 200;
+  std::string content_type;  ///< none when empty
+  HttpHeaders headers;
+  std::string body;
+  /// Set: the body is a stream of texts (see above); `body` is not sent.
+  std::function<std::optional<std::string>()> next;
+  /// After a stream: true when it ended because the client took nothing for kWriteTimeout_ms.
+  std::function<void(bool write_timed_out)> on_end;
+};
+
+class BoundedHttpServer {
  public:
-  /// Request line and headers, bytes: 8 header lines of httplib's 8 KiB maximum. A browser's
-  /// request head is under 2 KiB.
+  using Handler = std::function<HttpResponse(const HttpRequest&)>;
+
+  /// Request line and headers, bytes. A browser's request head is under 2 KiB.
   static constexpr std::size_t kMaxRequestHeadBytes = 64 * 1024;
-  /// Chunk-size lines and trailers a chunked body may add to its data, bytes.
-  static constexpr std::size_t kBodyFramingBytes = 1024;
+  /// The longest request target, bytes (414 beyond it).
+  static constexpr std::size_t kMaxTargetBytes = 8 * 1024;
   /// Accepted connections waiting for a free thread beyond which new ones are refused.
   static constexpr std::size_t kMaxWaitingConnections = 64;
-  /// Connections of one client address served at once (a browser opens at most 6 per server).
+  /// Connections of one client address at once (a browser opens at most 6 per server).
   static constexpr std::size_t kMaxConnectionsPerAddress = 8;
   /// How long a request's head and body may take to arrive, from its first byte.
   static constexpr int kRequestDeadline_ms = 10000;
+  static constexpr int kReadTimeout_ms = 5000;
+  static constexpr int kWriteTimeout_ms = 5000;
+  /// An idle keep-alive connection holds a thread: let it go soon, so that a page's parallel
+  /// file requests never keep another page waiting for long.
+  static constexpr int kKeepAliveIdle_ms = 1000;
+  static constexpr std::size_t kMaxRequestsPerConnection = 5;
 
   /// `body_limit`: the largest request body accepted, bytes (413 above it).
-  explicit BoundedHttpServer(std::size_t body_limit);
+  BoundedHttpServer(Handler handler, std::size_t body_limit);
+  ~BoundedHttpServer();
+  BoundedHttpServer(const BoundedHttpServer&) = delete;
+  BoundedHttpServer& operator=(const BoundedHttpServer&) = delete;
 
-  /// Serve from a pool of `threads` threads (before listening).
-  void set_pool_threads(std::size_t threads);
+  bool listen(const std::string& address, int port, std::string* error);
+  /// The bound port (after listen()).
+  int port() const;
+  void run(std::size_t threads);
+  void stop();
 
  private:
-  bool process_and_close_socket(socket_t sock) override;
-  /// Serves the requests of one connection; false when the last one failed.
-  bool serve_connection(socket_t sock);
-  /// Whether the next request of a keep-alive connection starts in time (false when the
-  /// server stops).
-  bool next_request_arrives(const BoundedStream& stream) const;
-  /// Counts a connection of `address`; false (counting nothing) when it has its share already.
-  bool take_address_slot(const std::string& address);
-  void release_address_slot(const std::string& address);
-
-  std::size_t body_read_limit_;
-  std::mutex addresses_mutex_;
-  std::map<std::string, std::size_t> connections_of_address_;
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
 };
 
 }  // namespace web_viewer

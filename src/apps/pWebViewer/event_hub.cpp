@@ -38,9 +38,12 @@ std::shared_ptr<ClientQueue> EventHub::subscribe() {
   return client;
 }
 
-void EventHub::unsubscribe(const std::shared_ptr<ClientQueue>& client) {
+void EventHub::unsubscribe(const std::shared_ptr<ClientQueue>& client, bool fell_behind) {
   std::lock_guard<std::mutex> lock(mutex_);
-  clients_.erase(std::remove(clients_.begin(), clients_.end(), client), clients_.end());
+  const auto it = std::find(clients_.begin(), clients_.end(), client);
+  if (it == clients_.end()) return;
+  clients_.erase(it);
+  if (fell_behind) ++dropped_;
 }
 
 void EventHub::publish(const std::string& event, const std::function<void()>& update) {

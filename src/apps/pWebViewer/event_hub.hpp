@@ -7,6 +7,8 @@
 //   queue that would hold more than `max_queued` live events marks its client as fallen behind:
 //   the client is dropped (its stream ends; the browser's EventSource reconnects and gets a fresh
 //   snapshot) and counted in dropped().
+// - unsubscribe(client, true): a client whose stream the server ended because it took nothing
+//   for the write timeout; it is counted in dropped() too (unless publish() dropped it first).
 // - subscribe() registers a client with its first events (from `first_events`: the hello and the
 //   retained state, which are not counted against max_queued); nullptr when `max_clients` are
 //   connected already. `first_events` runs under the hub's lock, as publish()'s update does, so
@@ -46,7 +48,7 @@ class EventHub {
       : max_clients_(max_clients), max_queued_(max_queued), first_events_(std::move(first_events)) {}
 
   std::shared_ptr<ClientQueue> subscribe();
-  void unsubscribe(const std::shared_ptr<ClientQueue>& client);
+  void unsubscribe(const std::shared_ptr<ClientQueue>& client, bool fell_behind = false);
   /// Runs `update` and then queues `event` for every client, under the hub's lock.
   void publish(const std::string& event, const std::function<void()>& update = {});
   /// Ends every client's stream (at shut-down).

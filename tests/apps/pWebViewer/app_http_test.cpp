@@ -1,7 +1,6 @@
 // The app class on libmoos's in-process bus with a manual clock, its HTTP side over loopback:
 // the page's files, the event stream (hello, retained state, live mail, clock), the buttons.
 #include <gtest/gtest.h>
-#include <httplib.h>
 #include <netinet/in.h>
 #include <sys/socket.h>
 #include <unistd.h>
@@ -13,7 +12,9 @@
 #include "WebViewer.hpp"
 #include "WebViewer_Info.hpp"
 #include "app_on_bus.hpp"
+#include "bounded_http_server.hpp"
 #include "child_process.hpp"
+#include "raw_http.hpp"
 #include "web_files.hpp"
 
 namespace web_viewer {
@@ -22,23 +23,20 @@ namespace {
 using mission_test::Bus;
 using mission_test::mission_text;
 
-/// Reads /events in a thread of its own until stop() or the stream ends.
+/// Reads /events in a thread of its own until it is destroyed or the stream ends.
 class EventReader {
  public:
-  explicit EventReader(int port) : client_("127.0.0.1", port) {
-    client_.set_read_timeout(5, 0);
+  explicit EventReader(int port) : stream_(port) {
     thread_ = std::thread([this] {
-      client_.Get("/events", [this](const char* data, std::size_t size) {
+      while (!stop_ && stream_.read(0.05)) {
         std::lock_guard<std::mutex> lock(mutex_);
-        text_.append(data, size);
-        return !stop_;
-      });
+        text_ = stream_.text();
+      }
       ended_ = true;
     });
   }
   ~EventReader() {
     stop_ = true;
-    client_.stop();
     thread_.join();
   }
   /// Waits (bounded) until the stream holds `fragment`.
@@ -57,7 +55,7 @@ class EventReader {
   bool ended() const { return ended_; }
 
  private:
-  httplib::Client client_;
+  raw_http::EventStream stream_;
   std::thread thread_;
   mutable std::mutex mutex_;
   std::string text_;
@@ -71,7 +69,13 @@ class ViewerOnBus : public ::testing::Test {
     app.emplace();
     return bus.start(*app, kAppName, mission_text(kAppName, "  http_port = 0\n" + block));
   }
-  httplib::Client client() const { return httplib::Client("127.0.0.1", app->http_port()); }
+  raw_http::Reply get(const std::string& target) const {
+    return raw_http::request(app->http_port(), "GET", target);
+  }
+  raw_http::Reply post(const std::string& target, const std::string& headers = "") const {
+    return raw_http::request(app->http_port(), "POST", target, headers);
+  }
+  std::string token_line() const { return "X-Viewer-Token: " + app->token() + "\r\n"; }
   Bus bus;
   std::optional<WebViewer> app;
 };
@@ -80,21 +84,19 @@ TEST_F(ViewerOnBus, ServesThePageFilesOnLoopback) {
   ASSERT_TRUE(start());
   ASSERT_GT(app->http_port(), 0);
   EXPECT_EQ(app->url(), "http://127.0.0.1:" + std::to_string(app->http_port()) + "/");
-  auto c = client();
   ASSERT_FALSE(web_files().empty());
   for (const WebFile& f : web_files()) {
-    const auto res = c.Get("/" + std::string(f.path));
-    ASSERT_TRUE(res) << f.path;
-    EXPECT_EQ(res->status, 200) << f.path;
-    EXPECT_EQ(res->body, std::string(f.bytes)) << f.path;
-    EXPECT_EQ(res->get_header_value("Content-Type"), std::string(content_type(f.path)));
+    const auto res = get("/" + std::string(f.path));
+    EXPECT_EQ(res.status, 200) << f.path;
+    EXPECT_EQ(res.body, std::string(f.bytes)) << f.path;
+    EXPECT_EQ(res.header("Content-Type"), std::string(content_type(f.path)));
   }
-  const auto index = c.Get("/");
-  ASSERT_TRUE(index);
-  EXPECT_EQ(index->body, std::string(find_web_file("index.html")->bytes));
-  EXPECT_EQ(c.Get("/no-such-file.js")->status, 404);
-  EXPECT_EQ(c.Get("/../CMakeLists.txt")->status, 404);
-  EXPECT_EQ(c.Get("/replay.json")->status, 404);  // live mode
+  const auto index = get("/?token=" + app->token());
+  EXPECT_EQ(index.status, 200);
+  EXPECT_EQ(index.body, std::string(find_web_file("index.html")->bytes));
+  EXPECT_EQ(get("/no-such-file.js").status, 404);
+  EXPECT_EQ(get("/../CMakeLists.txt").status, 404);
+  EXPECT_EQ(get("/replay.json").status, 404);  // live mode
 }
 
 TEST_F(ViewerOnBus, ANewPageGetsHelloThenTheRetainedStateThenLiveMail) {
@@ -134,16 +136,12 @@ TEST_F(ViewerOnBus, AsksForAppCastsAndAnnouncesItself) {
 
 TEST_F(ViewerOnBus, AButtonPostsItsAssignmentsAndTheHelloNamesIt) {
   ASSERT_TRUE(start("  button_one = DEPLOY # DEPLOY_ALL=true # SPEED=2.5\n"));
-  auto c = client();
-  const httplib::Headers token = {{"X-Viewer-Token", app->token()}};
   EXPECT_EQ(app->page_url(), app->url() + "?token=" + app->token());
   EXPECT_EQ(app->token().size(), 32u);
-  const auto pressed = c.Post("/button/1", token, "", "text/plain");
-  ASSERT_TRUE(pressed);
-  EXPECT_EQ(pressed->status, 204);
-  EXPECT_EQ(c.Post("/button/1", "", "text/plain")->status, 403);  // no token: not posted
-  EXPECT_EQ(c.Post("/button/2", token, "", "text/plain")->status, 404);
-  EXPECT_EQ(c.Post("/button/0", token, "", "text/plain")->status, 404);
+  EXPECT_EQ(post("/button/1", token_line()).status, 204);
+  EXPECT_EQ(post("/button/1").status, 403);  // no token: not posted
+  EXPECT_EQ(post("/button/2", token_line()).status, 404);
+  EXPECT_EQ(post("/button/0", token_line()).status, 404);
   app->run_for(1.0);
   EXPECT_EQ(bus.values_of("DEPLOY_ALL", kAppName), std::vector<std::string>{"true"});
   EXPECT_EQ(bus.values_of("SPEED", kAppName), std::vector<std::string>{std::to_string(2.5)});
@@ -154,7 +152,7 @@ TEST_F(ViewerOnBus, AButtonPostsItsAssignmentsAndTheHelloNamesIt) {
 
 TEST_F(ViewerOnBus, WithoutButtonsEveryPressIsNotFound) {
   ASSERT_TRUE(start());
-  EXPECT_EQ(client().Post("/button/1", {{"X-Viewer-Token", app->token()}}, "", "text/plain")->status, 404);
+  EXPECT_EQ(post("/button/1", token_line()).status, 404);
   app->run_for(1.0);
   EXPECT_TRUE(bus.values_of("DEPLOY_ALL", kAppName).empty());
 }
@@ -163,9 +161,7 @@ TEST_F(ViewerOnBus, MoreStreamsThanMaxClientsAreRefused) {
   ASSERT_TRUE(start("  max_clients = 1\n"));
   EventReader first(app->http_port());
   ASSERT_TRUE(first.wait_for("hello"));
-  const auto second = client().Get("/events");
-  ASSERT_TRUE(second);
-  EXPECT_EQ(second->status, 503);
+  EXPECT_EQ(get("/events").status, 503);
 }
 
 /// A browser that asks for the event stream and then never reads (a raw socket).
@@ -212,6 +208,24 @@ TEST_F(ViewerOnBus, ABrowserThatFallsBehindIsDroppedAndTheOthersKeepTheirStream)
   bus.post("VIEW_POINT", "x=1,y=2,label=after");
   app->run_for(0.5);
   EXPECT_TRUE(reader.wait_for("label=after", 20.0));
+}
+
+// A queue too long to fill: the stalled browser is dropped, and counted, when a write to it
+// waits out the write timeout.
+TEST_F(ViewerOnBus, ABrowserThatTakesNothingForTheWriteTimeoutIsDroppedAndCounted) {
+  ASSERT_TRUE(start("  max_queued = 10000000\n"));
+  StalledReader stalled(app->http_port());
+  ASSERT_TRUE(stalled.connected());
+  const double end = test_support::steady_now_s() + 4 * BoundedHttpServer::kWriteTimeout_ms / 1000.0;
+  const std::string big(30000, 'x');
+  int posted = 0;
+  while (app->feed()->hub().dropped() == 0 && test_support::steady_now_s() < end) {
+    for (int i = 0; i < 20; ++i) bus.post("VIEW_POINT", "x=1,y=2,msg=" + big + ",label=p" + std::to_string(posted++));
+    app->run_for(0.5);
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  EXPECT_EQ(app->feed()->hub().dropped(), 1u);
+  EXPECT_EQ(app->feed()->hub().clients(), 0u);
 }
 
 TEST_F(ViewerOnBus, AnAddressInUseEndsStartUp) {

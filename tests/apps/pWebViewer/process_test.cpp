@@ -1,7 +1,6 @@
 // The pWebViewer binary: live against moosdb-lite on an OS-chosen port, --replay and --export of
 // a small .alog, its command-line errors and its information texts (golden/).
 #include <gtest/gtest.h>
-#include <httplib.h>
 
 #include <csignal>
 #include <regex>
@@ -9,9 +8,12 @@
 
 #include "child_process.hpp"
 #include "moosdb_server.hpp"
+#include "raw_http.hpp"
 #include "scratch_files.hpp"
 
 namespace {
+
+namespace raw_http = web_viewer::raw_http;
 
 using test_support::Child;
 using test_support::read_file;
@@ -44,18 +46,6 @@ Served served(const Child& child, double timeout_s = 10.0) {
 
 int served_port(const Child& child) { return served(child).port; }
 
-/// /events until it holds `until` (or the stream ends).
-std::string read_events(int port, const std::string& until) {
-  httplib::Client client("127.0.0.1", port);
-  client.set_read_timeout(10, 0);
-  std::string text;
-  client.Get("/events", [&](const char* data, std::size_t size) {
-    text.append(data, size);
-    return text.find(until) == std::string::npos;
-  });
-  return text;
-}
-
 TEST(WebViewerProcess, LiveAgainstMoosdbLite) {
   test_support::MoosdbServer db(MOOSDB_LITE_PATH);
   ASSERT_TRUE(db.ok());
@@ -70,7 +60,7 @@ TEST(WebViewerProcess, LiveAgainstMoosdbLite) {
   const auto poke = test_support::run_program(
       MOOS_CLI_PATH, {"poke", "--port=" + std::to_string(db.port()), "VIEW_CIRCLE=x=1,y=2,radius=5,label=c1"}, 20.0);
   ASSERT_EQ(poke.exit_code, 0) << poke.err;
-  const std::string events = read_events(port, "label=c1");
+  const std::string events = raw_http::read_events(port, "label=c1");
   EXPECT_NE(events.find(R"("community":"shoreside","time":)"), std::string::npos) << events;
   EXPECT_NE(events.find(R"("var":"VIEW_CIRCLE","val":"x=1,y=2,radius=5,label=c1")"), std::string::npos) << events;
   EXPECT_EQ(viewer->stop(), 0);
@@ -87,20 +77,18 @@ TEST(WebViewerProcess, ReplayServesTheLogsWatchedMail) {
   const int port = url.port;
   ASSERT_GT(port, 0) << with_mission->stderr_text();
   EXPECT_NE(with_mission->stdout_text().find("(replay of "), std::string::npos);
-  httplib::Client client("127.0.0.1", port);
-  const auto replay = client.Get("/replay.json");
-  ASSERT_TRUE(replay);
-  EXPECT_EQ(replay->status, 200);
-  EXPECT_EQ(replay->body.rfind(R"({"hello":{"type":"hello","app":"pWebViewer","community":"replay",)"
+  const auto replay = raw_http::request(port, "GET", "/replay.json");
+  EXPECT_EQ(replay.status, 200);
+  EXPECT_EQ(replay.body.rfind(R"({"hello":{"type":"hello","app":"pWebViewer","community":"replay",)"
                                R"("time":1700000001,"warp":1,"mode":"replay","buttons":[],"trail_length":200,)"
                                R"("unlabelled_ring":2000},"mail":[)", 0), 0u)
-      << replay->body;
-  EXPECT_NE(replay->body.find(R"({"type":"mail","var":"HAZARD_SEARCH_SCORE","val":86.5,"src":"uFldHazardMetric","time":1700000003})"),
+      << replay.body;
+  EXPECT_NE(replay.body.find(R"({"type":"mail","var":"HAZARD_SEARCH_SCORE","val":86.5,"src":"uFldHazardMetric","time":1700000003})"),
             std::string::npos);
-  EXPECT_EQ(replay->body.find("DB_UPTIME"), std::string::npos);
-  EXPECT_EQ(client.Post("/button/1", "", "text/plain")->status, 403);  // no token
-  EXPECT_EQ(client.Post("/button/1", {{"X-Viewer-Token", url.token}}, "", "text/plain")->status, 404);
-  EXPECT_NE(read_events(port, "\"mode\":\"replay\"").find("\"mode\":\"replay\""), std::string::npos);
+  EXPECT_EQ(replay.body.find("DB_UPTIME"), std::string::npos);
+  EXPECT_EQ(raw_http::request(port, "POST", "/button/1").status, 403);  // no token
+  EXPECT_EQ(raw_http::request(port, "POST", "/button/1", "X-Viewer-Token: " + url.token + "\r\n").status, 404);
+  EXPECT_NE(raw_http::read_events(port, "\"mode\":\"replay\"").find("\"mode\":\"replay\""), std::string::npos);
   EXPECT_EQ(with_mission->stop(), 0);
 }
 
