@@ -163,7 +163,8 @@ TEST_F(ClientStress, ClosingWhileOtherThreadsPostFetchAndWaitLeavesNothingRunnin
   constexpr int kRounds = 8;
   for (int round = 0; round < kRounds; ++round) {
     std::atomic<int> callbacks{0};  // declared first: it outlives the client's callbacks
-    TcpClient client(local_client_options(server->port(), "pCloser"));
+    // A new name each round: the server may not have seen the last round's close yet.
+    TcpClient client(local_client_options(server->port(), "pCloser" + std::to_string(round)));
     client.set_on_connect([&] { ++callbacks; });
     client.set_on_mail([&] { ++callbacks; });
     ASSERT_TRUE(client.register_variable("CLOSE_ECHO"));
@@ -181,11 +182,12 @@ TEST_F(ClientStress, ClosingWhileOtherThreadsPostFetchAndWaitLeavesNothingRunnin
         }
       });
     }
-    ASSERT_TRUE(client.wait_until_connected(kConnect_s));
+    const bool connected = client.wait_until_connected(kConnect_s);
     client.wait_until_connected(0.02 * (round % 3));
     client.close();
     done = true;
     for (auto& thread : threads) thread.join();
+    ASSERT_TRUE(connected) << client.last_error();
     EXPECT_EQ(client.state(), ConnectionState::kClosed);
     EXPECT_FALSE(client.notify("CLOSE_ECHO", -1.0)) << "a closed client accepts nothing";
     EXPECT_GE(callbacks.load(), 1);  // the on-connect callback ran

@@ -47,9 +47,12 @@ TEST(OversizedValue, RefusedOnceWhereItEntersAndTheWatchNeverReconnects) {
 
   // A client that sends it anyway (the server takes packets up to 256 MiB) is refused by the
   // server, with a logged reason that names the variable; the client stays connected.
+  // Encoded before the handshake: building it may take longer than the server's ClientTimeout.
+  const std::string packet =
+      encode_packet({make_string_notify("BIG", std::string(kOversized, 'b'), "pRaw", 0)});
   moosdb_lite::test::RawClient raw;
   ASSERT_TRUE(raw.join(server.port(), "pRaw", true));
-  ASSERT_TRUE(raw.send({make_string_notify("BIG", std::string(kOversized, 'b'), "pRaw", 0)}));
+  ASSERT_TRUE(raw.send_bytes(packet)) << server.stderr_text();
   EXPECT_TRUE(server.wait_for_log("NOTIFY BIG refused: its", kLog_s)) << server.stderr_text();
 
   // The watch gets nothing, and says so at its timeout; it never lost its connection.
