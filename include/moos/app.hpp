@@ -221,6 +221,9 @@ class MoosApp {
   void handle_framework_mail(std::vector<Message>& mail);
   /// A standing run warning with the count of mail the comms dropped unread.
   void report_dropped_mail();
+  /// A standing run warning with the count of postings the comms refused (full outbox, too
+  /// large), naming the latest's variable.
+  void report_dropped_postings();
   bool appcast_requested() const;
   void post_status_if_due();
   void post_report(double iterate_start_moos_s);
@@ -273,6 +276,8 @@ class MoosApp {
   std::uint64_t seen_connections_ = 0;
   std::uint64_t reported_mail_dropped_ = 0;  ///< comms_->mail_dropped() when last reported
   std::string dropped_mail_warning_;          ///< the standing warning about it, if any
+  std::uint64_t reported_postings_dropped_ = 0;  ///< comms_->postings_dropped() when last reported
+  std::string dropped_postings_warning_;         ///< the standing warning about it, if any
   std::optional<double> last_status_moos_s_;
   std::optional<double> last_iterate_start_moos_s_;
   std::optional<double> last_term_report_moos_s_;

@@ -85,10 +85,11 @@ class BusClient final : public Comms {
   std::vector<Message> fetch() override;
 
   /// As if the TCP connection dropped: the bus forgets this client's subscriptions, filters and
-  /// undelivered mail; posts fail until simulate_reconnect().
+  /// undelivered mail; postings wait in the bounded outbox until simulate_reconnect() (comms.hpp).
   void simulate_disconnect();
-  /// A new handshake: re-sends every remembered subscription, counts a connection and runs the
-  /// on-connect callback. False if the name was taken meanwhile.
+  /// A new handshake: re-sends every remembered subscription, then the postings kept while
+  /// disconnected, counts a connection and runs the on-connect callback. False if the name was
+  /// taken meanwhile.
   bool simulate_reconnect();
 
  protected:

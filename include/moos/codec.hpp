@@ -14,6 +14,7 @@
 //   allocating anything.
 
 #include <cstddef>
+#include <climits>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -35,12 +36,32 @@ bool banner_matches(std::string_view received);
 /// Packet header: int32 total length (including the header), int32 message count, one
 /// compression byte that is always 0 (protocol.md 3.1).
 inline constexpr std::size_t kPacketHeaderSize = 9;
-/// Suggested default limit for one packet (protocol.md 3.4).
+/// The wire's size limits, one set for every sender and receiver here (docs/moos.md, "Limits"):
+/// - kDefaultMaxPacketBytes: the largest packet a client accepts (protocol.md 3.4), so the
+///   largest packet a client sends and the server sends to a client;
+/// - kMaxMessageBytes: the largest message, encoded, that a client posts and the server stores
+///   and relays: one that fits in a packet a client accepts behind the NULL that leads a
+///   synchronous reply. A larger one is refused where it enters (the posting client, or the
+///   server for other clients), naming the variable;
+/// - kServerMaxPacketBytes: the largest packet moosdb-lite accepts. libMOOS sends its whole
+///   backlog (up to 2,048 messages, OUTBOX_PENDING_LIMIT) as one packet; core-moos's app_test
+///   posts 100 kB messages, so its packets reach ~205 MB: 2,048 messages of 128 KiB fit.
+/// - Every length field is 32 bits: all three stay below INT32_MAX, and the encoder refuses
+///   (std::length_error) a size it cannot write rather than narrowing it.
 inline constexpr std::size_t kDefaultMaxPacketBytes = 128u * 1024u * 1024u;
+inline constexpr std::size_t kMaxMessageBytes =
+    kDefaultMaxPacketBytes - kPacketHeaderSize - Message::kFixedEncodedSize;
+inline constexpr std::size_t kServerMaxPacketBytes = 256u * 1024u * 1024u;
+static_assert(kServerMaxPacketBytes >= kDefaultMaxPacketBytes &&
+                  kServerMaxPacketBytes <= std::size_t{INT32_MAX},
+              "the server takes every packet a client may send, and lengths fit 32 bits");
 
+/// Appends one encoded message. Throws std::length_error if a length does not fit the wire's
+/// 32 bits (callers bound messages by kMaxMessageBytes first).
 void append_message(std::string& out, const Message& msg);
 std::string encode_message(const Message& msg);
-/// One packet holding the messages in order. Never call with an empty list for a peer that
+/// One packet holding the messages in order (std::length_error if it would exceed INT32_MAX
+/// bytes; callers bound packets by their peer's limit first). Never call with an empty list for a peer that
 /// expects mail (protocol.md 3.4); the function itself allows it for tests.
 std::string encode_packet(const std::vector<Message>& messages);
 /// One packet holding the messages [first, last) in order (a slice of a list, uncopied).

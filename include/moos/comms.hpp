@@ -11,7 +11,15 @@
 //   pattern).
 // - unregister_variable sends UNREGISTER only for a variable registered before (libMOOS, 4.1);
 //   unregister_wildcard always sends (if connected) and forgets the pattern pair.
-// - Posting (notify/post) while disconnected returns false and sends nothing (protocol.md 1.9).
+// - Delivery: a posting (notify/post) that returns true is sent once, in posting order, unless
+//   the connection drops while it is being written (then it may be lost, as in libMOOS).
+//   Postings made while disconnected (or before the first connection) wait in the outbox and
+//   leave after the next handshake, behind the registration replay. The outbox is bounded
+//   (kDefaultMaxOutboxMessages, kDefaultMaxOutboxBytes): a posting beyond the bound, or one
+//   larger than kMaxMessageBytes encoded (codec.hpp: no client could receive it), returns
+//   false, is counted (postings_dropped()) and named in last_post_error(). A closed or poisoned
+//   client refuses postings (false, not counted). Registrations are never queued: the
+//   remembered ones are replayed at each connection (below).
 //   Posted NOTIFYs carry this client's name as source and, unless given, the MOOS time now.
 // - fetch() returns all mail received since the last fetch, in arrival order; TIMING and NULL
 //   messages never reach it.
@@ -35,6 +43,31 @@
 #include "moos/wildcard.hpp"
 
 namespace moos {
+
+/// The outbox a client keeps while it cannot send (disconnected, or a slow server): far above
+/// what an app posts between a drop and its reconnect one MOOS second later, and room for two
+/// of the largest messages.
+inline constexpr std::size_t kDefaultMaxOutboxMessages = 65536;
+inline constexpr std::size_t kDefaultMaxOutboxBytes = std::size_t{256} * 1024 * 1024;
+
+/// An outbox's size, counted as the messages' encoded bytes, and its bounds.
+struct OutboxBound {
+  std::size_t max_messages = kDefaultMaxOutboxMessages;
+  std::size_t max_bytes = kDefaultMaxOutboxBytes;
+  std::size_t messages = 0;
+  std::size_t bytes = 0;
+  /// Why a message of `size` encoded bytes does not fit now ("" if it does).
+  std::string refusal(std::size_t size) const;
+  void add(std::size_t size) {
+    ++messages;
+    bytes += size;
+  }
+  void remove(std::size_t size) {
+    --messages;
+    bytes -= size;
+  }
+  void clear() { messages = bytes = 0; }
+};
 
 class Comms {
  public:
@@ -80,7 +113,10 @@ class Comms {
   /// (libMOOS, protocol.md 2.2).
   bool post(Message notify);
 
-  /// All mail received since the last call, oldest first.
+  /// All mail decoded since the last call, oldest first. The promise: every message whose
+  /// packet was decoded before the call is returned by it (TcpClient: after a promise it also
+  /// reads what the socket holds, unless the comms thread is reading at that moment; what that
+  /// read adds is announced by the on-mail callback and returned by the next fetch).
   virtual std::vector<Message> fetch() = 0;
   /// Postings between hold_sends() and release_sends() may leave together: an implementation
   /// may wait for the release before it starts sending (TcpClient: one packet per app cycle,
@@ -94,6 +130,11 @@ class Comms {
   virtual void expect_fetch_within(double /*real_s*/) {}
   /// Mail dropped unread since the start because the inbox was full (never decreases).
   std::uint64_t mail_dropped() const { return mail_dropped_.load(); }
+  /// Postings refused since the start because the outbox was full or the message too large
+  /// (never decreases).
+  std::uint64_t postings_dropped() const { return postings_dropped_.load(); }
+  /// Why the last counted posting was refused, naming its variable ("" if none was).
+  std::string last_post_error() const;
 
   /// Called after every successful (re)connect, after the registrations were re-sent.
   void set_on_connect(std::function<void()> callback);
@@ -110,8 +151,10 @@ class Comms {
  protected:
   explicit Comms(std::string name) : name_(std::move(name)) {}
 
-  /// Hands one message to the server now. Returns false (and sends nothing) when not
-  /// connected. Called with no lock of this base class held.
+  /// Hands one message to the server: now when connected; a NOTIFY also while disconnected,
+  /// queued for the next connection (the delivery contract above). False (nothing sent) when it
+  /// was not taken: a registration while disconnected, a closed client, a full outbox (then
+  /// count_posting_dropped() was called). Called with no lock of this base class held.
   virtual bool transmit(Message msg) = 0;
   /// REGISTER and WILDCARD_REGISTER messages for every remembered subscription, in the order the
   /// subscriptions were first made (the reconnect replay).
@@ -120,6 +163,8 @@ class Comms {
   void fire_on_mail();
   /// Counts mail the implementation dropped unread (a bounded inbox overflowed).
   void count_mail_dropped(std::uint64_t messages) { mail_dropped_ += messages; }
+  /// Counts a posting refused for `why` (it names the variable), for postings_dropped().
+  void count_posting_dropped(std::string why);
 
  private:
   Message control_message(char type, char data_type, const std::string& key) const;
@@ -140,6 +185,8 @@ class Comms {
   std::function<void()> on_connect_;
   std::function<void()> on_mail_;
   std::atomic<std::uint64_t> mail_dropped_{0};
+  std::atomic<std::uint64_t> postings_dropped_{0};
+  std::string last_post_error_;  ///< under book_mutex_
 };
 
 }  // namespace moos

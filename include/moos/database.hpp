@@ -11,7 +11,10 @@
 // - Every call appends the packets it wants sent to an output list, in the exact order they
 //   must leave; take_output() hands them over. Order per client is preserved (protocol.md 5.6).
 // - Synchronous clients get exactly one packet per packet they send, beginning with a NULL
-//   that carries the server time, and nothing else ever (protocol.md 5.6 MUST). Asynchronous
+//   that carries the server time, and nothing else ever (protocol.md 5.6 MUST); a reply holds
+//   at most max_reply_bytes, the rest of their mail waits for the next one.
+// - A NOTIFY larger than kMaxMessageBytes encoded (codec.hpp) is refused with a logged reason
+//   naming the variable: no client could receive it. Asynchronous
 //   clients never get a NULL or an empty packet; a TIMING that opened their packet is echoed
 //   as the first message of the reply; and every mail queued for them (live updates, DB
 //   variables, snapshots) is sent at the end of the call that queued it (protocol.md 5.6 SHOULD).
@@ -48,6 +51,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "moos/codec.hpp"
 #include "moos/message.hpp"
 #include "moos/wildcard.hpp"
 
@@ -80,6 +84,9 @@ struct DatabaseConfig {
   std::string community = kDefaultCommunity;
   std::string hostname;  ///< sent in WELCOME as `hostname=<hostname>` (protocol.md 1.6)
   std::size_t max_pending_bytes = kDefaultMaxPendingBytes;
+  /// The largest reply a synchronous client gets (the packet a client accepts, codec.hpp);
+  /// mail beyond it waits for the next reply.
+  std::size_t max_reply_bytes = kDefaultMaxPacketBytes;
   std::size_t max_stored_bytes = kDefaultMaxStoredBytes;
   bool db_variables = true;  ///< publish the DB_* variables of protocol.md 5.7
 };
@@ -242,6 +249,9 @@ class Database {
   Message snapshot(const Variable& var) const;
   void queue_mail(ClientId id, Message msg);
   void flush_async_mail();
+  /// Moves the client's pending mail behind `reply`: all of it for an asynchronous client,
+  /// what fits in config_.max_reply_bytes for a synchronous one.
+  void take_pending(Client& client, std::vector<Message>& reply);
   void send_packet(ClientId to, std::vector<Message> messages);
   Message null_reply(double now) const;
 

@@ -12,7 +12,8 @@
 //   once per MOOS second (1/warp real seconds, protocol.md 1.9).
 // - After each handshake the client (1) adopts the WELCOME skew per SkewPolicy (1.8), (2) queues
 //   every remembered subscription, (3) runs the on-connect callback, then normal traffic starts.
-// - Sending: whatever was posted is sent as one packet as soon as possible, after
+// - Sending: whatever was posted is sent as one packet (several, when it exceeds
+//   kDefaultMaxPacketBytes, codec.hpp) as soon as possible, after
 //   max(server delay from the last TIMING echo, warp x tw_delay_factor ms) since the previous
 //   send (4.3 step 4). A TIMING message (own local time, protocol.md 2.6) leads the next packet
 //   when kTimingInterval_real_s has passed since the last one, and is sent alone while idle, so an
@@ -31,8 +32,9 @@
 //   thread still does everything when the app does not cycle, and is the only one that drops a
 //   connection: a failure the app's thread meets is handed to it. Mail left unread when the
 //   app stops makes the close a reset, which the server may log as one.
-// - Deviations from libMOOS, deliberate: the inbox is kept across a reconnect (libMOOS clears it,
-//   losing mail that had arrived); the inbox is bounded by max_inbox_messages and
+// - Deviations from libMOOS, deliberate: postings wait in the bounded outbox while disconnected
+//   and leave after the next handshake (comms.hpp; libMOOS refuses them); the inbox is kept
+//   across a reconnect (libMOOS clears it, losing mail that had arrived); the inbox is bounded by max_inbox_messages and
 //   max_inbox_bytes and, when either is reached, the OLDEST unread mail is dropped and counted
 //   (mail_dropped()) so the app still sees the newest state (libMOOS discards the whole inbox
 //   beyond 2048 unread messages); the handshake has a timeout (libMOOS waits forever); a connection closed
@@ -88,6 +90,8 @@ struct TcpClientOptions {
   std::size_t max_packet_bytes = kDefaultMaxPacketBytes;
   std::size_t max_inbox_messages = kDefaultMaxInboxMessages;  ///< >= 1
   std::size_t max_inbox_bytes = kDefaultMaxInboxBytes;        ///< >= 1; approximate message sizes
+  std::size_t max_outbox_messages = kDefaultMaxOutboxMessages;  ///< >= 1 (comms.hpp)
+  std::size_t max_outbox_bytes = kDefaultMaxOutboxBytes;        ///< >= 1; encoded sizes
   /// libMOOS --moos_tw_delay_factor: ms of pause after each send per unit of warp above 1.
   double tw_delay_factor_ms = 0.2;
 };
@@ -171,6 +175,8 @@ class TcpClient final : public Comms {
   /// True while the input is left to the promised fetch (io_mutex_ held).
   bool app_reads(double now) const;
   void drop_connection(const std::string& why);
+  /// Drops the registrations from the outbox (mutex_ held): the next handshake replays them.
+  void forget_registrations_in_outbox();
   /// A socket failure: dropped at once on the comms thread; from the app's thread handed to the
   /// comms thread (it owns the socket's life), and no more I/O happens here until then.
   void fail_io(const std::string& why);
@@ -236,6 +242,7 @@ class TcpClient final : public Comms {
   mutable std::condition_variable changed_;
   ConnectionState state_ = ConnectionState::kNotStarted;
   std::vector<Message> outbox_;
+  OutboxBound outbox_bound_;
   bool holding_sends_ = false;  ///< hold_sends(): the outbox waits for release_sends()
   std::vector<Message> inbox_;
   std::size_t inbox_bytes_ = 0;  ///< approximate, see inbox_cost()

@@ -335,6 +335,7 @@ void MoosApp::cycle() {
 
   std::vector<Message> mail = comms_->fetch();
   report_dropped_mail();
+  report_dropped_postings();
   if (!mail.empty()) {
     const auto by_time = [](const Message& a, const Message& b) { return a.time < b.time; };
     // Mail mostly arrives in time order: checking is cheaper than a merge sort's buffer.
@@ -373,6 +374,17 @@ void MoosApp::report_dropped_mail() {
   dropped_mail_warning_ = "Mail arrived faster than the app read it: " + std::to_string(dropped) +
                           " oldest unread messages dropped in all (inbox bounds)";
   report_run_warning(dropped_mail_warning_);
+}
+
+void MoosApp::report_dropped_postings() {
+  const std::uint64_t dropped = comms_->postings_dropped();
+  if (dropped == reported_postings_dropped_) return;
+  reported_postings_dropped_ = dropped;
+  // One standing warning: the count and the latest reason, which names the variable.
+  if (!dropped_postings_warning_.empty()) retract_run_warning(dropped_postings_warning_);
+  dropped_postings_warning_ = std::to_string(dropped) + " postings not sent in all; the latest: " +
+                              comms_->last_post_error();
+  report_run_warning(dropped_postings_warning_);
 }
 
 void MoosApp::handle_framework_mail(std::vector<Message>& mail) {

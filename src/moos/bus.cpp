@@ -9,8 +9,11 @@
 #include "moos/bus.hpp"
 
 #include <algorithm>
+#include <functional>
 #include <map>
 #include <mutex>
+
+#include "base/text.hpp"
 
 namespace moos {
 
@@ -21,6 +24,8 @@ struct BusCore {
     bool connected = true;
     std::uint64_t connections = 1;
     std::vector<Message> inbox;
+    std::vector<Message> outbox;  // postings made while disconnected (comms.hpp)
+    OutboxBound outbox_bound;
   };
 
   BusCore(Clock& c, InProcessBus::Options o)
@@ -72,6 +77,21 @@ struct BusCore {
     db.disconnect(state.id, now());
     state.connected = false;
     state.inbox.clear();
+  }
+
+  /// Hands `messages` to the Database as `state`'s packet and routes the output; the on-mail
+  /// callbacks of the clients that got mail are appended to `callbacks` (called after the lock).
+  void deliver(ClientState& state, std::vector<Message> messages,
+               std::vector<std::function<void()>>& callbacks) {
+    std::vector<std::string> woken;
+    db.process_packet(state.id, std::move(messages), now());
+    route_output(woken);
+    // Copied under the bus lock (lock order: bus, then a client's book), called after it.
+    for (const auto& client : woken) {
+      auto w = clients.find(client);
+      if (w == clients.end() || !w->second.handle) continue;
+      if (auto cb = w->second.handle->on_mail_callback()) callbacks.push_back(std::move(cb));
+    }
   }
 
   /// Moves the Database's output into the inboxes (only NOTIFYs are mail; WELCOME is protocol)
@@ -207,20 +227,29 @@ std::vector<Message> BusClient::fetch() {
 }
 
 bool BusClient::transmit(Message msg) {
-  std::vector<std::string> woken;
   std::vector<std::function<void()>> callbacks;
+  std::string refusal;
   {
     std::lock_guard<std::mutex> lock(core_->mutex);
     auto it = core_->clients.find(name());
-    if (it == core_->clients.end() || !it->second.connected) return false;
-    core_->db.process_packet(it->second.id, {std::move(msg)}, core_->now());
-    core_->route_output(woken);
-    // Copied under the bus lock (lock order: bus, then a client's book), called after it.
-    for (const auto& client : woken) {
-      auto w = core_->clients.find(client);
-      if (w == core_->clients.end() || !w->second.handle) continue;
-      if (auto cb = w->second.handle->on_mail_callback()) callbacks.push_back(std::move(cb));
+    if (it == core_->clients.end()) return false;
+    BusCore::ClientState& state = it->second;
+    if (state.connected) {
+      core_->deliver(state, {std::move(msg)}, callbacks);
+    } else {
+      // Kept for the reconnect, as TcpClient keeps it; registrations are replayed instead.
+      if (msg.type != msg_type::kNotify) return false;
+      const std::size_t size = msg.encoded_size();
+      refusal = state.outbox_bound.refusal(size);
+      if (refusal.empty()) {
+        state.outbox_bound.add(size);
+        state.outbox.push_back(std::move(msg));
+      }
     }
+  }
+  if (!refusal.empty()) {
+    count_posting_dropped("NOTIFY " + base::excerpt(msg.key) + " refused: " + refusal);
+    return false;
   }
   for (auto& cb : callbacks) cb();
   return true;
@@ -236,18 +265,27 @@ void BusClient::simulate_disconnect() {
 }
 
 bool BusClient::simulate_reconnect() {
+  // Taken before the bus lock (lock order: bus, then a client's book).
+  std::vector<Message> packet = replay_messages();
+  std::vector<std::function<void()>> callbacks;
   {
     std::lock_guard<std::mutex> lock(core_->mutex);
     auto it = core_->clients.find(name());
     if (it == core_->clients.end()) return false;
-    if (it->second.connected) return true;
-    if (!core_->open_connection(name(), it->second)) return false;
-    it->second.connected = true;
-    ++it->second.connections;
+    BusCore::ClientState& state = it->second;
+    if (state.connected) return true;
+    if (!core_->open_connection(name(), state)) return false;
+    state.connected = true;
+    ++state.connections;
     std::vector<std::string> woken;
     core_->route_output(woken);
+    // The replay, then the postings kept while disconnected, in order, before any new posting.
+    for (auto& m : state.outbox) packet.push_back(std::move(m));
+    state.outbox.clear();
+    state.outbox_bound.clear();
+    core_->deliver(state, std::move(packet), callbacks);
   }
-  for (auto& m : replay_messages()) transmit(std::move(m));
+  for (auto& cb : callbacks) cb();
   fire_on_connect();
   return true;
 }

@@ -5,6 +5,8 @@
 #include "moos/codec.hpp"
 
 #include <cstring>
+#include <limits>
+#include <stdexcept>
 
 #include "base/text.hpp"
 
@@ -20,6 +22,14 @@ void put_int32(std::string& out, std::int32_t value) {
   for (int shift = 0; shift < 32; shift += 8) out.push_back(static_cast<char>((u >> shift) & 0xffu));
 }
 
+/// A size written as a 32-bit length field: checked before it is narrowed.
+void put_length(std::string& out, std::size_t size, const char* what) {
+  if (size > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
+    throw std::length_error(std::string(what) + " of " + std::to_string(size) +
+                            " bytes does not fit a 32-bit length field");
+  put_int32(out, static_cast<std::int32_t>(size));
+}
+
 void put_double(std::string& out, double value) {
   std::uint64_t bits = 0;
   std::memcpy(&bits, &value, sizeof bits);
@@ -27,7 +37,7 @@ void put_double(std::string& out, double value) {
 }
 
 void put_string(std::string& out, const std::string& s) {
-  put_int32(out, static_cast<std::int32_t>(s.size()));
+  put_length(out, s.size(), "a string");
   out.append(s);
 }
 
@@ -189,8 +199,8 @@ bool banner_matches(std::string_view received) {
 
 void append_message(std::string& out, const Message& msg) {
   const std::size_t size = msg.encoded_size();
+  put_length(out, size, "a message");
   out.reserve(out.size() + size);
-  put_int32(out, static_cast<std::int32_t>(size));
   put_int32(out, msg.id);
   out.push_back(msg.type);
   out.push_back(msg.data_type);
@@ -218,9 +228,9 @@ std::string encode_packet(const Message* first, const Message* last) {
   std::size_t total = kPacketHeaderSize;
   for (const Message* m = first; m != last; ++m) total += m->encoded_size();
   std::string out;
+  put_length(out, total, "a packet");  // before the allocation it would size
   out.reserve(total);
-  put_int32(out, static_cast<std::int32_t>(total));
-  put_int32(out, static_cast<std::int32_t>(last - first));
+  put_length(out, static_cast<std::size_t>(last - first), "a message count");
   out.push_back('\0');  // compression flag: v10 has no compression (protocol.md 3.2)
   for (const Message* m = first; m != last; ++m) append_message(out, *m);
   return out;

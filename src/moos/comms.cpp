@@ -6,6 +6,8 @@
 
 #include <algorithm>
 
+#include "base/text.hpp"
+#include "moos/codec.hpp"
 #include "moos/wildcard.hpp"
 
 namespace moos {
@@ -113,8 +115,33 @@ bool Comms::unregister_wildcard(const std::string& var_pattern, const std::strin
   return sent || known;
 }
 
+std::string OutboxBound::refusal(std::size_t size) const {
+  if (messages + 1 > max_messages)
+    return "the outbox holds its " + std::to_string(max_messages) + " messages";
+  if (bytes + size > max_bytes)
+    return "the outbox would hold more than its " + std::to_string(max_bytes) + " bytes";
+  return {};
+}
+
+void Comms::count_posting_dropped(std::string why) {
+  ++postings_dropped_;
+  std::lock_guard<std::mutex> lock(book_mutex_);
+  last_post_error_ = std::move(why);
+}
+
+std::string Comms::last_post_error() const {
+  std::lock_guard<std::mutex> lock(book_mutex_);
+  return last_post_error_;
+}
+
 bool Comms::post_and_record(Message msg) {
   if (msg.key.empty()) return false;
+  if (const std::size_t size = msg.encoded_size(); size > kMaxMessageBytes) {
+    count_posting_dropped("NOTIFY " + base::excerpt(msg.key) + " refused: its " +
+                          std::to_string(size) + " bytes exceed the " +
+                          std::to_string(kMaxMessageBytes) + " a MOOS client accepts");
+    return false;
+  }
   // An app posts the same few names every cycle: the name is copied only the first time.
   std::string new_key;
   {

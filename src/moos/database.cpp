@@ -150,9 +150,7 @@ void Database::process_packet(ClientId id, std::vector<Message> packet, double n
   } else if (echo) {
     reply.push_back(std::move(*echo));
   }
-  for (auto& mail : client.pending) reply.push_back(std::move(mail));
-  client.pending.clear();
-  client.pending_bytes = 0;
+  take_pending(client, reply);
   if (!reply.empty()) send_packet(id, std::move(reply));
   // Step 7, for every asynchronous client and on every packet (protocol.md 5.6 SHOULD).
   flush_async_mail();

@@ -3,6 +3,7 @@
 
 #include <utility>
 
+#include "moos/codec.hpp"
 #include "moos/database.hpp"
 
 namespace moos {
@@ -47,6 +48,29 @@ void Database::queue_mail(ClientId id, Message msg) {
     client.queued_for_flush = true;
     async_with_mail_.push_back(id);
   }
+}
+
+void Database::take_pending(Client& client, std::vector<Message>& reply) {
+  if (client.async) {  // the connection layer cuts it into packets (moosdb-lite's hub.hpp)
+    for (auto& mail : client.pending) reply.push_back(std::move(mail));
+    client.pending.clear();
+    client.pending_bytes = 0;
+    return;
+  }
+  // A synchronous client gets one packet per packet it sends (5.6): what would not fit in one
+  // it accepts waits for its next reply, in order.
+  std::size_t bytes = kPacketHeaderSize;
+  for (const Message& m : reply) bytes += m.encoded_size();
+  std::size_t taken = 0;
+  for (; taken < client.pending.size(); ++taken) {
+    const std::size_t size = client.pending[taken].encoded_size();
+    if (bytes + size > config_.max_reply_bytes && taken > 0) break;  // one always goes
+    bytes += size;
+    client.pending_bytes -= size;
+    reply.push_back(std::move(client.pending[taken]));
+  }
+  client.pending.erase(client.pending.begin(),
+                       client.pending.begin() + static_cast<std::ptrdiff_t>(taken));
 }
 
 void Database::flush_async_mail() {

@@ -41,6 +41,10 @@ void Database::handle_notify(ClientId id, Message msg, double now) {
   Client& client = clients_.at(id);
   if (msg.source.empty()) msg.source = client.name;
   if (msg.community.empty()) msg.community = config_.community;
+  if (msg.encoded_size() > kMaxMessageBytes)  // no client could take it (codec.hpp)
+    return refuse(id, "NOTIFY " + base::excerpt(msg.key) + " refused: its " +
+                          std::to_string(msg.encoded_size()) + " bytes exceed the " +
+                          std::to_string(kMaxMessageBytes) + " a client accepts in a message");
   if (const std::string why = store_refusal(msg, true); !why.empty())
     return refuse(id, "NOTIFY " + base::excerpt(msg.key) + " refused: " + why);
   const char type = msg.data_type;

@@ -114,7 +114,10 @@ TcpClient::TcpClient(TcpClientOptions options)
     : Comms(options.name),
       options_(std::move(options)),
       clock_(options_.clock ? *options_.clock : system_clock()),
-      reader_(options_.max_packet_bytes) {}
+      reader_(options_.max_packet_bytes) {
+  outbox_bound_.max_messages = options_.max_outbox_messages;
+  outbox_bound_.max_bytes = options_.max_outbox_bytes;
+}
 
 TcpClient::~TcpClient() { close(); }
 
@@ -126,6 +129,8 @@ bool TcpClient::start() {
     problem = "time warp " + base::format_g(options_.time_warp) + " is outside (0, 400]";
   else if (options_.max_inbox_messages < 1 || options_.max_inbox_bytes < 1)
     problem = "the inbox bounds must be at least 1";
+  else if (options_.max_outbox_messages < 1 || options_.max_outbox_bytes < 1)
+    problem = "the outbox bounds must be at least 1";
   {
     std::lock_guard<std::mutex> lock(mutex_);
     if (problem.empty() && state_ != ConnectionState::kNotStarted) problem = "already started";
@@ -409,9 +414,13 @@ bool TcpClient::handshake() {
     server_hostname_ = db_host;
     state_ = ConnectionState::kConnected;
     ++connections_;
-    // The server forgot our subscriptions: they go first (protocol.md 1.9, 4.6).
+    // The server forgot our subscriptions: they go first (protocol.md 1.9, 4.6), then the
+    // postings kept while disconnected.
     std::vector<Message> replay = replay_messages();
-    for (auto& m : replay) m.id = next_id_++;
+    for (auto& m : replay) {
+      m.id = next_id_++;
+      outbox_bound_.add(m.encoded_size());
+    }
     outbox_.insert(outbox_.begin(), replay.begin(), replay.end());
     changed_.notify_all();
   }
@@ -425,7 +434,7 @@ void TcpClient::drop_connection(const std::string& why) {
     // State first, socket second: whoever sees the close also sees the reason.
     std::lock_guard<std::mutex> lock(mutex_);
     if (!why.empty()) last_error_ = why;
-    outbox_.clear();  // posts are only accepted while connected; these would go nowhere
+    forget_registrations_in_outbox();  // replayed at the next connection; postings stay
     packets_in_flight_ = 0;
     if (state_ == ConnectionState::kConnected) state_ = ConnectionState::kConnecting;
     changed_.notify_all();
@@ -435,6 +444,13 @@ void TcpClient::drop_connection(const std::string& why) {
   write_buffer_.clear();
   write_offset_ = 0;
   reader_ = PacketReader(options_.max_packet_bytes);
+}
+
+void TcpClient::forget_registrations_in_outbox() {
+  const auto registration = [](const Message& m) { return m.type != msg_type::kNotify; };
+  for (const Message& m : outbox_)
+    if (registration(m)) outbox_bound_.remove(m.encoded_size());
+  outbox_.erase(std::remove_if(outbox_.begin(), outbox_.end(), registration), outbox_.end());
 }
 
 void TcpClient::fail_io(const std::string& why) {

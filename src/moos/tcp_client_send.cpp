@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cerrno>
 
+#include "base/text.hpp"
 #include "moos/tcp_client.hpp"
 
 namespace moos {
@@ -17,12 +18,25 @@ constexpr double kMsPerSecond = 1000.0;
 
 bool TcpClient::transmit(Message msg) {
   bool first_of_batch = false;
+  std::string refusal;
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    if (state_ != ConnectionState::kConnected) return false;
-    msg.id = next_id_++;  // every posted message consumes an id (protocol.md 2.5)
-    first_of_batch = outbox_.empty() && !holding_sends_;
-    outbox_.push_back(std::move(msg));
+    if (state_ == ConnectionState::kClosed || state_ == ConnectionState::kPoisoned) return false;
+    const bool connected = state_ == ConnectionState::kConnected;
+    // Registrations wait for no connection: the replay sends the remembered ones (comms.hpp).
+    if (!connected && msg.type != msg_type::kNotify) return false;
+    const std::size_t size = msg.encoded_size();
+    refusal = outbox_bound_.refusal(size);
+    if (refusal.empty()) {
+      msg.id = next_id_++;  // every posted message consumes an id (protocol.md 2.5)
+      first_of_batch = connected && outbox_.empty() && !holding_sends_;
+      outbox_bound_.add(size);
+      outbox_.push_back(std::move(msg));
+    }
+  }
+  if (!refusal.empty()) {
+    count_posting_dropped("NOTIFY " + base::excerpt(msg.key) + " refused: " + refusal);
+    return false;
   }
   // Only the first message of a batch wakes the comms thread: it takes the whole outbox, and it
   // never sleeps past its next send slot while the outbox holds anything (serve()). While sends
@@ -80,10 +94,18 @@ bool TcpClient::start_packet_if_due(double now) {
     std::lock_guard<std::mutex> lock(mutex_);
     // Held messages wait for the release, unless a TIMING goes out anyway.
     if (!timing_due && (outbox_.empty() || holding_sends_)) return false;
-    batch.reserve(outbox_.size() + 1);
     if (timing_due) batch.push_back(timing_message());  // TIMING first (protocol.md 4.3 step 2)
-    for (auto& m : outbox_) batch.push_back(std::move(m));
-    outbox_.clear();
+    // As many as fit in a packet the server surely accepts (codec.hpp); the rest go next.
+    std::size_t bytes = kPacketHeaderSize + (timing_due ? batch.front().encoded_size() : 0);
+    std::size_t taken = 0;
+    for (; taken < outbox_.size(); ++taken) {
+      const std::size_t size = outbox_[taken].encoded_size();
+      if (bytes + size > kDefaultMaxPacketBytes && !batch.empty()) break;
+      bytes += size;
+      outbox_bound_.remove(size);
+      batch.push_back(std::move(outbox_[taken]));
+    }
+    outbox_.erase(outbox_.begin(), outbox_.begin() + static_cast<std::ptrdiff_t>(taken));
     ++packets_sent_;
     ++packets_in_flight_;
   }

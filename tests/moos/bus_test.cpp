@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "moos/bus.hpp"
+#include "moos/codec.hpp"
 #include "moos/database.hpp"
 #include "moos/wildcard.hpp"
 #include "wire_messages.hpp"
@@ -220,11 +221,47 @@ TEST_F(BusTest, StatusListsComeFromTheBook_7_1) {
   EXPECT_EQ(a->published_names(), (std::set<std::string>{"OUT_A", "OUT_B"}));
 }
 
-TEST_F(BusTest, PostingWhileDisconnectedFails_1_9) {
+TEST_F(BusTest, PostingsWhileDisconnectedLeaveInOrderAfterTheReplay_1_9) {
   b->register_variable("X");
+  a->register_variable("X");
   a->simulate_disconnect();
   EXPECT_FALSE(a->is_connected());
-  EXPECT_FALSE(a->notify("X", 1.0));
+  EXPECT_TRUE(a->notify("X", 1.0));  // kept in the outbox (comms.hpp)
+  EXPECT_TRUE(a->notify("X", 2.0));
+  EXPECT_TRUE(b->fetch().empty());
+  EXPECT_EQ(a->published_names(), std::set<std::string>{"X"});
+  EXPECT_TRUE(a->simulate_reconnect());
+  const auto mail = b->fetch();
+  ASSERT_EQ(mail.size(), 2u);
+  EXPECT_EQ(mail[0].dval, 1.0);
+  EXPECT_EQ(mail[1].dval, 2.0);
+  // a's own registration was replayed first, so it sees its postings too.
+  EXPECT_EQ(a->fetch().size(), 2u);
+  EXPECT_EQ(a->postings_dropped(), 0u);
+}
+
+TEST_F(BusTest, AFullOutboxRefusesAndCountsPostingsNamingTheVariable) {
+  b->register_variable("X");
+  a->simulate_disconnect();
+  for (std::size_t i = 0; i < kDefaultMaxOutboxMessages; ++i)
+    ASSERT_TRUE(a->notify("X", static_cast<double>(i)));
+  EXPECT_FALSE(a->notify("X", -1.0));
+  EXPECT_EQ(a->postings_dropped(), 1u);
+  EXPECT_NE(a->last_post_error().find("NOTIFY X refused: the outbox holds its"), std::string::npos)
+      << a->last_post_error();
+  EXPECT_TRUE(a->simulate_reconnect());
+  const auto mail = b->fetch();
+  ASSERT_EQ(mail.size(), kDefaultMaxOutboxMessages);
+  EXPECT_EQ(mail.back().dval, static_cast<double>(kDefaultMaxOutboxMessages - 1));
+  EXPECT_TRUE(a->notify("X", 0.5));  // the outbox is empty again
+}
+
+TEST_F(BusTest, AMessageNoClientCouldReceiveIsRefusedNamingTheVariable) {
+  b->register_variable("HUGE");
+  EXPECT_FALSE(a->notify("HUGE", std::string(kMaxMessageBytes, 'x')));
+  EXPECT_EQ(a->postings_dropped(), 1u);
+  EXPECT_NE(a->last_post_error().find("NOTIFY HUGE refused: its"), std::string::npos)
+      << a->last_post_error();
   EXPECT_TRUE(b->fetch().empty());
   EXPECT_TRUE(a->published_names().empty());
 }
@@ -232,7 +269,7 @@ TEST_F(BusTest, PostingWhileDisconnectedFails_1_9) {
 TEST_F(BusTest, ReconnectReplaysEverySubscriptionThenCallsOnConnect_1_9) {
   a->register_variable("X", 0.0);
   a->register_wildcard("NAV_*");
-  int connects = 0;
+  int connects = 0;  // the bus calls back on the reconnecting thread: no atomic needed
   std::size_t mail_at_connect = 0;
   a->set_on_connect([&] {
     ++connects;

@@ -211,3 +211,56 @@ TEST(DatabaseLimits, WritesAndRegistrationsBeyondTheStoreBoundAreRefused_Hardeni
 
 }  // namespace
 }  // namespace moos::test
+
+namespace moos::test {
+namespace {
+
+// A synchronous client's reply never exceeds what a client accepts: the rest of its mail
+// waits, in order, for its next replies (limits in codec.hpp).
+TEST(DatabaseLimits, ASynchronousReplyHoldsAtMostMaxReplyBytesAndTheRestWaitsInOrder) {
+  DatabaseConfig config;
+  config.max_reply_bytes = 4096;
+  Database db(config, kT0, [](const std::string&) {});
+  ASSERT_TRUE(db.connect(kA, {identification("sync", false)}, kT0));
+  ASSERT_TRUE(db.connect(kB, {identification("pub", true)}, kT0));
+  db.process_packet(kA, {registration("X", 0, "sync")}, kT0);
+  db.take_output();
+  for (int i = 0; i < 10; ++i)
+    db.process_packet(kB, {notify_string("X", std::string(1000, 'a' + i), "pub")}, kT0);
+  db.take_output();
+  std::vector<char> seen;
+  for (int reply = 0; reply < 10 && seen.size() < 10; ++reply) {
+    db.process_packet(kA, {null_message("sync")}, kT0);
+    const auto out = db.take_output();
+    ASSERT_EQ(out.size(), 1u);
+    EXPECT_LE(encode_packet(out[0].messages).size(), config.max_reply_bytes);
+    EXPECT_EQ(out[0].messages.front().type, msg_type::kNull);
+    for (std::size_t i = 1; i < out[0].messages.size(); ++i)
+      seen.push_back(out[0].messages[i].sval.front());
+  }
+  ASSERT_EQ(seen.size(), 10u);
+  for (int i = 0; i < 10; ++i) EXPECT_EQ(seen[static_cast<std::size_t>(i)], 'a' + i);
+  EXPECT_EQ(db.pending_bytes(kA), 0u);
+}
+
+// A value no client could receive is refused where it enters the server, naming it; nothing
+// is stored or relayed, and the client stays.
+TEST(DatabaseLimits, ANotifyLargerThanAClientAcceptsIsRefusedNamingTheVariable) {
+  std::vector<std::string> logs;
+  Database db(DatabaseConfig{}, kT0, [&](const std::string& l) { logs.push_back(l); });
+  ASSERT_TRUE(db.connect(kA, {identification("big", true)}, kT0));
+  ASSERT_TRUE(db.connect(kB, {identification("reader", true)}, kT0));
+  db.process_packet(kB, {registration("HUGE", 0, "reader")}, kT0);
+  db.take_output();
+  db.process_packet(kA, {notify_string("HUGE", std::string(kMaxMessageBytes, 'h'), "big")}, kT0);
+  EXPECT_FALSE(db.latest("HUGE").has_value());
+  for (const OutPacket& packet : db.take_output()) EXPECT_NE(packet.to, kB);
+  ASSERT_FALSE(logs.empty());
+  EXPECT_NE(logs.back().find("NOTIFY HUGE refused: its"), std::string::npos) << logs.back();
+  EXPECT_NE(logs.back().find("a client accepts"), std::string::npos) << logs.back();
+  db.process_packet(kA, {notify_string("HUGE", "fits", "big")}, kT0);
+  EXPECT_EQ(db.latest("HUGE")->sval, "fits");
+}
+
+}  // namespace
+}  // namespace moos::test

@@ -97,6 +97,49 @@ TEST_F(TcpClientTest, AnAppShowsTheDroppedMailAsOneStandingRunWarning_Hardening)
             "(inbox bounds)");
 }
 
+// Postings made before the first connection wait in the bounded outbox; one beyond the bound
+// is refused, counted and named; the kept ones follow the handshake in order (comms.hpp).
+TEST_F(TcpClientTest, TheOutboxKeepsPostingsUntilConnectedAndCountsWhatItRefuses) {
+  auto o = options();
+  o.max_outbox_messages = 3;
+  TcpClient client(o);
+  ASSERT_TRUE(client.register_variable("R"));  // remembered, replayed: never queued
+  ASSERT_TRUE(client.start());
+  for (int i = 0; i < 3; ++i) EXPECT_TRUE(client.notify("KEPT", static_cast<double>(i)));
+  EXPECT_FALSE(client.notify("OVER", 9.0));
+  EXPECT_EQ(client.postings_dropped(), 1u);
+  EXPECT_NE(client.last_post_error().find("NOTIFY OVER refused: the outbox holds its 3 messages"),
+            std::string::npos)
+      << client.last_post_error();
+  ASSERT_NO_FATAL_FAILURE(handshake());
+  ASSERT_TRUE(client.wait_until_connected(kWait_s));
+  std::vector<Message> sent;
+  const double deadline = steady_now_s() + kWait_s;
+  while (sent.size() < 4 && steady_now_s() < deadline) {
+    auto pkt = server.read_packet(deadline - steady_now_s());
+    ASSERT_TRUE(pkt.has_value());
+    for (auto& m : *pkt)
+      if (m.type != msg_type::kTiming) sent.push_back(m);
+  }
+  ASSERT_EQ(sent.size(), 4u);
+  EXPECT_EQ(sent[0].type, msg_type::kRegister);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_EQ(sent[static_cast<std::size_t>(i) + 1].key, "KEPT");
+    EXPECT_EQ(sent[static_cast<std::size_t>(i) + 1].dval, static_cast<double>(i));
+  }
+  EXPECT_TRUE(client.flush(kWait_s));
+  EXPECT_TRUE(client.notify("OVER", 9.0));  // room again
+}
+
+// A closed client takes nothing, and does not count it as a drop.
+TEST_F(TcpClientTest, AClosedClientRefusesPostingsWithoutCountingThem) {
+  TcpClient client(options());
+  ASSERT_NO_FATAL_FAILURE(connect(client));
+  client.close();
+  EXPECT_FALSE(client.notify("X", 1.0));
+  EXPECT_EQ(client.postings_dropped(), 0u);
+}
+
 }  // namespace
 }  // namespace test
 }  // namespace moos

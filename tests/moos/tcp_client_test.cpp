@@ -1,6 +1,8 @@
 // TcpClient against a scripted fake server on 127.0.0.1 (docs/protocol.md 1.4-1.9, 4.3, 4.4, 4.6
 // and the
 // vectors E, F, I, N of section 8). Every wait is bounded; the server socket is closed by RAII.
+#include <atomic>
+
 #include "tcp_client_fixture.hpp"
 
 namespace moos {
@@ -26,7 +28,7 @@ TEST_F(TcpClientTest, BannerAndIdentificationMatchVectorE_1_4_1_5) {
 
 TEST_F(TcpClientTest, WelcomeGivesCommunityHostAndSkew_1_7_1_8) {
   TcpClient client(options());
-  int connects = 0;
+  std::atomic<int> connects{0};
   client.set_on_connect([&] { ++connects; });
   ASSERT_TRUE(client.start());
   handshake(0.001);
@@ -223,7 +225,7 @@ TEST_F(TcpClientTest, ReconnectsAndResendsEveryRegistrationFirst_1_9) {
   auto o = options();
   o.time_warp = 10.0;  // retry after 0.1 s
   TcpClient client(o);
-  int connects = 0;
+  std::atomic<int> connects{0};
   client.set_on_connect([&] { ++connects; });
   ASSERT_NO_FATAL_FAILURE(connect(client));
   client.register_variable("A", 0.0);
@@ -235,7 +237,9 @@ TEST_F(TcpClientTest, ReconnectsAndResendsEveryRegistrationFirst_1_9) {
   const double deadline = steady_now_s() + kWait_s;
   while (client.is_connected() && steady_now_s() < deadline) std::this_thread::sleep_for(std::chrono::milliseconds(5));
   EXPECT_FALSE(client.is_connected());
-  EXPECT_FALSE(client.notify("X", 1.0));  // posting while disconnected fails (protocol.md 1.9)
+  // Postings made while disconnected wait for the reconnect and follow the replay (comms.hpp).
+  EXPECT_TRUE(client.notify("X", 1.0));
+  EXPECT_TRUE(client.notify("Y", "two"));
 
   handshake();
   ASSERT_TRUE(client.wait_until_connected(kWait_s));
@@ -245,13 +249,17 @@ TEST_F(TcpClientTest, ReconnectsAndResendsEveryRegistrationFirst_1_9) {
   std::vector<Message> regs;
   for (const auto& m : *pkt)
     if (m.type != msg_type::kTiming) regs.push_back(m);
-  ASSERT_EQ(regs.size(), 3u);
+  ASSERT_EQ(regs.size(), 5u);
   EXPECT_EQ(regs[0].type, msg_type::kRegister);
   EXPECT_EQ(regs[0].key, "A");
   EXPECT_EQ(regs[1].type, msg_type::kWildcardRegister);
   EXPECT_EQ(regs[1].sval, "AppPattern=*,VarPattern=NAV_*,Interval=0.5");
   EXPECT_EQ(regs[2].key, "B");
   EXPECT_EQ(regs[2].dval, 2.0);
+  EXPECT_EQ(regs[3].type, msg_type::kNotify);
+  EXPECT_EQ(regs[3].key, "X");
+  EXPECT_EQ(regs[4].key, "Y");
+  EXPECT_EQ(regs[4].sval, "two");
   const double cb_deadline = steady_now_s() + kWait_s;
   while (connects < 2 && steady_now_s() < cb_deadline) std::this_thread::sleep_for(std::chrono::milliseconds(5));
   EXPECT_EQ(connects, 2);

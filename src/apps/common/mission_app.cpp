@@ -165,25 +165,15 @@ bool MissionApp::send(const mission::Posting& p) {
 }
 
 void MissionApp::publish(const mission::Outputs& out) {
-  for (const mission::Posting& p : out.postings) {
-    // Keep the order: once one posting waits, every later one waits behind it.
-    if (!unsent_.empty() || !send(p)) unsent_.push_back(p);
-  }
+  // Postings made while disconnected wait in the comms' outbox (comms.hpp); a refused one is
+  // counted there and reported by the app base.
+  for (const mission::Posting& p : out.postings) send(p);
   for (const std::string& w : out.config_warnings) report_config_warning(w);
   for (const std::string& w : out.run_warnings) report_run_warning(w);
   for (const std::string& e : out.events) report_event(e);
 }
 
-void MissionApp::flush_unsent() {
-  std::size_t sent = 0;
-  while (sent < unsent_.size() && send(unsent_[sent])) ++sent;
-  unsent_.erase(unsent_.begin(), unsent_.begin() + static_cast<std::ptrdiff_t>(sent));
-}
-
-void MissionApp::iterate() {
-  flush_unsent();
-  on_iterate();
-}
+void MissionApp::iterate() { on_iterate(); }
 
 void MissionApp::warn_at(const moos::ConfigLine& line, const std::string& text) {
   report_config_warning(at_line(line, text));

@@ -7,10 +7,9 @@
 // - moos::run_app (through moos::launch) reads the mission file once; the app finds the file's
 //   folder and globals (LatOrigin, LongOrigin) in its settings (moos::AppSettings).
 // - MissionApp::publish posts every posting of an Outputs value in order (doubles as MOOS doubles)
-//   and hands events and warnings to the AppCast. A posting that cannot be sent because the
-//   client is not connected yet is kept and sent, in order, at the start of the next iteration
-//   (MissionApp's iterate(), which libmoos runs only while connected, sends them before the app's
-//   on_iterate()): start-up postings are never lost to a slow first connection.
+//   and hands events and warnings to the AppCast. Postings made while the client is not
+//   connected wait in its outbox and leave, in order, after the next handshake (the delivery
+//   contract of moos/comms.hpp): start-up postings are never lost to a slow first connection.
 
 #include <functional>
 #include <iosfwd>
@@ -107,7 +106,7 @@ class MissionApp : public moos::MoosApp {
   using moos::MoosApp::MoosApp;
 
  protected:
-  /// Sends the postings kept while the client was not connected, then runs on_iterate().
+  /// Runs on_iterate().
   void iterate() final;
   /// The app's own iteration (the hook apps override instead of iterate()).
   virtual void on_iterate() {}
@@ -125,9 +124,6 @@ class MissionApp : public moos::MoosApp {
 
  private:
   bool send(const mission::Posting& posting);
-  /// Sends the postings kept while the client was not connected, in order, until one fails.
-  void flush_unsent();
-  std::vector<mission::Posting> unsent_;
 };
 
 }  // namespace mission_app

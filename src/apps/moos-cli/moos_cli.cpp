@@ -187,8 +187,8 @@ int run_poke(const Options& o, std::ostream& out, std::ostream& err) {
   if (auto code = connect(client, o, err)) return *code;
   for (const auto& p : pokes) {
     const bool ok = p.is_double ? client.notify(p.var, p.dval) : client.notify(p.var, p.sval);
-    if (!ok) {
-      err << "moos-cli: lost the connection before posting " << p.var << "\n";
+    if (!ok) {  // refused: too large, or the outbox is full (the reason names the variable)
+      err << "moos-cli: " << client.last_post_error() << "\n";
       return kExitNotWritten;
     }
   }
@@ -234,7 +234,12 @@ int run_watch(const Options& o, std::ostream& out, std::ostream& err) {
     if (mail.wait_until(wait_end) || !o.timeout_s) continue;
     if (!o.count) return kExitOk;
     err << "moos-cli: timed out after " << *o.timeout_s << " s with " << received << " of "
-        << *o.count << " messages\n";
+        << *o.count << " messages";
+    // A connection that kept dropping is the likelier reason than silence: say so.
+    if (const std::uint64_t connections = client.connection_count(); connections > 1)
+      err << "; the connection was lost " << connections - 1 << " times, the last problem: "
+          << client.last_error();
+    err << "\n";
     return kExitWatchTimeout;
   }
 }

@@ -25,8 +25,10 @@
 //   stream or inactivity closes the connection. Each close of a misbehaving peer is logged
 //   with the peer, the client name once known, and the reason.
 // - Every Send names its source (Action::source). Mail to an asynchronous client is cut
-//   into packets of at most kFairPacketBytes, in order; a synchronous client's reply is one
-//   packet, as protocol.md 5.6 requires.
+//   into packets of at most kFairPacketBytes (or one message, at most moos::kMaxMessageBytes),
+//   in order; a synchronous client's reply is one packet, as protocol.md 5.6 requires, which
+//   moos::Database keeps within moos::kDefaultMaxPacketBytes. No client is sent a packet larger
+//   than moos::kDefaultMaxPacketBytes.
 
 #include <cstddef>
 #include <cstdint>
@@ -48,12 +50,9 @@ using moos::kDefaultCommunity;
 using moos::kDefaultMaxPendingBytes;
 using moos::kDefaultMaxStoredBytes;
 
-/// Largest packet a client may send, in bytes. Sized from libMOOS: an asynchronous client
-/// sends its whole backlog as one packet, and its outbox holds up to 2,048 messages
-/// (OUTBOX_PENDING_LIMIT); core-moos's app_test posts 100 kB messages, so its packets reach
-/// ~205 MB. 256 MiB holds 2,048 messages of 128 KiB each. (The client side keeps
-/// moos::kDefaultMaxPacketBytes.)
-inline constexpr std::size_t kDefaultServerMaxPacketBytes = 256u * 1024u * 1024u;
+/// Largest packet a client may send, in bytes: moos::kServerMaxPacketBytes (its reasons and the
+/// other limits of the wire are in include/moos/codec.hpp).
+inline constexpr std::size_t kDefaultServerMaxPacketBytes = moos::kServerMaxPacketBytes;
 static_assert(kDefaultMaxPendingBytes >= 2 * kDefaultServerMaxPacketBytes,
               "a client's output must hold the echo of one maximal packet plus one more");
 

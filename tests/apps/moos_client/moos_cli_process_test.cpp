@@ -26,16 +26,26 @@ RunResult run_cli(const std::vector<std::string>& args) {
   return run_program(MOOS_CLI_PATH, args, kRun_s);
 }
 
-/// Waits until moos-cli watch has subscribed (its client name appears in DB_CLIENTS).
-bool wait_for_client(int port, const std::string& name) {
+/// Waits until moos-cli watch `name` has subscribed to `last_var`, the last variable it
+/// registers: DB_RWSUMMARY lists it among the client's subscriptions (`name=A:B&...`). Its name
+/// in DB_CLIENTS is not enough: the watch may not have registered, nor taken its start time.
+bool wait_for_subscriber(int port, const std::string& name, const std::string& last_var) {
   TcpClient probe(local_client_options(port, "probe_" + name));
   if (!probe.start() || !probe.wait_until_connected(5.0)) return false;
-  probe.register_variable("DB_CLIENTS");
+  probe.register_variable("DB_RWSUMMARY");
   const double deadline = steady_now_s() + 10.0;
   while (steady_now_s() < deadline) {
     probe.notify("PROBE_TICK", 1.0);  // DB variables refresh on traffic in the reference DB
-    for (const auto& m : probe.fetch())
-      if (m.key == "DB_CLIENTS" && m.sval.find(name + ",") != std::string::npos) return true;
+    for (const auto& m : probe.fetch()) {
+      if (m.key != "DB_RWSUMMARY") continue;
+      const std::string list = "," + m.sval;  // entries are comma-separated: match whole names
+      const auto at = list.find("," + name + "=");
+      if (at == std::string::npos) continue;
+      const std::string entry = list.substr(at, list.find('&', at) - at);
+      if ((entry + ":").find("=" + last_var + ":") != std::string::npos ||
+          (entry + ":").find(":" + last_var + ":") != std::string::npos)
+        return true;
+    }
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
   }
   return false;
@@ -59,7 +69,7 @@ TEST_F(CliWithServer, WatchPrintsWhatPokePostsAsAlogLines) {
   auto watch = Child::spawn(MOOS_CLI_PATH, {"watch", "--host=127.0.0.1", port_arg, "--name=watcher",
                                             "--count=4", "--timeout=15", "NUM", "TXT_*", "BIN"});
   ASSERT_TRUE(watch.has_value());
-  ASSERT_TRUE(wait_for_client(server->port(), "watcher"));
+  ASSERT_TRUE(wait_for_subscriber(server->port(), "watcher", "BIN"));
   const RunResult poke = run_cli({"poke", "--host=127.0.0.1", port_arg, "--name=poker", "NUM=12.5",
                                   "TXT_A=hello world", "TXT_B=\"42\"", "NUM:=not a number"});
   EXPECT_EQ(poke.exit_code, 0) << poke.err;
@@ -134,7 +144,7 @@ TEST_F(CliWithServer, TheLongestTimeoutsStillWaitForTheMessage_Hardening) {
   auto watch = Child::spawn(MOOS_CLI_PATH, {"watch", port_arg, "--name=patient", "--count=1",
                                             "--timeout=1e8", "--connect-timeout=1e8", "LATE"});
   ASSERT_TRUE(watch.has_value());
-  ASSERT_TRUE(wait_for_client(server->port(), "patient"));
+  ASSERT_TRUE(wait_for_subscriber(server->port(), "patient", "LATE"));
   const RunResult poke = run_cli({"poke", port_arg, "--connect-timeout=1e8", "LATE=1"});
   EXPECT_EQ(poke.exit_code, 0) << poke.err;
   EXPECT_EQ(watch->wait(kRun_s), 0) << watch->stderr_text();

@@ -6,6 +6,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <csignal>
 #include <mutex>
 #include <string>
@@ -42,10 +43,14 @@ class LoopUnderTest {
     loop_ = std::make_unique<EventLoop>(config, *hub_, logger());
     std::string error;
     EXPECT_TRUE(loop_->listen(&error)) << error;
-    thread_ = std::thread([this] { loop_->run(wake_[0], stop_, {}); });
+    // The loop's flag is a signal handler's (one thread): the loop thread sets it itself, after
+    // a round, from the atomic the test's thread sets.
+    thread_ = std::thread([this] {
+      loop_->run(wake_[0], stop_, [this] { stop_ = stopping_.load() ? 1 : 0; });
+    });
   }
   ~LoopUnderTest() {
-    stop_ = 1;
+    stopping_ = true;
     const char byte = 1;
     EXPECT_EQ(::write(wake_[1], &byte, 1), 1);
     thread_.join();
@@ -66,7 +71,8 @@ class LoopUnderTest {
     };
   }
   int wake_[2] = {-1, -1};
-  volatile std::sig_atomic_t stop_ = 0;
+  volatile std::sig_atomic_t stop_ = 0;  // the loop thread's only
+  std::atomic<bool> stopping_{false};
   std::mutex mutex_;
   std::string log_;
   std::unique_ptr<Hub> hub_;
