@@ -113,10 +113,12 @@ class Comms {
   /// (libMOOS, protocol.md 2.2).
   bool post(Message notify);
 
-  /// All mail decoded since the last call, oldest first. The promise: every message whose
-  /// packet was decoded before the call is returned by it (TcpClient: after a promise it also
-  /// reads what the socket holds, unless the comms thread is reading at that moment; what that
-  /// read adds is announced by the on-mail callback and returned by the next fetch).
+  /// All mail received since the last call, oldest first. The promise: every message that
+  /// reached this client before the call (TcpClient: its packet was whole in the socket) is
+  /// returned by this call or, if it could not be read then, announced by the on-mail callback
+  /// without waiting for another fetch, and returned by the next one. TcpClient after
+  /// expect_fetch_within(): fetch() reads the socket itself; when its comms thread is using the
+  /// socket at that moment, or more than one read's worth waits, that thread reads the rest.
   virtual std::vector<Message> fetch() = 0;
   /// Postings between hold_sends() and release_sends() may leave together: an implementation
   /// may wait for the release before it starts sending (TcpClient: one packet per app cycle,
@@ -125,8 +127,7 @@ class Comms {
   virtual void release_sends() {}
   /// The caller will call fetch() again within about `real_s` real seconds (0 or less: no
   /// promise, e.g. before a long sleep that mail must end). An implementation may then leave
-  /// reading to fetch() and save its own wake-ups (TcpClient); mail is never delayed past the
-  /// fetch that was promised.
+  /// reading to fetch() and save its own wake-ups (TcpClient); the promise of fetch() holds.
   virtual void expect_fetch_within(double /*real_s*/) {}
   /// Mail dropped unread since the start because the inbox was full (never decreases).
   std::uint64_t mail_dropped() const { return mail_dropped_.load(); }

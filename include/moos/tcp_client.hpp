@@ -28,7 +28,8 @@
 //   batch itself when the send slot is open. After expect_fetch_within(), fetch() first reads
 //   what the socket holds, and the comms thread leaves reading to fetch() for that long plus
 //   kAppReadGrace_real_s (except while a TIMING echo is awaited, so the skew stays exact), so an
-//   app cycling with steady mail wakes one thread per cycle, not two per packet. The comms
+//   app cycling with steady mail wakes one thread per cycle, not two per packet; a fetch() that
+//   cannot read it all hands the reading back for one round (the promise, comms.hpp). The comms
 //   thread still does everything when the app does not cycle, and is the only one that drops a
 //   connection: a failure the app's thread meets is handed to it. Mail left unread when the
 //   app stops makes the close a reset, which the server may log as one.
@@ -143,6 +144,10 @@ class TcpClient final : public Comms {
   /// iterations never make it read, and a stalled app's mail waits at most this much longer to
   /// be counted against the inbox bounds (it could not be handled sooner anyway).
   static constexpr double kAppReadGrace_real_s = 0.5;
+  /// While the app's thread sends packets itself, the comms thread waits this much longer for a
+  /// due TIMING, which then rides in the app's next packet (one wake-up saved per TIMING); the
+  /// longest gap between two TIMINGs, 0.95 s, stays within libMOOS's 1.0 s.
+  static constexpr double kAppTimingSlack_real_s = 0.2;
 
  protected:
   bool transmit(Message msg) override;
@@ -154,10 +159,6 @@ class TcpClient final : public Comms {
   /// How long after a TIMING its echo is read by the comms thread at once (when the skew is
   /// corrected): beyond that the echo is late anyway, and fetch() may read it.
   static constexpr double kTimingEchoWindow_real_s = 0.25;
-  /// While the app's thread sends packets itself, the comms thread waits this much longer for a
-  /// due TIMING, which then rides in the app's next packet (one wake-up saved per TIMING); the
-  /// longest gap between two TIMINGs, 0.95 s, stays within libMOOS's 1.0 s.
-  static constexpr double kAppTimingSlack_real_s = 0.2;
 
   static double steady_now_s();
   static std::string errno_text(const char* what);  ///< "what: strerror(errno)"
@@ -172,8 +173,9 @@ class TcpClient final : public Comms {
     double wait_real_s = 0;
   };
   PollPlan plan_poll(double now);
-  /// True while the input is left to the promised fetch (io_mutex_ held).
-  bool app_reads(double now) const;
+  /// True while the input is left to the promised fetch (io_mutex_ held); false for one poll
+  /// after fetch() handed the reading back.
+  bool app_reads(double now);
   void drop_connection(const std::string& why);
   /// Drops the registrations from the outbox (mutex_ held): the next handshake replays them.
   void forget_registrations_in_outbox();
@@ -237,6 +239,8 @@ class TcpClient final : public Comms {
   std::string app_io_failure_;
   bool new_mail_ = false;  // the inbox grew under this hold of io_mutex_: announce it after
   std::atomic<double> app_reads_until_{0};  // steady s: reading left to fetch() until then
+  std::atomic<bool> comms_reads_once_{false};  // fetch() could not read it all: the comms thread does
+  bool input_left_ = false;  // the last read_available() stopped at its bound (io_mutex_ held)
 
   mutable std::mutex mutex_;
   mutable std::condition_variable changed_;

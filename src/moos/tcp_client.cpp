@@ -462,8 +462,9 @@ void TcpClient::fail_io(const std::string& why) {
   wake();
 }
 
-bool TcpClient::app_reads(double now) const {
+bool TcpClient::app_reads(double now) {
   if (now >= app_reads_until_.load()) return false;
+  if (comms_reads_once_.exchange(false)) return false;  // handed back by fetch()
   // With the skew corrected, a TIMING echo is read the moment it arrives: that moment is the
   // measurement (protocol.md 4.4).
   const bool echo_due = time_correction_ && awaiting_timing_echo_ && last_timing_sent_ &&

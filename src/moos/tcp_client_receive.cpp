@@ -40,28 +40,44 @@ std::vector<Message> TcpClient::fetch() {
 void TcpClient::read_for_app() {
   // Without a promise the comms thread reads everything as it arrives: nothing is left here.
   if (steady_now_s() >= app_reads_until_.load()) return;
-  const std::unique_lock<std::mutex> io = lock_io_for_app();
-  if (!io.owns_lock()) return;
-  read_available();  // a failure is handed to the comms thread
-  new_mail_ = false;  // the caller is fetching it now: nothing to announce
+  std::unique_lock<std::mutex> io = lock_io_for_app();
+  // The comms thread is busy with the socket, or more than one read's worth is waiting: it reads
+  // the rest in its next round and announces it (comms.hpp), so no mail waits for a later fetch.
+  bool hand_back = !io.owns_lock();
+  if (!hand_back) {
+    hand_back = read_available() && input_left_;  // a failure is handed to the comms thread
+    new_mail_ = false;  // the caller is fetching it now: nothing to announce
+    io.unlock();
+  }
+  if (hand_back) {
+    comms_reads_once_ = true;
+    wake();
+  }
 }
 
 bool TcpClient::read_available() {
   bool peer_closed = false;
+  input_left_ = true;  // until a read comes back short: the socket may hold more
   char buf[kReadChunkBytes];
   // Bounded so that a flooding server cannot starve our own sending.
   for (int chunk = 0; chunk < kMaxReadChunksPerWake; ++chunk) {
     const ssize_t n = ::recv(socket_, buf, sizeof buf, 0);
     if (n > 0) {
       reader_.feed(std::string_view(buf, static_cast<std::size_t>(n)));
-      if (static_cast<std::size_t>(n) < sizeof buf) break;  // drained: spare the EAGAIN call
+      if (static_cast<std::size_t>(n) < sizeof buf) {  // drained: spare the EAGAIN call
+        input_left_ = false;
+        break;
+      }
       continue;
     }
     if (n == 0) {
       peer_closed = true;  // process what arrived before the close first
       break;
     }
-    if (errno == EAGAIN || errno == EWOULDBLOCK) break;
+    if (errno == EAGAIN || errno == EWOULDBLOCK) {
+      input_left_ = false;
+      break;
+    }
     if (errno == EINTR) continue;
     fail_io(errno_text("recv"));
     return false;

@@ -90,11 +90,13 @@ bool TcpClient::start_packet_if_due(double now) {
   if (!write_buffer_.empty() || now < next_send_allowed_) return false;
   const bool timing_due = !last_timing_sent_ || now - *last_timing_sent_ >= kTimingInterval_real_s;
   std::vector<Message> batch;
+  // TIMING first (protocol.md 4.3 step 2); stamped before mutex_ is taken, as the clock may be
+  // the caller's code.
+  if (timing_due) batch.push_back(timing_message());
   {
     std::lock_guard<std::mutex> lock(mutex_);
     // Held messages wait for the release, unless a TIMING goes out anyway.
     if (!timing_due && (outbox_.empty() || holding_sends_)) return false;
-    if (timing_due) batch.push_back(timing_message());  // TIMING first (protocol.md 4.3 step 2)
     // As many as fit in a packet the server surely accepts (codec.hpp); the rest go next.
     std::size_t bytes = kPacketHeaderSize + (timing_due ? batch.front().encoded_size() : 0);
     std::size_t taken = 0;
