@@ -131,6 +131,7 @@ MissionResult run_mission(const MissionPlan& plan, const Setting& setting, std::
   for (const Process& p : plan.processes) {
     auto app = make_app(p.program, alog != nullptr);
     moos::AppSettings settings = process_settings(plan, p, app->traits(), setting, seed);
+    settings.post_status = alog != nullptr;  // without a log nobody reads <APP>_STATUS
     clients.push_back(bus.connect(settings.moos_name));
     app->start(*clients.back(), std::move(settings));
     for (const std::string& w : app->appcast().config_warnings())

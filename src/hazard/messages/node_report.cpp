@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "base/key_value_reader.hpp"
+#include "base/text_appender.hpp"
 #include "fields.hpp"
 #include "hazard/ranges.hpp"
 
@@ -174,17 +175,30 @@ Parsed<NodeReport> parse_node_report(std::string_view text, const GeoPlacement* 
   return result;
 }
 
+// Built through a stack buffer, numbers written in place (a vehicle posts one every iteration);
+// the text is the same as appending each field with detail::append_field.
 std::string format_node_report(const NodeReport& r) {
   std::string out;
-  detail::append_field(out, "NAME", r.name);
-  detail::append_field(out, "X", base::fmt(r.x_m, 2));
-  detail::append_field(out, "Y", base::fmt(r.y_m, 2));
-  detail::append_field(out, "SPD", base::fmt(r.speed_mps, 2));
-  detail::append_field(out, "HDG", base::fmt(r.heading_deg, 2));
-  if (r.lat_deg) detail::append_field(out, "LAT", base::fmt(*r.lat_deg, kLatLonDecimals));
-  if (r.lon_deg) detail::append_field(out, "LON", base::fmt(*r.lon_deg, kLatLonDecimals));
-  if (r.time_s) detail::append_field(out, "TIME", base::fmt(*r.time_s, 3));
-  if (r.type) detail::append_field(out, "TYPE", *r.type);
+  {
+    base::TextAppender a(out);
+    const auto number = [&a](std::string_view key, double value, int decimals) {
+      a.put(key);
+      a.put_fmt(value, decimals);
+    };
+    a.put("NAME=");
+    a.put(r.name);
+    number(",X=", r.x_m, 2);
+    number(",Y=", r.y_m, 2);
+    number(",SPD=", r.speed_mps, 2);
+    number(",HDG=", r.heading_deg, 2);
+    if (r.lat_deg) number(",LAT=", *r.lat_deg, kLatLonDecimals);
+    if (r.lon_deg) number(",LON=", *r.lon_deg, kLatLonDecimals);
+    if (r.time_s) number(",TIME=", *r.time_s, 3);
+    if (r.type) {
+      a.put(",TYPE=");
+      a.put(*r.type);
+    }
+  }
   return out;
 }
 
