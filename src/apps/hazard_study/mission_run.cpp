@@ -25,6 +25,7 @@ constexpr const char* kRunnerName = "hazard_study";
 std::unique_ptr<moos::MoosApp> make_app(const std::string& program, bool logged) {
   if (base::iequals(program, "uFldHazardSensor")) {
     ufld_hazard_sensor::HazardSensorOptions options;
+    options.share_node_report_parses = true;  // the managers read the same reports
     if (!logged) {
       options.readers = hazard::PostingReaders::kReportCounts;
       options.post_iteration_timing = false;

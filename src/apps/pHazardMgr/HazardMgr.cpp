@@ -28,30 +28,6 @@ const std::vector<mission::ParamInfo> kAppParameters = {
     {"report_wait_max", "600", "longest wait from HAZARDSET_REQUEST to the report, s (>= 0)"},
 };
 
-// Every manager on one MOOSDB reads every vehicle's node reports, and the managers hosted in one
-// process (hazard_study) read the same texts one after another: the last few parses of this
-// thread are kept and reused for an equal text (a parse depends on the text alone).
-const hazard::Parsed<hazard::NodeReport>& parse_node_report_cached(const std::string& text) {
-  constexpr std::size_t kKept = 4;  // a few vehicles' latest reports
-  struct Kept {
-    std::string text;
-    hazard::Parsed<hazard::NodeReport> report;
-  };
-  thread_local std::vector<Kept> kept;
-  thread_local std::size_t next = 0;
-  for (const Kept& k : kept)
-    if (k.text == text) return k.report;
-  if (kept.size() < kKept) {
-    kept.push_back(Kept{text, hazard::parse_node_report(text)});
-    return kept.back().report;
-  }
-  Kept& slot = kept[next];
-  next = (next + 1) % kKept;
-  slot.text = text;
-  slot.report = hazard::parse_node_report(text);
-  return slot.report;
-}
-
 }  // namespace
 
 const std::vector<mission::ParamInfo>& app_parameters() { return kAppParameters; }
@@ -169,7 +145,9 @@ void HazardMgr::handle(const moos::Message& m, double time_s) {
 }
 
 void HazardMgr::on_node_report(const std::string& text, double time_s) {
-  const auto& report = parse_node_report_cached(text);  // read before anything is posted
+  // Every manager on one MOOSDB reads every vehicle's reports; the managers (and sensor) of one
+  // process share the parse of a text.
+  const auto report = hazard::NodeReportMemo::this_thread().parse(text, nullptr);
   if (!report) {
     report_run_warning(app_.node_report_var + " ignored: " + report.error);
     return;

@@ -175,6 +175,43 @@ Parsed<NodeReport> parse_node_report(std::string_view text, const GeoPlacement* 
   return result;
 }
 
+NodeReportMemo& NodeReportMemo::this_thread() {
+  thread_local NodeReportMemo memo;
+  return memo;
+}
+
+const NodeReport* NodeReportMemo::find_or_keep(std::string_view text) {
+  for (const Entry& e : entries_)
+    if (e.text == text) return &e.report;
+  Parsed<NodeReport> parsed = parse_node_report(text, nullptr, NodeReportKeep::kAll);
+  // A failure may be a LAT/LON-only report that the caller's placement would place.
+  if (!parsed || parsed.value->placed_from_lat_lon) return nullptr;
+  if (entries_.size() < kKept) {
+    entries_.push_back(Entry{std::string(text), std::move(*parsed.value)});
+    return &entries_.back().report;
+  }
+  Entry& e = entries_[next_];
+  next_ = (next_ + 1) % kKept;
+  e.text.assign(text.data(), text.size());
+  e.report = std::move(*parsed.value);
+  return &e.report;
+}
+
+Parsed<NodeReport> NodeReportMemo::parse(std::string_view text, const GeoPlacement* placement,
+                                         NodeReportKeep keep) {
+  const NodeReport* kept = find_or_keep(text);
+  if (!kept) return parse_node_report(text, placement, keep);
+  Parsed<NodeReport> result;
+  NodeReport& r = result.value.emplace(*kept);
+  if (keep == NodeReportKeep::kPose) {  // as parse_node_report leaves them
+    r.lat_deg.reset();
+    r.lon_deg.reset();
+    r.time_s.reset();
+    r.type.reset();
+  }
+  return result;
+}
+
 // Built through a stack buffer, numbers written in place (a vehicle posts one every iteration);
 // the text is the same as appending each field with detail::append_field.
 std::string format_node_report(const NodeReport& r) {
