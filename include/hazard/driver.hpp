@@ -66,6 +66,9 @@ class Driver {
   std::optional<double> last_time_s() const { return last_time_s_; }
   /// The engine, to inspect (its mail handlers are the driver's alone).
   const Engine& engine() const { return engine_; }
+  /// Node reports parsed through NodeReportMemo::this_thread() (same results): for a process
+  /// whose other readers parse the same texts (hazard_study). Off by default.
+  void share_node_report_parses(bool share) { share_node_report_parses_ = share; }
   /// Engine::set_decision_observer.
   void set_decision_observer(std::function<void(const Decision&)> observer) {
     engine_.set_decision_observer(std::move(observer));
@@ -78,6 +81,7 @@ class Driver {
 
   Engine engine_;
   std::optional<double> last_time_s_;
+  bool share_node_report_parses_ = false;
 };
 
 }  // namespace hazard

@@ -91,6 +91,9 @@ struct AppSettings {
   /// IdleAppTick (ours, opt-in): MOOS-time Hz of the cycles of a quiet app (see the contract);
   /// nullopt: every AppTick slot is a cycle (libMOOS).
   std::optional<double> idle_app_tick_hz;
+  /// `<APP>_STATUS` every 2 s (protocol.md 7.2). Not a mission-file key: only a program that
+  /// hosts the app and knows nobody reads the status (hazard_study without a log) turns it off.
+  bool post_status = true;
   /// The application's own lines of its block (framework keys removed), in file order.
   std::vector<ConfigLine> config_lines;
   bool have_block = false;

@@ -83,7 +83,10 @@ void Driver::dispatch(std::string_view variable, std::string_view value, double 
   if (variable == kNodeReport) {
     // The engine reads the name and the pose only (NodeReportKeep::kPose).
     route([&](std::string_view text) {
-            return parse_node_report(text, &engine_.placement(), NodeReportKeep::kPose);
+            return share_node_report_parses_
+                       ? NodeReportMemo::this_thread().parse(text, &engine_.placement(),
+                                                             NodeReportKeep::kPose)
+                       : parse_node_report(text, &engine_.placement(), NodeReportKeep::kPose);
           },
           [&](const NodeReport& r) { engine_.handle_node_report(r, now_s, out); });
   } else if (variable == kSensorRequest) {

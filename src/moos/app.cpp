@@ -422,6 +422,7 @@ std::string MoosApp::status_string() const {
 }
 
 void MoosApp::post_status_if_due() {
+  if (!settings_.post_status) return;
   if (last_status_moos_s_ && curr_time_ - *last_status_moos_s_ < kStatusPeriod_s) return;
   comms_->notify(status_var_, status_string());
   last_status_moos_s_ = curr_time_;

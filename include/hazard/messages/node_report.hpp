@@ -15,6 +15,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "hazard/geodesy.hpp"
 #include "hazard/messages/parsed.hpp"
@@ -50,6 +51,30 @@ Parsed<NodeReport> parse_node_report(std::string_view text);
 /// With `placement` (nullptr: none) for LAT/LON-only reports.
 Parsed<NodeReport> parse_node_report(std::string_view text, const GeoPlacement* placement,
                                      NodeReportKeep keep = NodeReportKeep::kAll);
+/// The parses of one thread's last few node report texts, for several readers of the same texts
+/// in one thread (hazard_study hosts the sensor and every manager: each report is read three
+/// times). parse() gives what parse_node_report(text, placement, keep) gives; only a report
+/// placed from its X and Y, which no placement changes, is kept (anything else is parsed anew).
+class NodeReportMemo {
+ public:
+  static NodeReportMemo& this_thread();
+
+  Parsed<NodeReport> parse(std::string_view text, const GeoPlacement* placement,
+                           NodeReportKeep keep = NodeReportKeep::kAll);
+
+ private:
+  static constexpr std::size_t kKept = 4;  // the latest reports of a few vehicles
+  struct Entry {
+    std::string text;
+    NodeReport report;  // kAll
+  };
+  /// The kept report of `text`, parsed and kept now if new; nullptr if it cannot be kept.
+  const NodeReport* find_or_keep(std::string_view text);
+
+  std::vector<Entry> entries_;
+  std::size_t next_ = 0;  // the entry replaced next, once all are in use
+};
+
 /// NAME=..,X=FMT(x,2),Y=FMT(y,2),SPD=FMT(s,2),HDG=FMT(h,2)
 ///   [,LAT=..,LON=..][,TIME=FMT(t,3)][,TYPE=..]
 std::string format_node_report(const NodeReport& report);

@@ -25,6 +25,7 @@ constexpr const char* kRunnerName = "hazard_study";
 std::unique_ptr<moos::MoosApp> make_app(const std::string& program, bool logged) {
   if (base::iequals(program, "uFldHazardSensor")) {
     ufld_hazard_sensor::HazardSensorOptions options;
+    options.share_node_report_parses = true;  // the managers read the same reports
     if (!logged) {
       options.readers = hazard::PostingReaders::kReportCounts;
       options.post_iteration_timing = false;
@@ -131,6 +132,7 @@ MissionResult run_mission(const MissionPlan& plan, const Setting& setting, std::
   for (const Process& p : plan.processes) {
     auto app = make_app(p.program, alog != nullptr);
     moos::AppSettings settings = process_settings(plan, p, app->traits(), setting, seed);
+    settings.post_status = alog != nullptr;  // without a log nobody reads <APP>_STATUS
     clients.push_back(bus.connect(settings.moos_name));
     app->start(*clients.back(), std::move(settings));
     for (const std::string& w : app->appcast().config_warnings())

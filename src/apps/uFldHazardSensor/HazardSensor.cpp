@@ -56,6 +56,7 @@ bool HazardSensor::on_start_up() {
   if (options_.readers != hazard::PostingReaders::kViewers)
     engine = engine.with_seed(engine.seed(), options_.readers);
   driver_.emplace(std::move(engine));
+  driver_->share_node_report_parses(options_.share_node_report_parses);
   for (const hazard::InterfaceVariable& v : hazard::Engine::subscriptions()) {
     register_variable(std::string(v.name));
   }

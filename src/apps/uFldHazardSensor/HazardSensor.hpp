@@ -75,6 +75,9 @@ struct HazardSensorOptions {
   /// `<APP>_ITER_GAP` / `_ITER_LEN` every iteration (moos::AppTraits); a study that reads no
   /// framework postings turns them off.
   bool post_iteration_timing = true;
+  /// Node reports parsed through hazard::NodeReportMemo (hazard::Driver::share_node_report_parses):
+  /// a process that hosts the managers too (hazard_study) parses each report once.
+  bool share_node_report_parses = false;
 };
 
 class HazardSensor final : public moos::MoosApp {

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "base/key_value_reader.hpp"
+#include "base/text_appender.hpp"
 #include "fields.hpp"
 #include "hazard/ranges.hpp"
 
@@ -174,17 +175,67 @@ Parsed<NodeReport> parse_node_report(std::string_view text, const GeoPlacement* 
   return result;
 }
 
+NodeReportMemo& NodeReportMemo::this_thread() {
+  thread_local NodeReportMemo memo;
+  return memo;
+}
+
+const NodeReport* NodeReportMemo::find_or_keep(std::string_view text) {
+  for (const Entry& e : entries_)
+    if (e.text == text) return &e.report;
+  Parsed<NodeReport> parsed = parse_node_report(text, nullptr, NodeReportKeep::kAll);
+  // A failure may be a LAT/LON-only report that the caller's placement would place.
+  if (!parsed || parsed.value->placed_from_lat_lon) return nullptr;
+  if (entries_.size() < kKept) {
+    entries_.push_back(Entry{std::string(text), std::move(*parsed.value)});
+    return &entries_.back().report;
+  }
+  Entry& e = entries_[next_];
+  next_ = (next_ + 1) % kKept;
+  e.text.assign(text.data(), text.size());
+  e.report = std::move(*parsed.value);
+  return &e.report;
+}
+
+Parsed<NodeReport> NodeReportMemo::parse(std::string_view text, const GeoPlacement* placement,
+                                         NodeReportKeep keep) {
+  const NodeReport* kept = find_or_keep(text);
+  if (!kept) return parse_node_report(text, placement, keep);
+  Parsed<NodeReport> result;
+  NodeReport& r = result.value.emplace(*kept);
+  if (keep == NodeReportKeep::kPose) {  // as parse_node_report leaves them
+    r.lat_deg.reset();
+    r.lon_deg.reset();
+    r.time_s.reset();
+    r.type.reset();
+  }
+  return result;
+}
+
+// Built through a stack buffer, numbers written in place (a vehicle posts one every iteration);
+// the text is the same as appending each field with detail::append_field.
 std::string format_node_report(const NodeReport& r) {
   std::string out;
-  detail::append_field(out, "NAME", r.name);
-  detail::append_field(out, "X", base::fmt(r.x_m, 2));
-  detail::append_field(out, "Y", base::fmt(r.y_m, 2));
-  detail::append_field(out, "SPD", base::fmt(r.speed_mps, 2));
-  detail::append_field(out, "HDG", base::fmt(r.heading_deg, 2));
-  if (r.lat_deg) detail::append_field(out, "LAT", base::fmt(*r.lat_deg, kLatLonDecimals));
-  if (r.lon_deg) detail::append_field(out, "LON", base::fmt(*r.lon_deg, kLatLonDecimals));
-  if (r.time_s) detail::append_field(out, "TIME", base::fmt(*r.time_s, 3));
-  if (r.type) detail::append_field(out, "TYPE", *r.type);
+  {
+    base::TextAppender a(out);
+    const auto number = [&a](std::string_view key, double value, int decimals) {
+      a.put(key);
+      a.put_fmt(value, decimals);
+    };
+    a.put("NAME=");
+    a.put(r.name);
+    number(",X=", r.x_m, 2);
+    number(",Y=", r.y_m, 2);
+    number(",SPD=", r.speed_mps, 2);
+    number(",HDG=", r.heading_deg, 2);
+    if (r.lat_deg) number(",LAT=", *r.lat_deg, kLatLonDecimals);
+    if (r.lon_deg) number(",LON=", *r.lon_deg, kLatLonDecimals);
+    if (r.time_s) number(",TIME=", *r.time_s, 3);
+    if (r.type) {
+      a.put(",TYPE=");
+      a.put(*r.type);
+    }
+  }
   return out;
 }
 

@@ -1,6 +1,8 @@
-// uFldHazardSensor's options for a study (HazardSensorOptions::readers and
-// post_iteration_timing): with kReportCounts and no iteration timing the sensor posts no
-// VIEW_* text and no _ITER_GAP/_ITER_LEN; by default it posts both. The Jake mission's block.
+// uFldHazardSensor's options for a study (HazardSensorOptions::readers, post_iteration_timing,
+// share_node_report_parses, and moos::AppSettings::post_status): with kReportCounts, no iteration
+// timing and no status the sensor posts no VIEW_* text, no _ITER_GAP/_ITER_LEN and no _STATUS;
+// by default (a live app) it posts all three and parses its node reports alone. The Jake
+// mission's block.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -16,9 +18,10 @@ namespace {
 struct Counts {
   std::size_t markers = 0;
   std::size_t iteration_timing = 0;
+  std::size_t status = 0;
 };
 
-Counts run_sensor(ufld_hazard_sensor::HazardSensorOptions options) {
+Counts run_sensor(ufld_hazard_sensor::HazardSensorOptions options, bool post_status = true) {
   auto parsed = parse_args({std::string(HAZARD_SOURCE_DIR) + "/missions/jake/jake.moos"});
   std::string error;
   const auto plan = load_plan(*parsed.options, error);
@@ -28,27 +31,34 @@ Counts run_sensor(ufld_hazard_sensor::HazardSensorOptions options) {
   ufld_hazard_sensor::HazardSensor sensor(std::move(options));
   auto comms = bus.connect("uFldHazardSensor");
   const Process process{"uFldHazardSensor", "uFldHazardSensor"};
-  EXPECT_TRUE(sensor.start(*comms, process_settings(*plan, process, sensor.traits(),
-                                                    parsed.options->settings[0], 1)));
+  moos::AppSettings settings =
+      process_settings(*plan, process, sensor.traits(), parsed.options->settings[0], 1);
+  EXPECT_TRUE(settings.post_status);  // on unless the host turns it off
+  settings.post_status = post_status;
+  EXPECT_TRUE(sensor.start(*comms, std::move(settings)));
   sensor.run_for(2.0);
   return Counts{bus.postings_of("VIEW_MARKER").size(),
                 bus.postings_of("UFLDHAZARDSENSOR_ITER_GAP").size() +
-                    bus.postings_of("UFLDHAZARDSENSOR_ITER_LEN").size()};
+                    bus.postings_of("UFLDHAZARDSENSOR_ITER_LEN").size(),
+                bus.postings_of("UFLDHAZARDSENSOR_STATUS").size()};
 }
 
 TEST(StudySensorOptions, ByDefaultTheSensorPostsItsVisualsAndIterationTiming) {
   const Counts c = run_sensor({});
   EXPECT_GT(c.markers, 0u);
   EXPECT_GT(c.iteration_timing, 0u);
+  EXPECT_GT(c.status, 0u);
+  EXPECT_FALSE(ufld_hazard_sensor::HazardSensorOptions{}.share_node_report_parses);
 }
 
 TEST(StudySensorOptions, AStudysSensorPostsNoVisualsAndNoIterationTiming) {
   ufld_hazard_sensor::HazardSensorOptions options;
   options.readers = hazard::PostingReaders::kReportCounts;
   options.post_iteration_timing = false;
-  const Counts c = run_sensor(std::move(options));
+  const Counts c = run_sensor(std::move(options), /*post_status=*/false);
   EXPECT_EQ(c.markers, 0u);
   EXPECT_EQ(c.iteration_timing, 0u);
+  EXPECT_EQ(c.status, 0u);
 }
 
 }  // namespace

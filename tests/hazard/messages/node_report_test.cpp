@@ -77,6 +77,38 @@ TEST(NodeReportMessage, PoseOnlyParseDecidesAsTheFullParse) {
   EXPECT_EQ(kept.value->type, "kayak");
 }
 
+// NodeReportMemo (texts read by several readers of one thread) gives what the parse gives, kept
+// or not: the same acceptance, error and fields, with and without a placement, for either keep,
+// on the first reading and on the next (more texts than it keeps, so entries are replaced).
+TEST(NodeReportMessage, MemoGivesWhatTheParseGives) {
+  GeoPlacement placed;
+  placed.projection.emplace(GeodeticOrigin{43.825300, -70.330400}, GeodesyMode::kTangent);
+  const GeoPlacement none;
+  const char* texts[] = {
+      "NAME=archie,X=10,Y=-5,LAT=43.8,LON=-70.3,SPD=1.5,HDG=90,TIME=123,TYPE=kayak",
+      "NAME=betty,X=11,Y=-5,LAT=43.8,LON=-70.3,SPD=1.5,HDG=90,TIME=123.25,TYPE=kayak",
+      "NAME=a,X=1,Y=2,SPD=1,HDG=0,LAT=junk,TIME=soon,TYPE=", "name=b,x=1,y=2,speed=3,heading=-90",
+      "NAME=a,X=1,Y=2,HDG=0", "NAME=a,X=1e9,Y=2,SPD=1,HDG=0",
+      "NAME=archie,LAT=43.8,LON=-70.3,SPD=1.5,HDG=90,TIME=5", ""};
+  const GeoPlacement* const placements[] = {&placed, &none, nullptr};
+  NodeReportMemo memo;
+  for (int round = 0; round < 2; ++round) {
+    for (const char* text : texts) {
+      for (const GeoPlacement* placement : placements) {
+        for (const NodeReportKeep keep : {NodeReportKeep::kPose, NodeReportKeep::kAll}) {
+          const auto want = parse_node_report(text, placement, keep);
+          const auto got = memo.parse(text, placement, keep);
+          EXPECT_EQ(got.error, want.error) << text;
+          ASSERT_EQ(got.value.has_value(), want.value.has_value()) << text;
+          if (!want.value) continue;
+          EXPECT_EQ(format_node_report(*got.value), format_node_report(*want.value)) << text;
+          EXPECT_EQ(got.value->placed_from_lat_lon, want.value->placed_from_lat_lon) << text;
+        }
+      }
+    }
+  }
+}
+
 TEST(NodeReportMessage, RoundTrip) {
   NodeReport r;
   r.name = "betty";
