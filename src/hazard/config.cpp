@@ -409,8 +409,9 @@ class Loader {
       warn(place(e) + parameter_value(e) + ": " + parsed.error + "; option rejected");
       return;
     }
-    if (auto error = setup_.config.options.add(std::move(*parsed.option))) {
-      warn(place(e) + parameter_value(e) + ": " + *error + "; option rejected");
+    const base::Result<std::size_t> added = setup_.config.options.add(std::move(*parsed.option));
+    if (!added) {
+      warn(place(e) + parameter_value(e) + ": " + added.error + "; option rejected");
     }
   }
 
