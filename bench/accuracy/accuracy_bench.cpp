@@ -228,7 +228,7 @@ SensingResult sense(const Track& track, const std::vector<Object>& objects,
             entries(std::string("hazard_file = field\nsensor_config = width=25, exp=4, "
                                 "pclass=0.85\nshow_swath = false\nshow_hazards = false\n"
                                 "show_detections = 0\n") + m.config),
-            [&](const std::string&) { return field; }),
+            [&](const std::string&) { return base::Result<std::string>::ok(field); }),
         hazard::SeedChoice{1, hazard::SeedSource::kCommandLine});
     std::vector<int> events(objects.size(), 0);
     driver.set_decision_observer([&](const hazard::Decision& d) {
@@ -413,7 +413,7 @@ MonteCarloScene monte_carlo_scene(double pd) {
 // loop), iterations at 4 Hz from the first mail to the last.
 int detections(const MonteCarloScene& s, int seed) {
   hazard::Driver driver(
-      hazard::load_configuration(s.config, [&](const std::string&) { return s.field; }),
+      hazard::load_configuration(s.config, [&](const std::string&) { return base::Result<std::string>::ok(s.field); }),
       hazard::SeedChoice{static_cast<std::uint64_t>(seed), hazard::SeedSource::kCommandLine});
   int n = 0;
   auto count = [&](const hazard::TimedOutputs& out) {

@@ -155,7 +155,7 @@ Measured measure_once(const Scene& s, const std::string& text,
   hazard::MissionOrigin origin;
   if (s.lat_lon) origin = {kLatOrigin, kLonOrigin, std::string("42.358436"), std::string("-71.087448")};
   auto driver = std::make_unique<hazard::Driver>(
-      hazard::load_configuration(block(s), [&](const std::string&) { return text; }, origin),
+      hazard::load_configuration(block(s), [&](const std::string&) { return base::Result<std::string>::ok(text); }, origin),
       hazard::SeedChoice{1, hazard::SeedSource::kCommandLine});
   driver->start(0);
   const std::size_t built = g_live_bytes;

@@ -47,7 +47,7 @@ Scene make_scene(int objects, int vehicles) {
   const std::string& text = field_text(objects);
   Scene s;
   s.driver = std::make_unique<hazard::Driver>(
-      hazard::load_configuration(config, [&](const std::string&) { return text; }),
+      hazard::load_configuration(config, [&](const std::string&) { return base::Result<std::string>::ok(text); }),
       hazard::SeedChoice{1, hazard::SeedSource::kCommandLine});
   s.half_extent_m = std::ceil(std::sqrt(static_cast<double>(objects))) * kSpacing_m / 2.0;
   s.driver->start(0);
@@ -105,7 +105,7 @@ void BM_ReferenceSurveyReplay(benchmark::State& state) {
   const hazard::Scenario s = hazard::reference_survey(2.0);
   for (auto _ : state) {
     hazard::Driver driver(
-        hazard::load_configuration(s.config, [](const std::string&) { return std::nullopt; }),
+        hazard::load_configuration(s.config, [](const std::string&) { return base::Result<std::string>::fail("no file"); }),
         hazard::SeedChoice{2024, hazard::SeedSource::kRandomSeed});
     hazard::play_mail(driver, s.mail, 4.0, s.end_time_s, {},
                       [](const hazard::Outputs& out) { benchmark::DoNotOptimize(out); });

@@ -69,7 +69,7 @@ constexpr const char* kSensorBlock =
 std::unique_ptr<hazard::Driver> make_driver(const std::string& field_text) {
   hazard::EngineSetup setup = hazard::load_configuration(
       hazard::config_entries(kSensorBlock, "pair_state_bench"),
-      [&field_text](const std::string&) { return field_text; });
+      [&field_text](const std::string&) { return base::Result<std::string>::ok(field_text); });
   const hazard::SeedChoice seed{1, hazard::SeedSource::kCommandLine};
   return std::make_unique<hazard::Driver>(std::move(setup), seed);
 }

@@ -75,7 +75,7 @@ std::unique_ptr<hazard::Driver> make_driver(const std::string& text) {
       {"hazard_file", "field.txt", "bench", 4},
   };
   return std::make_unique<hazard::Driver>(
-      hazard::load_configuration(config, [&](const std::string&) { return text; }),
+      hazard::load_configuration(config, [&](const std::string&) { return base::Result<std::string>::ok(text); }),
       hazard::SeedChoice{1, hazard::SeedSource::kCommandLine});
 }
 

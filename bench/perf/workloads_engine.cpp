@@ -34,7 +34,7 @@ std::uint64_t engine_survey() {
   std::uint64_t sum = kChecksumStart;
   for (int run = 0; run < 4; ++run) {
     hazard::Driver driver(
-        hazard::load_configuration(s.config, [](const std::string&) { return std::nullopt; }),
+        hazard::load_configuration(s.config, [](const std::string&) { return base::Result<std::string>::fail("no file"); }),
         hazard::SeedChoice{static_cast<std::uint64_t>(2024 + run), hazard::SeedSource::kRandomSeed});
     auto keep = [&sum](const hazard::Outputs& out) { sum = add_outputs(sum, out); };
     hazard::play_mail(driver, s.mail, 4.0, s.end_time_s, keep, keep);
@@ -45,7 +45,7 @@ std::uint64_t engine_survey() {
 std::uint64_t gate_selftest() {
   const hazard::Scenario s = hazard::reference_survey(1.0);
   hazard::Driver driver(
-      hazard::load_configuration(s.config, [](const std::string&) { return std::nullopt; }),
+      hazard::load_configuration(s.config, [](const std::string&) { return base::Result<std::string>::fail("no file"); }),
       hazard::SeedChoice{2024, hazard::SeedSource::kRandomSeed});
   std::uint64_t sum = kChecksumStart;
   auto keep = [&sum](const hazard::Outputs& out) { sum = add_outputs(sum, out); };
@@ -63,7 +63,7 @@ std::uint64_t engine_dense() {
       {"hazard_file", "field.txt", "perf", 5},
   };
   hazard::Driver driver(
-      hazard::load_configuration(config, [&](const std::string&) { return field; }),
+      hazard::load_configuration(config, [&](const std::string&) { return base::Result<std::string>::ok(field); }),
       hazard::SeedChoice{1, hazard::SeedSource::kRandomSeed});
   Fleet fleet;
   fleet.vehicles = kDenseVehicles;

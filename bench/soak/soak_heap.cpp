@@ -83,7 +83,7 @@ std::optional<hazard::Driver> make_driver(const std::string& mission_path) {
   const std::filesystem::path folder = mission->directory();
   hazard::EngineSetup setup = hazard::load_configuration(entries, [&](const std::string& path) {
     const std::filesystem::path p(path);
-    return base::read_file_text((p.is_relative() ? folder / p : p).string()).value;
+    return base::read_file_text((p.is_relative() ? folder / p : p).string());
   });
   const hazard::SeedChoice seed =
       hazard::resolve_seed(std::nullopt, setup.config, [] { return hazard::kUnseededSeed; });

@@ -32,7 +32,7 @@ std::vector<hazard::ConfigEntry> configuration() {
 }
 
 // The engine reads no files itself: hazard_file names would come through this reader.
-std::optional<std::string> no_files(const std::string&) { return std::nullopt; }
+base::Result<std::string> no_files(const std::string&) { return base::Result<std::string>::fail("no file"); }
 
 int print_detections(const hazard::TimedOutputs& timed) {
   int count = 0;

@@ -1,7 +1,7 @@
 #pragma once
 // Reading a whole input file, bounded and without surprises ("Special files").
 //
-// Contract (read_regular_file; WholeFile below also reads a pipe, for hazard_replay's logs):
+// Contract (read_file_text; WholeFile below also reads a pipe, for hazard_replay's logs):
 // - Only a regular file is read. A directory, FIFO, socket or device (/dev/zero) is refused with
 //   a reason, never read: the file is opened non-blocking, so a FIFO with no writer cannot hang
 //   the caller, and its type is checked on the open descriptor before any byte is read.
@@ -27,14 +27,6 @@ inline constexpr std::size_t kMaxInputFileBytes = std::size_t{512} * 1024 * 1024
 /// The file's bytes, or why not (the contract above).
 Result<std::string> read_file_text(const std::string& path,
                                    std::size_t max_bytes = kMaxInputFileBytes);
-
-/// read_file_text in the older form, kept for the two calls in src/moos (mission.cpp) until
-/// they move to read_file_text.
-struct FileText {
-  std::optional<std::string> text;  ///< the bytes, when the file was read
-  std::string problem;              ///< why not, when text is empty
-};
-FileText read_regular_file(const std::string& path, std::size_t max_bytes = kMaxInputFileBytes);
 
 /// The whole of a file for a reader that takes every byte at once and may be given large ones
 /// (hazard_replay's logs, hundreds of MB). A regular file is mapped read-only: no copy and no

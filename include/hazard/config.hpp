@@ -21,6 +21,7 @@
 #include <variant>
 #include <vector>
 
+#include "base/result.hpp"
 #include "hazard/geodesy.hpp"
 #include "hazard/hazard_field.hpp"
 #include "hazard/sensor_options.hpp"
@@ -157,8 +158,9 @@ struct MissionOrigin {
   std::optional<std::string> lon_text;
 };
 
-/// Reads a hazard file by the path written in the configuration; nullopt if it cannot be read.
-using HazardFileReader = std::function<std::optional<std::string>(const std::string& path)>;
+/// Reads a hazard file by the path written in the configuration: its text, or why it cannot be
+/// read (the reason goes into the configuration warning after the file's name).
+using HazardFileReader = std::function<base::Result<std::string>(const std::string& path)>;
 
 EngineSetup load_configuration(const std::vector<ConfigEntry>& entries,
                                const HazardFileReader& read);

@@ -14,6 +14,7 @@
 #include <string_view>
 #include <vector>
 
+#include "base/result.hpp"
 #include "hazard/messages/options_summary.hpp"
 
 namespace hazard {
@@ -45,8 +46,9 @@ using OptionIndex = std::size_t;
 
 class SensorOptions {
  public:
-  /// Adds an option; returns an error text (and changes nothing) if its width is taken.
-  std::optional<std::string> add(SensorOption option);
+  /// Adds an option: the number of options now configured, or (changing nothing) why not when
+  /// its width is taken.
+  base::Result<std::size_t> add(SensorOption option);
 
   bool empty() const { return sorted_.empty(); }
   std::size_t size() const { return sorted_.size(); }

@@ -96,11 +96,6 @@ Result<std::string> read_file_text(const std::string& path, std::size_t max_byte
   return R::ok(std::move(text));
 }
 
-FileText read_regular_file(const std::string& path, std::size_t max_bytes) {
-  Result<std::string> read = read_file_text(path, max_bytes);
-  return {std::move(read.value), std::move(read.error)};
-}
-
 Result<WholeFile> WholeFile::open(const std::string& path, std::size_t max_bytes) {
   using R = Result<WholeFile>;
   // Blocking: a FIFO waits for its writer, as a reader of a pipe should.

@@ -389,12 +389,13 @@ class Loader {
   void load_hazard_file(const ConfigEntry& e) {
     HazardFileStatus status;
     status.path = std::string(base::trim(e.value));
-    const std::optional<std::string> text = read_(status.path);
+    const base::Result<std::string> text = read_(status.path);
     if (!text) {
-      warn(place(e) + "cannot read hazard file '" + base::log_excerpt(status.path) + "'");
+      warn(place(e) + "cannot read hazard file '" + base::log_excerpt(status.path) +
+           "': " + base::log_excerpt(text.error));
     } else {
       status.read_ok = true;
-      status.counts = load_hazard_file_text(*text, base::escape_for_log(status.path),
+      status.counts = load_hazard_file_text(*text.value, base::escape_for_log(status.path),
                                             setup_.field, setup_.config_warnings,
                                             &setup_.placement);
     }
@@ -408,8 +409,9 @@ class Loader {
       warn(place(e) + parameter_value(e) + ": " + parsed.error + "; option rejected");
       return;
     }
-    if (auto error = setup_.config.options.add(std::move(*parsed.option))) {
-      warn(place(e) + parameter_value(e) + ": " + *error + "; option rejected");
+    const base::Result<std::size_t> added = setup_.config.options.add(std::move(*parsed.option));
+    if (!added) {
+      warn(place(e) + parameter_value(e) + ": " + added.error + "; option rejected");
     }
   }
 

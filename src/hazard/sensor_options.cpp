@@ -84,10 +84,11 @@ SensorConfigParse parse_sensor_config(std::string_view value) {
   return out;
 }
 
-std::optional<std::string> SensorOptions::add(SensorOption option) {
+base::Result<std::size_t> SensorOptions::add(SensorOption option) {
   for (const SensorOption& o : sorted_) {
     if (std::fabs(o.width_m - option.width_m) <= kWidthMatchTolerance_m) {
-      return "width " + base::fmt(option.width_m) + " is already configured";
+      return base::Result<std::size_t>::fail("width " + base::fmt(option.width_m) +
+                                             " is already configured");
     }
   }
   config_order_.push_back(option.as_written);
@@ -95,7 +96,7 @@ std::optional<std::string> SensorOptions::add(SensorOption option) {
       sorted_.begin(), sorted_.end(), option.width_m,
       [](double w, const SensorOption& o) { return w < o.width_m; });
   sorted_.insert(pos, std::move(option));
-  return std::nullopt;
+  return base::Result<std::size_t>::ok(sorted_.size());
 }
 
 OptionsSummary SensorOptions::summary() const { return OptionsSummary{config_order_}; }

@@ -332,16 +332,16 @@ class Reader {
     if (!within_budget(++included_files_, options_.max_included_files, "included files",
                        file_name, line_no))
       return;
-    const base::FileText content = base::read_regular_file(path.string());
-    if (!content.text) {
-      error(file_name, line_no, "cannot read included file " + shown + ": " + content.problem);
+    const base::Result<std::string> content = base::read_file_text(path.string());
+    if (!content) {
+      error(file_name, line_no, "cannot read included file " + shown + ": " + content.error);
       return;
     }
-    expanded_bytes_ += content.text->size();
+    expanded_bytes_ += content.value->size();
     if (!within_budget(expanded_bytes_, options_.max_expanded_bytes, "bytes", file_name, line_no))
       return;
     include_stack_.push_back(canonical);
-    expand(*content.text, shown, depth + 1);
+    expand(*content.value, shown, depth + 1);
     include_stack_.pop_back();
   }
 
@@ -427,13 +427,13 @@ bool MissionError::concerns(std::string_view app_name) const {
 
 std::optional<MissionFile> MissionFile::load(const std::string& path, const MissionOptions& options,
                                              std::vector<MissionError>* errors) {
-  const base::FileText content = base::read_regular_file(path);
-  if (!content.text) {
+  const base::Result<std::string> content = base::read_file_text(path);
+  if (!content) {
     if (errors)
-      errors->push_back(MissionError{path, 0, "cannot read the mission file: " + content.problem, {}});
+      errors->push_back(MissionError{path, 0, "cannot read the mission file: " + content.error, {}});
     return std::nullopt;
   }
-  return parse(*content.text, path, options, errors);
+  return parse(*content.value, path, options, errors);
 }
 
 MissionFile MissionFile::parse(std::string_view text, const std::string& file_name,

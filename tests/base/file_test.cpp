@@ -92,14 +92,6 @@ std::optional<WholeFile> open_whole(const std::string& path, std::size_t max_byt
   return std::move(whole.value);
 }
 
-// The older form src/moos still calls gives the same bytes and the same reasons.
-TEST_F(ReadRegularFile, TheOlderFormGivesWhatReadFileTextGives) {
-  const std::string path = write("old.txt", "abc");
-  EXPECT_EQ(read_regular_file(path).text, read_file_text(path).value);
-  EXPECT_EQ(read_regular_file(dir_.string()).problem, read_file_text(dir_.string()).error);
-  EXPECT_EQ(read_regular_file(dir_.string()).problem, "is a directory");
-}
-
 TEST_F(WholeFileTest, MapsARegularFileByteForByte) {
   const std::string bytes = std::string("a\0b\r\nc", 6) + std::string(300000, 'x') + "end";
   std::string problem;

@@ -209,6 +209,16 @@ TEST(Config, ControlBytesOfTheMissionAreEscapedInWarnings_Hardening) {
   EXPECT_TRUE(contains(s.config_warnings, "bad\\x1B[2J.txt:1: unrecognised line 'junk'"));
 }
 
+TEST(Config, AnUnreadableHazardFileWarningEndsWithTheReadersReason) {
+  const EngineSetup s = load_configuration(
+      testing::entries("hazard_file = charts\n"),
+      [](const std::string&) { return base::Result<std::string>::fail("is a directory"); });
+  EXPECT_TRUE(contains(s.config_warnings,
+                       "test.moos:1: cannot read hazard file 'charts': is a directory"));
+  ASSERT_EQ(s.hazard_files.size(), 1u);
+  EXPECT_FALSE(s.hazard_files[0].read_ok);
+}
+
 TEST(Config, DeadFeaturesWarnThatTheyHaveNoEffect) {
   const EngineSetup s = setup_from("rn_algorithm = uniform,pct=0.5\nrn_uniform_pct = 0.3\n");
   EXPECT_TRUE(contains(s.config_warnings, "test.moos:1: parameter 'rn_algorithm'"));

@@ -22,7 +22,7 @@ struct ReplayRun {
 // is delivered before it; iterations at `tick_hz`.
 ReplayRun replay(const Scenario& s, double tick_hz, std::uint64_t seed = 2024) {
   hazard::Driver driver(
-      load_configuration(s.config, [](const std::string&) { return std::nullopt; }),
+      load_configuration(s.config, testing::no_files),
       SeedChoice{seed, SeedSource::kRandomSeed});
   ReplayRun run;
   driver.set_decision_observer(

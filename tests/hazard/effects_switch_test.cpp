@@ -48,7 +48,7 @@ std::string serialise(const Outputs& o) {
 
 SceneRun run(const Scene& scene, const std::string& switch_line) {
   hazard::Driver driver(load_configuration(entries(scene.block + switch_line),
-                                   [](const std::string&) { return std::nullopt; }, scene.origin),
+                                   [](const std::string&) { return base::Result<std::string>::fail("no file"); }, scene.origin),
                 SeedChoice{77, SeedSource::kCommandLine});
   SceneRun r;
   driver.set_decision_observer(

@@ -121,7 +121,7 @@ TEST(Geodesy, LongitudeDifferencesAreTakenAcrossTheAntimeridian) {
 // ---- node reports ----------------------------------------------------------------------------------
 
 EngineSetup with_origin(const std::string& block, MissionOrigin origin) {
-  return load_configuration(entries(block), [](const std::string&) { return std::nullopt; },
+  return load_configuration(entries(block), testing::no_files,
                             origin);
 }
 

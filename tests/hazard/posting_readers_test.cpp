@@ -31,7 +31,7 @@ Played play(PostingReaders readers, std::uint64_t seed) {
   }
   s.mail.insert(s.mail.begin() + static_cast<std::ptrdiff_t>(s.mail.size() / 2),
                 TimedMail{s.mail[s.mail.size() / 2].time_s, "PMV_CONNECT", "true"});
-  const Engine built(load_configuration(s.config, [](const std::string&) { return std::nullopt; }),
+  const Engine built(load_configuration(s.config, testing::no_files),
                      SeedChoice{1, SeedSource::kFixed});
   Driver driver(built.with_seed({seed, SeedSource::kCommandLine}, readers));
   Played r;

@@ -26,14 +26,19 @@ inline std::vector<ConfigEntry> entries(std::string_view block) {
   return config_entries(block, "test.moos");
 }
 
+/// A hazard-file reader for a block that names no hazard file.
+inline base::Result<std::string> no_files(const std::string& path) {
+  return base::Result<std::string>::fail("'" + path + "' is not among the test's files");
+}
+
 /// Loads a block; `files` maps hazard_file paths to their text.
 inline EngineSetup setup_from(std::string_view block,
                         const std::map<std::string, std::string>& files = {}) {
   return load_configuration(entries(block),
-                            [files](const std::string& path) -> std::optional<std::string> {
+                            [files](const std::string& path) {
                               const auto it = files.find(path);
-                              if (it == files.end()) return std::nullopt;
-                              return it->second;
+                              if (it == files.end()) return no_files(path);
+                              return base::Result<std::string>::ok(it->second);
                             });
 }
 

@@ -373,7 +373,7 @@ TEST(SensingTrackEngine, SweepingTheReferenceSurveyFindsWhatSamplingFinds_Style1
     std::vector<ConfigEntry> config = s.config;
     if (sweep) config.push_back({"swath_sweep", "true", "scenario.moos", 99});
     hazard::Driver driver(
-        load_configuration(config, [](const std::string&) { return std::nullopt; }),
+        load_configuration(config, testing::no_files),
         SeedChoice{2024, SeedSource::kRandomSeed});
     Decisions r;
     r.attach(driver);

@@ -11,7 +11,7 @@ SensorOptions table_of(std::initializer_list<double> widths) {
   for (double w : widths) {
     SensorOption o;
     o.width_m = w;
-    EXPECT_FALSE(t.add(o));
+    EXPECT_TRUE(t.add(o));
   }
   return t;
 }
@@ -61,7 +61,9 @@ TEST(SensorOptionsTable, SortedByWidthAndDuplicatesRefused) {
   EXPECT_EQ(t.option(2).width_m, 50);
   SensorOption dup;
   dup.width_m = 25.0000001;
-  EXPECT_TRUE(t.add(dup));  // same width within 1e-6 m: refused
+  const base::Result<std::size_t> refused = t.add(dup);  // same width within 1e-6 m
+  EXPECT_FALSE(refused);
+  EXPECT_NE(refused.error.find("is already configured"), std::string::npos) << refused.error;
   EXPECT_EQ(t.size(), 3u);
 }
 

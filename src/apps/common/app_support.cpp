@@ -20,14 +20,10 @@ std::uint64_t operating_system_seed() {
   }
 }
 
-std::optional<std::string> read_text_file(const std::string& path) {
-  return base::read_file_text(path).value;
-}
-
 hazard::HazardFileReader mission_relative_reader(std::string mission_directory) {
   return [dir = std::filesystem::path(std::move(mission_directory))](const std::string& path) {
     const std::filesystem::path p(path);
-    return read_text_file((p.is_relative() ? dir / p : p).string());
+    return base::read_file_text((p.is_relative() ? dir / p : p).string());
   };
 }
 

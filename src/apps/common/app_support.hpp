@@ -19,11 +19,9 @@ namespace app_support {
 /// only if that source is unavailable. Used when `seed_random = true` (differences.md "Seeds").
 std::uint64_t operating_system_seed();
 
-/// The whole file as bytes, or nullopt if it cannot be opened or read.
-std::optional<std::string> read_text_file(const std::string& path);
-
 /// A hazard-file reader for the engine's configuration loader: relative paths are resolved
-/// against `mission_directory` (the folder of the .moos file), as the original does.
+/// against `mission_directory` (the folder of the .moos file), as the original does; a file that
+/// cannot be read gives base::read_file_text's reason.
 hazard::HazardFileReader mission_relative_reader(std::string mission_directory);
 
 /// The engine's MissionOrigin from a mission's LatOrigin/LongOrigin globals: any `mission` with

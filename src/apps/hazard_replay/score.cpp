@@ -30,8 +30,10 @@ std::string configure(mission::HazardMetric& metric, const moos::MissionFile& mi
     if (!r.warning.empty()) err << kMetricAppName << ": " << at(line) << r.warning << "\n";
     if (!r.hazard_file) continue;
     const auto text = read(*r.hazard_file);
-    if (!text) return at(line) + "cannot read hazard_file '" + *r.hazard_file + "'";
-    for (const std::string& w : metric.load_hazard_file(*r.hazard_file, *text)) {
+    if (!text) {
+      return at(line) + "cannot read hazard_file '" + *r.hazard_file + "': " + text.error;
+    }
+    for (const std::string& w : metric.load_hazard_file(*r.hazard_file, *text.value)) {
       err << kMetricAppName << ": " << w << "\n";
     }
   }

@@ -16,10 +16,11 @@ void HazardMetricApp::load_hazard_file(const moos::ConfigLine& line, const std::
   const auto text = app_support::mission_relative_reader(settings().mission_directory)(file);
   if (!text) {
     report_run_warning(mission::HazardMetric::hazard_file_missing(file));
-    report_config_warning(mission_app::at_line(line, "cannot read hazard_file '" + file + "'"));
+    report_config_warning(
+        mission_app::at_line(line, "cannot read hazard_file '" + file + "': " + text.error));
     return;
   }
-  for (const std::string& w : metric_.load_hazard_file(file, *text)) report_config_warning(w);
+  for (const std::string& w : metric_.load_hazard_file(file, *text.value)) report_config_warning(w);
 }
 
 bool HazardMetricApp::on_start_up() {

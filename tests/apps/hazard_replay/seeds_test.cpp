@@ -163,7 +163,7 @@ TEST(ReplaySeeds, StudyEngineBuildsNoVisualsAndTheSameReports) {
   }
   const hazard::Engine built(
       hazard::load_configuration(hazard::config_entries(block, "m.moos"),
-                                 [](const std::string&) { return std::nullopt; }),
+                                 [](const std::string&) { return base::Result<std::string>::fail("no file"); }),
       hazard::SeedChoice{});
   std::vector<std::pair<std::string, std::string>> texts;  // the mail's storage
   for (int k = 0; k <= 150; ++k) {

@@ -137,7 +137,7 @@ TEST_F(MetricOnBus, MissingHazardFileIsTheOriginalsRunWarningAndAConfigWarning) 
                            mission::HazardMetric::hazard_file_missing("nowhere.txt")));
   EXPECT_TRUE(any_contains(app->appcast().config_warnings(),
                            ":" + std::to_string(mission_test::first_block_line()) +
-                               ": cannot read hazard_file 'nowhere.txt'"));
+                               ": cannot read hazard_file 'nowhere.txt': cannot be opened: "));
 }
 
 TEST_F(MetricOnBus, WarningsNameTheirPlace) {

@@ -172,7 +172,8 @@ TEST_F(SensorOnBus, ConfigWarningsNameFileAndLineAndTheAppKeepsRunning_D36_D38) 
   EXPECT_EQ(warnings_with(appcast(), line(0) + ": parameter 'swath_transparency' value '2'"), 1);
   EXPECT_EQ(warnings_with(appcast(), line(1) + ": unknown parameter 'bogus_param'"), 1);
   EXPECT_EQ(warnings_with(appcast(), line(2) + ": parameter 'sensor_config'"), 1);
-  EXPECT_EQ(warnings_with(appcast(), line(3) + ": cannot read hazard file 'missing.txt'"), 1);
+  EXPECT_EQ(warnings_with(appcast(), line(3) + ": cannot read hazard file 'missing.txt': cannot be opened: "),
+            1);  // the reader's reason reaches the user
   EXPECT_EQ(warnings_with(appcast(), line(5) + ": parameter 'min_classify_interval' repeated"), 1);
   EXPECT_EQ(warnings_with(appcast(), "AppTick repeated (" + line(7) + ")"), 1);
   EXPECT_EQ(appcast().config_warnings().size(), 6u);
@@ -413,7 +414,7 @@ TEST_F(SensorOnBus, PostsExactlyWhatTheEngineDecidesWhenDrivenTheSameWay) {
   // The reference: the same block through the engine alone, driven as hazard_replay drives it.
   hazard::EngineSetup setup = hazard::load_configuration(
       app_support::to_config_entries(mission->block("uFldHazardSensor")->lines),
-      [](const std::string&) { return std::optional<std::string>(); });
+      [](const std::string&) { return base::Result<std::string>::fail("no file"); });
   const hazard::SeedChoice seed = hazard::resolve_seed(std::nullopt, setup.config, nullptr);
   hazard::Driver reference(std::move(setup), seed);
   std::vector<hazard::Posting> expected = reference.start(kT0).outputs.postings;

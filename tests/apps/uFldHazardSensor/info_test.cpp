@@ -187,7 +187,7 @@ TEST(Interface, EverySubscriptionExampleIsHandledByTheEngineWithoutAWarning) {
   hazard::EngineSetup setup = hazard::load_configuration(
       {{"sensor_config", "width=25,exp=4,pclass=0.8", "m.moos", 1},
        {"hazard", "x=51,y=11.3,label=12,type=hazard", "m.moos", 2}},
-      [](const std::string&) { return std::optional<std::string>(); });
+      [](const std::string&) { return base::Result<std::string>::fail("no file"); });
   hazard::Driver driver(std::move(setup), hazard::SeedChoice{});
   driver.start(0.0);
   // archie detects object 12 for certain (pd 1), so the classify example finds its credit.

@@ -14,7 +14,7 @@ TEST(OptionsSummary, ManualBareBonesBlockInConfigOrder_D21_T3) {
                            "width=10, exp=6, pclass=0.93"}) {
     const auto p = parse_sensor_config(line);
     ASSERT_TRUE(p.option);
-    ASSERT_FALSE(t.add(*p.option));
+    ASSERT_TRUE(t.add(*p.option));
   }
   EXPECT_EQ(format_options_summary(t.summary()),
             "width=25,exp=4,pclass=0.80:width=50,exp=2,pclass=0.60:width=10,exp=6,pclass=0.93");
