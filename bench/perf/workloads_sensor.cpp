@@ -111,7 +111,7 @@ std::uint64_t sensor_sparse() {
 // The dense field (25 m² per object, the density of 1M objects over 5 km x 5 km): 40,000
 // objects 5 m apart, 100 vehicles in lanes 10 m apart, 20 MOOS seconds: about 250 detections
 // and as many classify requests per MOOS second, 1,000 node reports and 400 sensor requests.
-std::uint64_t sensor_dense() {
+static SensorLoad dense_load() {
   SensorLoad load;
   load.objects = 40000;
   load.spacing_m = 5.0;
@@ -119,21 +119,17 @@ std::uint64_t sensor_dense() {
   load.fleet.half_extent_m = 500.0;
   load.fleet.lane_spacing_m = 10.0;
   load.duration_s = 20.0;
-  return run_sensor(load);
+  return load;
 }
+
+std::uint64_t sensor_dense() { return run_sensor(dense_load()); }
 
 // The dense field when the sensor was kept from its core: 20 MOOS seconds of the dense load
 // (about 20,000 node reports, 8,000 sensor requests) arrive at once, and the backlog
 // (mail_backlog.hpp) hands them to the engine 2,000 per iteration. Its cost must follow what it
 // hands over, not what it holds: a sensor that fell behind must not fall further behind.
 std::uint64_t sensor_dense_late() {
-  SensorLoad load;
-  load.objects = 40000;
-  load.spacing_m = 5.0;
-  load.fleet.vehicles = 100;
-  load.fleet.half_extent_m = 500.0;
-  load.fleet.lane_spacing_m = 10.0;
-  load.duration_s = 20.0;
+  SensorLoad load = dense_load();
   load.steps_per_turn = 400;
   return run_sensor(load);
 }

@@ -39,6 +39,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <string_view>
 #include <vector>
 
 #include "moos/limits.hpp"
@@ -104,6 +105,11 @@ struct SwitchValues {
   std::optional<std::uint64_t> whole(const std::string& name) const;
   std::optional<double> number(const std::string& name) const;
 };
+
+/// True for `--NAME=value` with NAME a capital letter then letters, digits or '_': a mission
+/// macro, as the offline tools (hazard_replay, hazard_study) take them beside their own
+/// lower-case switches, so that a lower-case unknown switch stays an error (most likely a typo).
+bool is_macro_argument(std::string_view arg);
 
 /// Reads `args` (without argv[0]) with `table` (see the contract).
 SwitchValues parse_switches(const std::vector<std::string>& args, const SwitchTable& table);

@@ -284,4 +284,16 @@ LaunchAction decide_launch(const CommandLine& cl) {
   return LaunchAction::kHelp;  // unreachable: every switch is listed
 }
 
+bool is_macro_argument(std::string_view arg) {
+  if (arg.size() < 5 || arg.substr(0, 2) != "--" || arg[2] < 'A' || arg[2] > 'Z') return false;
+  const auto eq = arg.find('=');
+  if (eq == std::string_view::npos) return false;
+  for (const char c : arg.substr(3, eq - 3)) {
+    const bool word = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') ||
+                      c == '_';
+    if (!word) return false;
+  }
+  return true;
+}
+
 }  // namespace moos

@@ -38,29 +38,11 @@ std::optional<SeedRange> parse_seed_range(std::string_view text) {
   return SeedRange{*first, *last};
 }
 
-namespace {
-
-/// `--NAME=value` with NAME a capital letter then letters, digits or '_': a mission macro, as
-/// MOOS apps take them. A lower-case unknown switch stays an error (most likely a typo).
-bool is_substitution(std::string_view arg) {
-  if (arg.size() < 5 || arg.substr(0, 2) != "--" || arg[2] < 'A' || arg[2] > 'Z') return false;
-  const auto eq = arg.find('=');
-  if (eq == std::string_view::npos) return false;
-  for (const char c : arg.substr(3, eq - 3)) {
-    const bool word = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') ||
-                      c == '_';
-    if (!word) return false;
-  }
-  return true;
-}
-
-}  // namespace
-
 ParsedArgs parse_args(const std::vector<std::string>& all_args) {
   std::vector<std::string> args;
   std::map<std::string, std::string> substitutions;
   for (const std::string& arg : all_args) {
-    if (!is_substitution(arg)) {
+    if (!moos::is_macro_argument(arg)) {
       args.push_back(arg);
       continue;
     }

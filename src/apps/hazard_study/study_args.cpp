@@ -35,19 +35,6 @@ const moos::SwitchTable& switch_table() {
   return table;
 }
 
-/// `--NAME=value` with NAME a capital letter then letters, digits or '_' (a mission macro).
-bool is_substitution(std::string_view arg) {
-  if (arg.size() < 5 || arg.substr(0, 2) != "--" || arg[2] < 'A' || arg[2] > 'Z') return false;
-  const auto eq = arg.find('=');
-  if (eq == std::string_view::npos) return false;
-  for (const char c : arg.substr(3, eq - 3)) {
-    const bool word = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') ||
-                      c == '_';
-    if (!word) return false;
-  }
-  return true;
-}
-
 std::optional<std::pair<std::uint64_t, std::uint64_t>> parse_seed_range(std::string_view text) {
   const auto dots = text.find("..");
   if (dots == std::string_view::npos) return std::nullopt;
@@ -154,7 +141,7 @@ ParsedArgs parse_args(const std::vector<std::string>& all_args) {
   Options o;
   std::vector<std::string> args;
   for (const std::string& arg : all_args) {
-    if (!is_substitution(arg)) {
+    if (!moos::is_macro_argument(arg)) {
       args.push_back(arg);
       continue;
     }
