@@ -113,6 +113,14 @@ TEST(StudyField, BadFieldValuesAreErrorsNamingTheOption) {
                 "--field: needs gen_hazards options on one line", 0), 0u);
 }
 
+TEST(StudyField, AFieldTheGeneratorCannotPlaceIsExit2NamingField) {
+  // A sliver of a region: gen_hazards refuses it before any draw.
+  const std::string err =
+      study({"--field=--polygon=0,0:10000,10000:10000,10001 --objects=1,hazard"}, 2);
+  EXPECT_EQ(err.rfind("hazard_study: --field: '--polygon=0,0:10000,10000:10000,10001': ", 0), 0u)
+      << err;
+}
+
 TEST(StudyField, BadFieldSeedsAreErrorsNamingTheOption) {
   const std::string field = "--field=" + kField;
   EXPECT_EQ(error_of({"--field-seed=3"}), "--field-seed and --field-seeds need --field (the field to generate)");
