@@ -47,10 +47,12 @@ ParsedField parse_field(const std::string& text) {
       return fail("'" + base::excerpt(word) + "': " + why);
   gen_hazards::CommandLine cli = gen_hazards::parse_command_line(words);
   if (cli.help || cli.version)
-    return fail("takes gen_hazards' field options (see gen_hazards --help), not --help or --version");
+    return fail(
+        "takes gen_hazards' field options (see gen_hazards --help), not --help or --version");
   if (!cli.errors.empty()) return fail(cli.errors.front());
   if (cli.config.sets.empty())
-    return fail("needs at least one --objects=N,TYPE and a --polygon: '" + base::excerpt(text) + "'");
+    return fail("needs at least one --objects=N,TYPE and a --polygon: '" + base::excerpt(text) +
+                "'");
   return ParsedField{FieldSpec{std::move(cli.config), std::move(cli.recorded_args)}, {}};
 }
 

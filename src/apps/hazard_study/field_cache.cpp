@@ -26,7 +26,8 @@ std::string key_of(const std::vector<moos::ConfigLine>& lines, const char* skipp
 /// The value kept under `key`, or nullptr.
 template <class T>
 T* find(std::deque<std::pair<std::string, T>>& kept, const std::string& key) {
-  const auto it = std::find_if(kept.begin(), kept.end(), [&](const auto& k) { return k.first == key; });
+  const auto it =
+      std::find_if(kept.begin(), kept.end(), [&](const auto& k) { return k.first == key; });
   return it == kept.end() ? nullptr : &it->second;
 }
 
@@ -50,7 +51,8 @@ void FieldCache::start_field(std::optional<std::pair<std::string, std::string>> 
 
 base::Result<std::string> FieldCache::read(const std::string& mission_directory,
                                            const std::string& path) {
-  if (generated_ && path == generated_->first) return base::Result<std::string>::ok(generated_->second);
+  if (generated_ && path == generated_->first)
+    return base::Result<std::string>::ok(generated_->second);
   const std::filesystem::path p(path);
   const std::string resolved =
       (p.is_relative() ? std::filesystem::path(mission_directory) / p : p).string();
@@ -66,11 +68,15 @@ hazard::Engine FieldCache::sensor_engine(const std::vector<moos::ConfigLine>& li
   const hazard::Engine* built = find(engines_, key);
   if (!built) {
     ++builds_;
-    const auto reader = [&](const std::string& path) { return read(settings.mission_directory, path); };
+    const auto reader = [&](const std::string& path) {
+      return read(settings.mission_directory, path);
+    };
     // random_seed is always given (mission_plan.hpp), so the operating system is never asked.
+    const auto no_os_seed = [] { return hazard::kUnseededSeed; };
     built = &keep(engines_, std::move(key),
-                  app_support::make_sensor_engine(lines, reader, app_support::mission_origin(settings),
-                                                  std::nullopt, [] { return hazard::kUnseededSeed; }));
+                  app_support::make_sensor_engine(lines, reader,
+                                                  app_support::mission_origin(settings),
+                                                  std::nullopt, no_os_seed));
   }
   return built->with_seed(hazard::SeedChoice{seed, hazard::SeedSource::kRandomSeed}, readers);
 }
