@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 
 #include "mission/metric.hpp"
 
@@ -329,6 +330,30 @@ TEST(TransitLane, FirstXWithTheFewestHazardsByHand_Spec14_2) {
   ASSERT_TRUE(single.has_value());
   EXPECT_EQ(single->x_m, 20);
   EXPECT_EQ(single->hazard_count, 1);  // counted, unlike the original's 0
+}
+
+// The lane's counts come from the sorted x of the points (two binary searches per strip); they
+// equal the rule's direct count, points on the strip's and the region's edges included.
+TEST(TransitLane, EqualsTheDirectCountOnRandomPoints) {
+  const auto region = std::get<ConvexPolygon>(ConvexPolygon::parse("0,0:300,0:300,-200:0,-200"));
+  std::vector<glm::dvec2> points;
+  std::uint64_t state = 12345;
+  auto next = [&] { return (state = state * 6364136223846793005ULL + 1442695040888963407ULL) >> 40; };
+  for (int i = 0; i < 400; ++i)  // whole metres, some outside the region's y extent
+    points.push_back({static_cast<double>(next() % 320) - 10, -static_cast<double>(next() % 240)});
+  const double w = 20.0;
+  std::optional<TransitLane> direct;
+  for (double x = w; x < 300 - w; x += 1.0) {
+    int n = 0;
+    for (const auto& p : points)
+      n += (p.x >= x - w && p.x <= x + w && p.y >= -200 && p.y <= 0) ? 1 : 0;
+    if (!direct || n < direct->hazard_count) direct = TransitLane{x, n};
+  }
+  const auto lane = min_hazard_lane(region, points, w);
+  ASSERT_TRUE(lane && direct);
+  EXPECT_EQ(lane->x_m, direct->x_m);
+  EXPECT_EQ(lane->hazard_count, direct->hazard_count);
+  EXPECT_EQ(min_hazard_lane(region, points, -1.0)->hazard_count, 0);  // an empty strip
 }
 
 }  // namespace

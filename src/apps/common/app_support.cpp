@@ -39,8 +39,17 @@ hazard::Engine make_sensor_engine(const std::vector<moos::ConfigLine>& block_lin
                                   const hazard::MissionOrigin& origin,
                                   std::optional<std::uint64_t> command_line_seed,
                                   const std::function<std::uint64_t()>& os_seed) {
-  hazard::EngineSetup setup = hazard::load_configuration(
-      to_config_entries(block_lines), mission_relative_reader(mission_directory), origin);
+  return make_sensor_engine(block_lines, mission_relative_reader(mission_directory), origin,
+                            command_line_seed, os_seed);
+}
+
+hazard::Engine make_sensor_engine(const std::vector<moos::ConfigLine>& block_lines,
+                                  const hazard::HazardFileReader& read,
+                                  const hazard::MissionOrigin& origin,
+                                  std::optional<std::uint64_t> command_line_seed,
+                                  const std::function<std::uint64_t()>& os_seed) {
+  hazard::EngineSetup setup =
+      hazard::load_configuration(to_config_entries(block_lines), read, origin);
   const hazard::SeedChoice seed = hazard::resolve_seed(command_line_seed, setup.config, os_seed);
   return hazard::Engine(std::move(setup), seed);
 }

@@ -49,6 +49,13 @@ hazard::Engine make_sensor_engine(const std::vector<moos::ConfigLine>& block_lin
                                   std::optional<std::uint64_t> command_line_seed,
                                   const std::function<std::uint64_t()>& os_seed);
 
+/// The same, hazard files read by `read` (a host that serves a field from memory).
+hazard::Engine make_sensor_engine(const std::vector<moos::ConfigLine>& block_lines,
+                                  const hazard::HazardFileReader& read,
+                                  const hazard::MissionOrigin& origin,
+                                  std::optional<std::uint64_t> command_line_seed,
+                                  const std::function<std::uint64_t()>& os_seed);
+
 /// --help lines of the switches every app takes (the MOOS-IvP wording): --alias and the four
 /// information switches.
 std::string information_switches_help(const std::string& app_name);

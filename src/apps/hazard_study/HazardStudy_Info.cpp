@@ -4,8 +4,9 @@ namespace hazard_study {
 
 std::string usage_line() {
   return "Usage: hazard_study MISSION.moos [--seed=N | --seeds=A..B] [--setting=LABEL]\n"
-         "         [--set=BLOCK.NAME=VALUE ...] [--max-time=S] [--deploy-at=S] [--final=V,...]\n"
-         "         [--alog=OUT.alog] [--summary] [--NAME=value ...]";
+         "         [--set=BLOCK.NAME=VALUE ...] [--field=\"GEN_HAZARDS OPTIONS\"\n"
+         "         [--field-seed=N | --field-seeds=A..B]] [--max-time=S] [--deploy-at=S]\n"
+         "         [--final=V,...] [--alog=OUT.alog] [--summary] [--NAME=value ...]";
 }
 
 std::string help_text() {
@@ -23,6 +24,7 @@ std::string help_text() {
          "  {\"setting\":L,\"seed\":S,\"end\":E,\"score\":X,\"found\":F,\"missed\":M,\n"
          "   \"false_alarms\":A,\"time_used\":T,\"detections\":D,\"classifications\":C,\"sim_s\":R}\n"
          "E is graded, empty_report or max_time; values the mission did not produce are null.\n"
+         "With --field, \"field_seed\":G follows \"setting\".\n"
          "\n"
          "Options:\n"
          "  --seed=N            the sensor's seed (replaces random_seed); default 1\n"
@@ -32,6 +34,13 @@ std::string help_text() {
          "                      of NAME are replaced; repeat for several lines or parameters)\n"
          "  --setting=LABEL     start a new setting: the --set that follow belong to it;\n"
          "                      every setting runs every seed\n"
+         "  --field=\"OPTIONS\"   generate the field with gen_hazards' options (blank-separated:\n"
+         "                      --polygon=..., --objects=N,TYPE, --exp, --aspect_*; not --seed\n"
+         "                      or --output; at most 1000000 objects), in memory; it is the\n"
+         "                      hazard_file of every uFldHazardSensor and uFldHazardMetric\n"
+         "  --field-seed=N      the field's seed (gen_hazards --seed); default 1\n"
+         "  --field-seeds=A..B  one field per seed A to B, each run with every setting and\n"
+         "                      seed (field seeds x seeds at most 10000000)\n"
          "  --max-time=S        simulated seconds after deployment before a mission is\n"
          "                      stopped (default 12000)\n"
          "  --deploy-at=S       simulated seconds from the start to DEPLOY_ALL (default 1)\n"
@@ -46,9 +55,11 @@ std::string help_text() {
          "  --help, -h          this text\n"
          "  --version, -v       the release, then exit\n"
          "\n"
-         "The same command gives the same output, byte for byte. Configuration warnings go\n"
-         "to standard error; one caused by a --set is an error. Exit status: 0 done, 1 a\n"
-         "mission or output file problem, 2 a bad command line or --set.\n";
+         "A field (the hazard files, or a generated one) is loaded once per field seed and\n"
+         "shared by every mission over it. The same command gives the same output, byte for\n"
+         "byte. Configuration warnings go to standard error; one caused by a --set is an\n"
+         "error. Exit status: 0 done, 1 a mission or output file problem, 2 a bad command\n"
+         "line, --set or --field.\n";
 }
 
 }  // namespace hazard_study

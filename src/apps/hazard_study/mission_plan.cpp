@@ -191,6 +191,10 @@ moos::AppSettings process_settings(const MissionPlan& plan, const Process& proce
     if (same == replaced.end()) replaced.push_back({a.name, {line}});
     else same->second.push_back(line);
   }
+  if (plan.field_file && (base::iequals(process.program, "uFldHazardSensor") ||
+                          base::iequals(process.program, "uFldHazardMetric")))
+    replaced.push_back({"hazard_file", {moos::ConfigLine{"hazard_file", *plan.field_file,
+                                                         "--field", 1}}});
   if (base::iequals(process.program, "uFldHazardSensor"))
     replaced.push_back({"random_seed", {moos::ConfigLine{"random_seed", std::to_string(seed),
                                                          "--seeds", 1}}});

@@ -15,6 +15,9 @@
 //   block's lines of that name (case-insensitive), at the place of the first one, else at the
 //   end. AppTick and IdleAppTick may be set; other framework parameters may not.
 // - The seed replaces every `random_seed` of each uFldHazardSensor block.
+// - With a generated field (`field_file`), one `hazard_file = <field_file>` replaces the
+//   hazard_file lines of every uFldHazardSensor and uFldHazardMetric block (the field's reader,
+//   field_cache.hpp, serves it from memory).
 // - Final vehicles: those given, else the vname of every pHazardMgr block without handover_to.
 
 #include <cstdint>
@@ -40,6 +43,8 @@ struct MissionPlan {
   std::vector<Process> processes;  ///< in Run-line order
   std::vector<std::string> final_vehicles;
   std::string community;
+  /// A generated field's name (field.hpp, set per field seed); nullopt: the mission's files.
+  std::optional<std::string> field_file;
 };
 
 /// The plan, or nullopt with `error` naming the file, line or argument.

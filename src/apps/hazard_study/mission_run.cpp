@@ -21,10 +21,16 @@ namespace {
 
 constexpr const char* kRunnerName = "hazard_study";
 
-/// `logged`: every posting is read (--alog), so the sensor builds its visuals too.
-std::unique_ptr<moos::MoosApp> make_app(const std::string& program, bool logged) {
+/// `logged`: every posting is read (--alog), so the sensor builds its visuals too. With
+/// `fields`, the sensor and the grader take their field from it.
+std::unique_ptr<moos::MoosApp> make_app(const std::string& program, bool logged,
+                                        FieldCache* fields, std::uint64_t seed) {
   if (base::iequals(program, "uFldHazardSensor")) {
     ufld_hazard_sensor::HazardSensorOptions options;
+    if (fields)
+      options.make_engine = [fields, seed](const auto& lines, const auto& settings, auto readers) {
+        return fields->sensor_engine(lines, settings, readers, seed);
+      };
     options.share_node_report_parses = true;  // the managers read the same reports
     if (!logged) {
       options.readers = hazard::PostingReaders::kReportCounts;
@@ -32,8 +38,12 @@ std::unique_ptr<moos::MoosApp> make_app(const std::string& program, bool logged)
     }
     return std::make_unique<ufld_hazard_sensor::HazardSensor>(std::move(options));
   }
-  if (base::iequals(program, "uFldHazardMetric"))
-    return std::make_unique<ufld_hazard_metric::HazardMetricApp>();
+  if (base::iequals(program, "uFldHazardMetric")) {
+    ufld_hazard_metric::MetricSource source;
+    if (fields)
+      source = [fields](const auto& lines, const auto& dir) { return fields->metric(lines, dir); };
+    return std::make_unique<ufld_hazard_metric::HazardMetricApp>(std::move(source));
+  }
   if (base::iequals(program, "pHazardMgr")) return std::make_unique<phazard_mgr::HazardMgr>();
   return std::make_unique<usim_survey_vehicle::SimSurveyVehicle>();  // the plan checked the name
 }
@@ -130,7 +140,7 @@ MissionResult run_mission(const MissionPlan& plan, const Setting& setting, std::
   std::vector<std::unique_ptr<moos::BusClient>> clients;
   moos::Lockstep lockstep(bus, clock);
   for (const Process& p : plan.processes) {
-    auto app = make_app(p.program, alog != nullptr);
+    auto app = make_app(p.program, alog != nullptr, options.fields, seed);
     moos::AppSettings settings = process_settings(plan, p, app->traits(), setting, seed);
     settings.post_status = alog != nullptr;  // without a log nobody reads <APP>_STATUS
     clients.push_back(bus.connect(settings.moos_name));

@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "field_cache.hpp"
 #include "mission/messages/hazardset_eval.hpp"
 #include "mission_plan.hpp"
 
@@ -29,6 +30,7 @@ namespace hazard_study {
 
 struct MissionResult {
   std::string setting;
+  std::optional<std::uint64_t> field_seed;  ///< a generated field's seed (set by the study)
   std::uint64_t seed = 0;
   std::string end;                   ///< "graded", "empty_report" or "max_time"
   std::optional<double> score;       ///< the last HAZARD_SEARCH_SCORE
@@ -43,6 +45,9 @@ struct MissionResult {
 struct RunOptions {
   double deploy_s = 1.0;
   double max_time_s = 12000.0;
+  /// The sensor's engine and the grader come from it (one load per field); nullptr: each app
+  /// loads its hazard files itself.
+  FieldCache* fields = nullptr;
 };
 
 /// Runs one mission. With `alog`, every posting is appended as an .alog (header first).

@@ -6,6 +6,8 @@
 
 #include "base/output_file.hpp"
 #include "base/text.hpp"
+#include "field.hpp"
+#include "field_cache.hpp"
 #include "mission_plan.hpp"
 #include "mission_run.hpp"
 #include "study_output.hpp"
@@ -48,11 +50,26 @@ int write_alog(const std::string& path, const std::string& alog, std::ostream& e
   return 0;
 }
 
+/// The plan of one field: a generated field's name and text go to the plan and the cache;
+/// "" or the generator's error.
+std::string start_field(const Options& options, std::uint64_t field_seed, MissionPlan& plan,
+                        FieldCache& fields) {
+  if (!options.field) {
+    fields.start_field(std::nullopt);
+    return {};
+  }
+  FieldText field = generate_field(*options.field, field_seed);
+  if (!field.text) return field.error;
+  plan.field_file = field_name(field_seed);
+  fields.start_field(std::make_pair(*plan.field_file, std::move(*field.text)));
+  return {};
+}
+
 }  // namespace
 
 int run(const Options& options, std::ostream& out, std::ostream& err) {
   std::string error;
-  const auto plan = load_plan(options, error);
+  auto plan = load_plan(options, error);
   if (!plan) {
     err << "hazard_study: " << error << "\n";
     return 1;
@@ -61,31 +78,42 @@ int run(const Options& options, std::ostream& out, std::ostream& err) {
     err << "hazard_study: " << error << "\n";
     return 2;
   }
-  const RunOptions run_options{options.deploy_s, options.max_time_s};
+  FieldCache fields;
+  const RunOptions run_options{options.deploy_s, options.max_time_s, &fields};
   std::string alog;
   std::vector<SettingScores> summary;
-  for (std::size_t s = 0; s < options.settings.size(); ++s) {
-    const Setting& setting = options.settings[s];
+  for (const Setting& setting : options.settings)
     summary.push_back(SettingScores{setting.label, {}, 0, 0});
-    for (std::uint64_t seed = options.first_seed;; ++seed) {
-      const MissionResult r =
-          run_mission(*plan, setting, seed, run_options, options.alog_path ? &alog : nullptr);
-      if (seed == options.first_seed) {
-        if (error = sort_warnings(r, setting, s == 0, err); !error.empty()) {
-          err << "hazard_study: " << error << "\n";
-          return 2;
-        }
-      }
-      if (options.summary) {
-        ++summary.back().missions;
-        if (r.score) summary.back().scores.push_back(*r.score);
-        if (r.end == "max_time") ++summary.back().max_time;
-      } else {
-        // One line at a time: a study stopped midway (a cluster's time limit) keeps its lines.
-        out << json_line(r) << std::flush;
-      }
-      if (seed == options.last_seed) break;
+  // Field seeds outermost: each field is generated and loaded once, for every setting and seed.
+  for (std::uint64_t field_seed = options.first_field_seed;; ++field_seed) {
+    if (error = start_field(options, field_seed, *plan, fields); !error.empty()) {
+      err << "hazard_study: " << error << "\n";
+      return 2;
     }
+    for (std::size_t s = 0; s < options.settings.size(); ++s) {
+      const Setting& setting = options.settings[s];
+      for (std::uint64_t seed = options.first_seed;; ++seed) {
+        MissionResult r =
+            run_mission(*plan, setting, seed, run_options, options.alog_path ? &alog : nullptr);
+        if (options.field) r.field_seed = field_seed;
+        if (seed == options.first_seed && field_seed == options.first_field_seed) {
+          if (error = sort_warnings(r, setting, s == 0, err); !error.empty()) {
+            err << "hazard_study: " << error << "\n";
+            return 2;
+          }
+        }
+        if (options.summary) {
+          ++summary[s].missions;
+          if (r.score) summary[s].scores.push_back(*r.score);
+          if (r.end == "max_time") ++summary[s].max_time;
+        } else {
+          // One line at a time: a study stopped midway (a cluster's time limit) keeps its lines.
+          out << json_line(r) << std::flush;
+        }
+        if (seed == options.last_seed) break;
+      }
+    }
+    if (field_seed == options.last_field_seed) break;
   }
   if (options.summary) out << summary_table(summary);
   out.flush();

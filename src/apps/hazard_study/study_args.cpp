@@ -18,6 +18,9 @@ const moos::SwitchTable& switch_table() {
     t.rules = {
         moos::switch_rule("--seed", SwitchKind::kUnsigned, "a whole number in [0, 2^64)"),
         moos::switch_rule("--seeds", SwitchKind::kText, "a range A..B of whole numbers"),
+        moos::switch_rule("--field", SwitchKind::kText, "gen_hazards options"),
+        moos::switch_rule("--field-seed", SwitchKind::kUnsigned, "a whole number in [0, 2^64)"),
+        moos::switch_rule("--field-seeds", SwitchKind::kText, "a range A..B of whole numbers"),
         moos::switch_rule("--max-time", SwitchKind::kNumber, "a number of seconds in (0, 3.2e7]",
                           moos::Range{0.0, kMaxMaxTime_s, true, false}),
         moos::switch_rule("--deploy-at", SwitchKind::kNumber, "a number of seconds in [0, 3600]",
@@ -103,6 +106,39 @@ std::string take_settings(std::vector<std::string>& args, std::vector<Setting>& 
   return {};
 }
 
+/// --field, --field-seed and --field-seeds into `o`; "" or the error.
+std::string take_field(const moos::SwitchValues& v, Options& o) {
+  const bool seeds_given = v.has("--field-seed") || v.has("--field-seeds");
+  if (!v.has("--field"))
+    return seeds_given ? "--field-seed and --field-seeds need --field (the field to generate)"
+                       : std::string();
+  ParsedField field = parse_field(*v.text("--field"));
+  if (!field.spec) return field.error;
+  o.field = std::move(field.spec);
+  if (const auto seed = v.whole("--field-seed")) o.first_field_seed = o.last_field_seed = *seed;
+  if (const auto range = v.text("--field-seeds")) {
+    if (v.has("--field-seed")) return "--field-seed and --field-seeds exclude each other";
+    const auto seeds = parse_seed_range(*range);
+    if (!seeds)
+      return "--field-seeds needs A..B, whole numbers with A <= B and at most " +
+             std::to_string(kMaxSeedsPerRun) + " seeds: '--field-seeds=" + base::excerpt(*range) +
+             "'";
+    o.first_field_seed = seeds->first;
+    o.last_field_seed = seeds->second;
+  }
+  const std::uint64_t fields = o.last_field_seed - o.first_field_seed + 1;
+  const std::uint64_t seeds = o.last_seed - o.first_seed + 1;
+  if (fields > kMaxSeedsPerRun / seeds)
+    return "--field-seeds and --seeds: " + std::to_string(fields) + " x " + std::to_string(seeds) +
+           " missions per setting, more than " + std::to_string(kMaxSeedsPerRun);
+  for (const Setting& s : o.settings)
+    for (const Assignment& a : s.assignments)
+      if (base::iequals(a.name, "hazard_file"))
+        return "--set '" + base::excerpt(a.as_typed) +
+               "': --field gives every block its hazard_file; give one or the other";
+  return {};
+}
+
 /// --final=a,b: names, each a vehicle name.
 std::optional<std::vector<std::string>> parse_names(const std::string& text) {
   std::vector<std::string> names;
@@ -173,6 +209,7 @@ ParsedArgs parse_args(const std::vector<std::string>& all_args) {
     o.first_seed = seeds->first;
     o.last_seed = seeds->second;
   }
+  if (std::string error = take_field(v, o); !error.empty()) return fail(std::move(error));
   if (const auto t = v.number("--max-time")) o.max_time_s = *t;
   if (const auto t = v.number("--deploy-at")) o.deploy_s = *t;
   if (const auto final = v.text("--final")) {
@@ -186,6 +223,8 @@ ParsedArgs parse_args(const std::vector<std::string>& all_args) {
     return fail("--alog writes one mission: give --seed=N (not --seeds)");
   if (o.alog_path && o.settings.size() > 1)
     return fail("--alog writes one mission: give one setting");
+  if (o.alog_path && o.last_field_seed != o.first_field_seed)
+    return fail("--alog writes one mission: give --field-seed=N (not --field-seeds)");
   o.summary = v.has("--summary");
   return ParsedArgs{o, {}};
 }

@@ -9,6 +9,9 @@
 // - `--setting=LABEL` starts a new setting: the `--set` that follow belong to it. `--set` before
 //   any `--setting` form one setting labelled by its assignments. Without any, one setting:
 //   the mission as written, labelled "mission". At most kMaxSettings settings.
+// - `--field=OPTIONS` generates the field with gen_hazards' own options (blank-separated words,
+//   field.hpp); `--field-seed=N` or `--field-seeds=A..B` (only with --field; default 1) are its
+//   seeds. Field seeds times sensor seeds is at most kMaxSeedsPerRun.
 // - `--NAME=value` (NAME starting with a capital letter) is a `$(NAME)` of the mission file.
 // - Every refused value is an error naming the argument as typed.
 
@@ -17,6 +20,8 @@
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "field.hpp"
 
 namespace hazard_study {
 
@@ -48,6 +53,9 @@ struct Options {
   std::uint64_t first_seed = 1;
   std::uint64_t last_seed = 1;
   std::vector<Setting> settings;
+  std::optional<FieldSpec> field;  ///< --field: a generated field instead of the hazard files
+  std::uint64_t first_field_seed = 1;
+  std::uint64_t last_field_seed = 1;
   double max_time_s = kDefaultMaxTime_s;
   double deploy_s = 1.0;  ///< when DEPLOY_ALL and HAZARD_SEARCH_START are posted
   std::vector<std::string> final_vehicles;  ///< empty: from the mission (mission_plan.hpp)

@@ -59,6 +59,7 @@ Stats stats_of(const std::vector<double>& xs) {
 std::string json_line(const MissionResult& r) {
   std::string out = "{\"setting\":";
   append_json_string(out, r.setting);
+  if (r.field_seed) out += ",\"field_seed\":" + std::to_string(*r.field_seed);
   out += ",\"seed\":" + std::to_string(r.seed) + ",\"end\":";
   append_json_string(out, r.end);
   append_number(out, "score", r.score);

@@ -9,8 +9,9 @@
 
 namespace hazard_study {
 
-/// {"setting":...,"seed":S,"end":...,"score":X,"found":F,"missed":M,"false_alarms":A,
-///  "time_used":T,"detections":D,"classifications":C,"sim_s":S} and '\n'. A value the mission
+/// {"setting":...,["field_seed":G,]"seed":S,"end":...,"score":X,"found":F,"missed":M,
+///  "false_alarms":A,"time_used":T,"detections":D,"classifications":C,"sim_s":S} and '\n';
+///  field_seed only with a generated field. A value the mission
 /// did not produce (no grade before max_time) is null. Numbers are the shortest text that reads
 /// back as the same double.
 std::string json_line(const MissionResult& result);

@@ -9,26 +9,47 @@ namespace ufld_hazard_metric {
 
 moos::AppTraits metric_traits() { return mission_app::mission_traits(kAppName, kDefaultAppTick_hz); }
 
-HazardMetricApp::HazardMetricApp() : mission_app::MissionApp(metric_traits()) {}
+namespace {
 
-void HazardMetricApp::load_hazard_file(const moos::ConfigLine& line, const std::string& file) {
-  hazard_files_.push_back(file);
-  const auto text = app_support::mission_relative_reader(settings().mission_directory)(file);
+void load_hazard_file(const moos::ConfigLine& line, const std::string& file,
+                      const hazard::HazardFileReader& read, ConfiguredMetric& c) {
+  c.hazard_files.push_back(file);
+  const auto text = read(file);
   if (!text) {
-    report_run_warning(mission::HazardMetric::hazard_file_missing(file));
-    report_config_warning(
+    c.run_warnings.push_back(mission::HazardMetric::hazard_file_missing(file));
+    c.config_warnings.push_back(
         mission_app::at_line(line, "cannot read hazard_file '" + file + "': " + text.error));
     return;
   }
-  for (const std::string& w : metric_.load_hazard_file(file, *text.value)) report_config_warning(w);
+  for (std::string& w : c.metric.load_hazard_file(file, *text.value))
+    c.config_warnings.push_back(std::move(w));
 }
 
-bool HazardMetricApp::on_start_up() {
-  for (const moos::ConfigLine& line : config_lines()) {
-    const mission::HazardMetric::ConfigResult r = metric_.configure(line.key, line.value);
-    if (!r.warning.empty()) warn_at(line, r.warning);
-    if (r.hazard_file) load_hazard_file(line, *r.hazard_file);
+}  // namespace
+
+ConfiguredMetric configure_metric(const std::vector<moos::ConfigLine>& lines,
+                                  const hazard::HazardFileReader& read) {
+  ConfiguredMetric c;
+  for (const moos::ConfigLine& line : lines) {
+    const mission::HazardMetric::ConfigResult r = c.metric.configure(line.key, line.value);
+    if (!r.warning.empty()) c.config_warnings.push_back(mission_app::at_line(line, r.warning));
+    if (r.hazard_file) load_hazard_file(line, *r.hazard_file, read, c);
   }
+  return c;
+}
+
+HazardMetricApp::HazardMetricApp(MetricSource source)
+    : mission_app::MissionApp(metric_traits()), source_(std::move(source)) {}
+
+bool HazardMetricApp::on_start_up() {
+  ConfiguredMetric c =
+      source_ ? source_(config_lines(), settings().mission_directory)
+              : configure_metric(config_lines(),
+                                 app_support::mission_relative_reader(settings().mission_directory));
+  metric_ = std::move(c.metric);
+  hazard_files_ = std::move(c.hazard_files);
+  for (const std::string& w : c.config_warnings) report_config_warning(w);
+  for (const std::string& w : c.run_warnings) report_run_warning(w);
   register_variable(mission::kHazardsetReportVar);
   register_variable(mission::kHazardSearchStartVar);
   publish(metric_.start(cycle_time()));

@@ -8,6 +8,9 @@
 //   warnings become configuration warnings naming file and line. A `hazard_file` is read relative
 //   to the mission file's folder and loaded (its warnings name the hazard file and line); a file
 //   that cannot be read is the original's run warning (`Reading <f>: Empty or File Not found.`).
+// - A host that runs many missions over one field (hazard_study) may pass a MetricSource: the
+//   grader is then configured by it instead of configure_metric (the same grader, warnings and
+//   files, e.g. a copy of one configured once), so a large field is not loaded per mission.
 // - Start-up: HazardMetric::start at the start-up time; its postings (the search region's
 //   VIEW_POLYGON, the transit lane with show_xpath, UHZ_MISSION_PARAMS) are sent as soon as the
 //   client is connected (mission_app::MissionApp).
@@ -17,8 +20,11 @@
 // - Everything the grader decides is posted in order: HAZARD_SEARCH_SCORE as a MOOS double, the
 //   rest as strings.
 
+#include <functional>
 #include <string>
+#include <vector>
 
+#include "hazard/config.hpp"
 #include "mission/metric.hpp"
 #include "mission_app.hpp"
 
@@ -30,9 +36,27 @@ inline constexpr double kDefaultAppTick_hz = 4.0;
 
 moos::AppTraits metric_traits();
 
+/// The grader as a block's lines configure it, with what configuring it reported, in order.
+struct ConfiguredMetric {
+  mission::HazardMetric metric;
+  std::vector<std::string> hazard_files;     ///< as the hazard_file lines name them
+  std::vector<std::string> config_warnings;  ///< each naming its file and line
+  std::vector<std::string> run_warnings;     ///< a hazard file that cannot be read
+};
+
+/// Every line to HazardMetric::configure in file order; each hazard_file read by `read` and
+/// loaded (see the contract).
+ConfiguredMetric configure_metric(const std::vector<moos::ConfigLine>& lines,
+                                  const hazard::HazardFileReader& read);
+
+/// Configures the grader from the block's lines and the mission file's folder.
+using MetricSource = std::function<ConfiguredMetric(const std::vector<moos::ConfigLine>& lines,
+                                                    const std::string& mission_directory)>;
+
 class HazardMetricApp final : public mission_app::MissionApp {
  public:
-  HazardMetricApp();
+  /// `source` empty: configure_metric, files read relative to the mission file's folder.
+  explicit HazardMetricApp(MetricSource source = {});
 
   const mission::HazardMetric& metric() const { return metric_; }
 
@@ -43,8 +67,7 @@ class HazardMetricApp final : public mission_app::MissionApp {
   std::string build_report() override;
 
  private:
-  void load_hazard_file(const moos::ConfigLine& line, const std::string& file);
-
+  MetricSource source_;
   mission::HazardMetric metric_;
   std::vector<std::string> hazard_files_;
 };

@@ -49,13 +49,18 @@ HazardSensor::HazardSensor(HazardSensorOptions options)
   if (!options_.os_seed) options_.os_seed = app_support::operating_system_seed;
 }
 
-bool HazardSensor::on_start_up() {
+hazard::Engine HazardSensor::build_engine() const {
+  if (options_.make_engine) return options_.make_engine(config_lines(), settings(), options_.readers);
   hazard::Engine engine = app_support::make_sensor_engine(
       config_lines(), settings().mission_directory, app_support::mission_origin(settings()),
       std::nullopt, options_.os_seed);
   if (options_.readers != hazard::PostingReaders::kViewers)
     engine = engine.with_seed(engine.seed(), options_.readers);
-  driver_.emplace(std::move(engine));
+  return engine;
+}
+
+bool HazardSensor::on_start_up() {
+  driver_.emplace(build_engine());
   driver_->share_node_report_parses(options_.share_node_report_parses);
   for (const hazard::InterfaceVariable& v : hazard::Engine::subscriptions()) {
     register_variable(std::string(v.name));

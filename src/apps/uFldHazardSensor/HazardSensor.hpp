@@ -75,6 +75,12 @@ struct HazardSensorOptions {
   /// `<APP>_ITER_GAP` / `_ITER_LEN` every iteration (moos::AppTraits); a study that reads no
   /// framework postings turns them off.
   bool post_iteration_timing = true;
+  /// Builds the engine from the block's lines and the settings, for these readers (a host that
+  /// runs many missions over one field, hazard_study, hands out copies of an engine it built
+  /// once: Engine::with_seed). Empty: app_support::make_sensor_engine, then `readers`.
+  std::function<hazard::Engine(const std::vector<moos::ConfigLine>& lines,
+                               const moos::AppSettings& settings, hazard::PostingReaders readers)>
+      make_engine;
   /// Node reports parsed through hazard::NodeReportMemo (hazard::Driver::share_node_report_parses):
   /// a process that hosts the managers too (hazard_study) parses each report once.
   bool share_node_report_parses = false;
@@ -98,6 +104,8 @@ class HazardSensor final : public moos::MoosApp {
   double quiet_until_moos_s(double now_moos_s) const override;
 
  private:
+  /// The engine of this block (HazardSensorOptions::make_engine, else as the contract says).
+  hazard::Engine build_engine() const;
   /// Posts, reports and logs what the engine produced; the posted texts are moved, not copied.
   void publish(hazard::TimedOutputs timed);
   void write_verbose(double now_s, const std::string& variable, const std::string& value) const;
