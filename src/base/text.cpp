@@ -387,6 +387,9 @@ std::optional<bool> parse_bool(std::string_view text) {
 
 std::vector<KeyValue> split_key_values(std::string_view text, char separator, bool respect_braces) {
   std::vector<KeyValue> out;
+  // At most one piece more than separators: one allocation, not a growth series (every
+  // classify and sensor request is read through here).
+  out.reserve(static_cast<std::size_t>(std::count(text.begin(), text.end(), separator)) + 1);
   KeyValueReader reader(text, separator, respect_braces);
   for (KeyValue kv; reader.next(kv);) out.push_back(kv);
   return out;
