@@ -13,6 +13,7 @@
 // - Angles are normalised with fmod, never with loops (N3); inputs must be finite.
 
 #include <cstdint>
+#include <initializer_list>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -69,6 +70,10 @@ std::optional<long long> parse_integer(std::string_view text, long long min, lon
 std::optional<bool> parse_bool(std::string_view text);
 
 // ---- formatting -------------------------------------------------------------------------------
+
+/// The pieces one after another, in one allocation (a text built for every detection: the
+/// chain a + b + c allocates at each step).
+std::string joined(std::initializer_list<std::string_view> pieces);
 
 /// FIX(v, d): C printf("%.*f", d, v). `decimals` is clamped to [0, 30].
 std::string fix(double value, int decimals);

@@ -46,6 +46,11 @@ class TextAppender {
     flush();  // the rare value outside the fast path
     append_fmt(out_, value, decimals);
   }
+  /// `key` (such as ",x=") and FMT(value, decimals) after it: a field of a posting.
+  void put_field(std::string_view key, double value, int decimals) {
+    put(key);
+    put_fmt(value, decimals);
+  }
   /// Everything put so far is in the string (also done at destruction).
   void flush() {
     out_.append(buffer_, static_cast<std::size_t>(end_ - buffer_));

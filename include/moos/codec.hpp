@@ -66,6 +66,10 @@ std::string encode_message(const Message& msg);
 std::string encode_packet(const std::vector<Message>& messages);
 /// One packet holding the messages [first, last) in order (a slice of a list, uncopied).
 std::string encode_packet(const Message* first, const Message* last);
+/// The same packet with `lead` (when not null) before [first, last), written over `out`: a sender
+/// that keeps its buffer reuses its capacity (up to 1 MiB, or four times the packet).
+void write_packet(std::string& out, const Message* lead, const Message* first,
+                  const Message* last);
 
 struct DecodeError {
   std::string reason;       ///< human-readable, names the field that failed
@@ -90,8 +94,10 @@ class PacketReader {
   /// Appends received bytes.
   void feed(std::string_view bytes);
   /// Extracts the next complete packet into `out` (kPacket), reports that more bytes are
-  /// needed (kNeedMore), or reports a framing/decoding error (kError, `error` filled). After
-  /// an error the stream is unusable: the caller should close the connection.
+  /// needed (kNeedMore), or reports a framing/decoding error (kError, `error` filled, `out`
+  /// unspecified). After an error the stream is unusable: the caller should close the
+  /// connection. `out`'s elements are overwritten in place: a caller that passes the same
+  /// vector every time reuses its storage and its messages' strings.
   Status next(std::vector<Message>& out, DecodeError* error = nullptr);
 
   /// Bytes received but not yet consumed as packets.

@@ -200,9 +200,13 @@ class TcpClient final : public Comms {
   /// bulk drop keeps the cost of a flood linear.
   void enforce_inbox_bounds();
   bool process_buffered();
-  void handle_packet(std::vector<Message> messages);
+  /// Moves a decoded packet's mail into the inbox (`messages` is left for the next decode).
+  void handle_packet(std::vector<Message>& messages);
   void refine_skew(const Message& timing_echo);
   Message timing_message() const;
+  /// Moves the outbox's head that fits one packet (after a lead of `lead_bytes`) into batch_
+  /// (mutex_ held).
+  void take_batch(std::size_t lead_bytes);
   void wake();
   void wait_for_wake(double timeout_real_s);
   void set_error(const std::string& error);
@@ -226,7 +230,15 @@ class TcpClient final : public Comms {
   std::mutex io_mutex_;
   int socket_ = -1;
   PacketReader reader_;
-  std::string write_buffer_;  // bytes of the packet being written
+  // The last packet decoded and the last batch sent: kept, so a packet costs no vector of its own
+  // (up to kKeptMessages; a burst's larger vector is let go: release_if_large).
+  static constexpr std::size_t kKeptMessages = 4096;
+  static void release_if_large(std::vector<Message>& kept) {
+    if (kept.capacity() > kKeptMessages) std::vector<Message>().swap(kept);
+  }
+  std::vector<Message> decoded_;
+  std::vector<Message> batch_;
+  std::string write_buffer_;  // bytes of the packet being written (its capacity kept)
   std::size_t write_offset_ = 0;
   double next_send_allowed_ = 0;   // steady seconds
   std::optional<double> last_timing_sent_;  // steady seconds; nullopt: never

@@ -1,5 +1,6 @@
 // Classification (D7, D8, D10, D37): requests against detection credits, the queue, and the
 // rate-limited release of answers.
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -30,6 +31,25 @@ std::optional<Credit> take_oldest_credit(VehicleState& v, ObjectId object) {
   const auto record = v.objects.find(object);
   if (record == v.objects.end() || record->second.credits.empty()) return std::nullopt;
   return v.credits.pop_front(record->second.credits);
+}
+
+// "Classify request queued for NAME: label L, pass N, pc FIX(pc, 5), die FIX(die, 4)", in
+// one string (a request follows every detection).
+std::string queued_event(const std::string& vname, const std::string& label, std::uint32_t pass,
+                         double pc, double die) {
+  std::string text;
+  text.reserve(96 + vname.size() + label.size());
+  text += "Classify request queued for ";
+  text += vname;
+  text += ": label ";
+  text += label;
+  text += ", pass ";
+  text += std::to_string(pass);
+  text += ", pc ";
+  base::append_fix(text, pc, 5);
+  text += ", die ";
+  base::append_fix(text, die, 4);
+  return text;
 }
 
 }  // namespace
@@ -88,9 +108,7 @@ void Engine::handle_classify_request(const ClassifyRequest& r, double now_s, Out
   const bool top = r.action == ClassifyAction::kTop;
   v.queue.push(answer, r.priority.value_or(kDefaultClassifyPriority), top);
   if (top) v.last_top_s = now_s;
-  out.events.push_back("Classify request queued for " + v.name + ": label " + o.label +
-                       ", pass " + std::to_string(credit.pass) + ", pc " + base::fix(pc_aspect, 5) +
-                       ", die " + base::fix(die, 4));
+  out.events.push_back(queued_event(v.name, o.label, credit.pass, pc_aspect, die));
 }
 
 // The queue is bounded (kMaxClassifyQueue): the request is refused before its credit is used.
@@ -140,7 +158,8 @@ void Engine::release_classifications(double now_s, Outputs& out) {
     out.post("UHZ_HAZARD_REPORT" + v.variable_suffix, format_hazard_report(report));
     report.vname = v.name;
     out.post("UHZ_HAZARD_REPORT", format_hazard_report(report));
-    out.events.push_back("Hazard report sent to vehicle: " + v.name + " (label " + o.label + ")");
+    out.events.push_back(
+        base::joined({"Hazard report sent to vehicle: ", v.name, " (label ", o.label, ")"}));
     if (!effects_.detection_visuals) continue;
     const ViewCircle c =
         classification_circle(o, now_s, answer.reported, answer.aspect_affected);

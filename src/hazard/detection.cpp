@@ -49,7 +49,8 @@ void Engine::roll_detection(VehicleState& v, ObjectId id, double heading_deg, do
   out.post("UHZ_DETECTION_REPORT", format_detection_report(report));
   report.vname.reset();
   out.post("UHZ_DETECTION_REPORT" + v.variable_suffix, format_detection_report(report));
-  out.events.push_back("Detection report sent to vehicle: " + v.name + " (label " + o.label + ")");
+  out.events.push_back(
+      base::joined({"Detection report sent to vehicle: ", v.name, " (label ", o.label, ")"}));
   if (!effects_.detection_visuals) return;
   const ViewCircle c = detection_circle(o, now_s, config_.show_detections.duration_s,
                                         !detection_succeeds(u, plain_p));

@@ -17,6 +17,8 @@ constexpr std::size_t kHeaderWidth = 62;
 /// Width of the '=' rules around the events list (core-moos terminal layout).
 constexpr std::size_t kEventsRuleWidth = 67;
 constexpr int kEventTimeDecimals = 2;
+/// "[" and "]: " around the time, and room for its digits.
+constexpr std::size_t kEventPrefixBytes = 24;
 
 template <typename Container>
 std::string join_inner(const Container& items) {
@@ -37,7 +39,20 @@ void AppCast::set_max_events(std::size_t max_events) {
 }
 
 void AppCast::add_event(const std::string& text, double seconds_since_start) {
-  events_.push_back("[" + base::fix(seconds_since_start, kEventTimeDecimals) + "]: " + text);
+  // A full list's oldest line lends its buffer to the new one: a busy sensor reports an event
+  // for every detection and every classify request.
+  std::string line;
+  if (!events_.empty() && events_.size() >= max_events_) {
+    line = std::move(events_.front());
+    events_.pop_front();
+    line.clear();
+  }
+  line.reserve(text.size() + kEventPrefixBytes);
+  line += '[';
+  base::append_fix(line, seconds_since_start, kEventTimeDecimals);
+  line += "]: ";
+  line += text;
+  events_.push_back(std::move(line));
   while (events_.size() > max_events_) events_.pop_front();
 }
 

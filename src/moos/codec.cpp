@@ -16,29 +16,52 @@ namespace {
 
 constexpr std::size_t kInt32Size = 4;
 constexpr std::size_t kDoubleSize = 8;
+/// write_packet keeps its buffer's capacity between packets up to this much.
+constexpr std::size_t kKeptPacketCapacity = std::size_t{1} << 20;
 
-void put_int32(std::string& out, std::int32_t value) {
+// The encoder writes through a cursor into bytes the caller sized once (a posting is a dozen
+// fields: one capacity check per field cost more than the bytes).
+char* put_int32(char* p, std::int32_t value) {
   const auto u = static_cast<std::uint32_t>(value);
-  for (int shift = 0; shift < 32; shift += 8) out.push_back(static_cast<char>((u >> shift) & 0xffu));
+  for (int i = 0; i < 4; ++i) p[i] = static_cast<char>((u >> (8 * i)) & 0xffu);
+  return p + kInt32Size;
 }
 
 /// A size written as a 32-bit length field: checked before it is narrowed.
-void put_length(std::string& out, std::size_t size, const char* what) {
+void check_length(std::size_t size, const char* what) {
   if (size > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
     throw std::length_error(std::string(what) + " of " + std::to_string(size) +
                             " bytes does not fit a 32-bit length field");
-  put_int32(out, static_cast<std::int32_t>(size));
 }
 
-void put_double(std::string& out, double value) {
+char* put_double(char* p, double value) {
   std::uint64_t bits = 0;
   std::memcpy(&bits, &value, sizeof bits);
-  for (int shift = 0; shift < 64; shift += 8) out.push_back(static_cast<char>((bits >> shift) & 0xffu));
+  for (int i = 0; i < 8; ++i) p[i] = static_cast<char>((bits >> (8 * i)) & 0xffu);
+  return p + kDoubleSize;
 }
 
-void put_string(std::string& out, const std::string& s) {
-  put_length(out, s.size(), "a string");
-  out.append(s);
+// A string's length is below its message's, which check_length has passed.
+char* put_string(char* p, const std::string& s) {
+  p = put_int32(p, static_cast<std::int32_t>(s.size()));
+  if (!s.empty()) std::memcpy(p, s.data(), s.size());
+  return p + s.size();
+}
+
+// Writes one message of `size` (its encoded_size(), checked) from `p`.
+char* put_message(char* p, const Message& msg, std::size_t size) {
+  p = put_int32(p, static_cast<std::int32_t>(size));
+  p = put_int32(p, msg.id);
+  *p++ = msg.type;
+  *p++ = msg.data_type;
+  p = put_string(p, msg.source);
+  p = put_string(p, msg.source_aux);
+  p = put_string(p, msg.community);
+  p = put_string(p, msg.key);
+  p = put_double(p, msg.time);
+  p = put_double(p, msg.dval);
+  p = put_double(p, msg.dval2);
+  return put_string(p, msg.sval);
 }
 
 std::uint32_t load_u32(const char* p) {
@@ -138,10 +161,12 @@ bool decode_message_into(Message& m, std::string_view bytes, std::size_t base_of
   return true;
 }
 
-std::optional<std::vector<Message>> decode_packet_at(std::string_view packet, DecodeError* error) {
-  auto fail = [&](std::string reason, std::size_t offset) -> std::optional<std::vector<Message>> {
+// Decodes a packet into `out`: its elements are overwritten in place, so a vector reused from
+// packet to packet is not reallocated, nor are the strings its messages still hold.
+bool decode_packet_into(std::string_view packet, std::vector<Message>& out, DecodeError* error) {
+  auto fail = [&](std::string reason, std::size_t offset) {
     if (error) *error = DecodeError{std::move(reason), offset};
-    return std::nullopt;
+    return false;
   };
   if (packet.size() < kPacketHeaderSize) return fail("packet shorter than its 9-byte header", 0);
   const std::uint32_t total = load_u32(packet.data());
@@ -158,8 +183,7 @@ std::optional<std::vector<Message>> decode_packet_at(std::string_view packet, De
                     std::to_string(body) + " bytes",
                 4);
 
-  std::vector<Message> out;
-  out.reserve(static_cast<std::size_t>(count));
+  out.resize(static_cast<std::size_t>(count));
   std::size_t pos = kPacketHeaderSize;
   for (std::int32_t i = 0; i < count; ++i) {
     if (packet.size() - pos < kInt32Size)
@@ -174,14 +198,14 @@ std::optional<std::vector<Message>> decode_packet_at(std::string_view packet, De
                       " runs past the end of the packet",
                   pos);
     DecodeError inner;
-    if (!decode_message_into(out.emplace_back(),
+    if (!decode_message_into(out[static_cast<std::size_t>(i)],
                              packet.substr(pos, static_cast<std::size_t>(length)), pos, &inner))
       return fail("message " + std::to_string(i) + ": " + inner.reason, inner.offset);
     pos += static_cast<std::size_t>(length);
   }
   if (pos != packet.size())
     return fail(std::to_string(packet.size() - pos) + " bytes left after the last message", pos);
-  return out;
+  return true;
 }
 
 }  // namespace
@@ -199,19 +223,10 @@ bool banner_matches(std::string_view received) {
 
 void append_message(std::string& out, const Message& msg) {
   const std::size_t size = msg.encoded_size();
-  put_length(out, size, "a message");
-  out.reserve(out.size() + size);
-  put_int32(out, msg.id);
-  out.push_back(msg.type);
-  out.push_back(msg.data_type);
-  put_string(out, msg.source);
-  put_string(out, msg.source_aux);
-  put_string(out, msg.community);
-  put_string(out, msg.key);
-  put_double(out, msg.time);
-  put_double(out, msg.dval);
-  put_double(out, msg.dval2);
-  put_string(out, msg.sval);
+  check_length(size, "a message");
+  const std::size_t at = out.size();
+  out.resize(at + size);
+  put_message(out.data() + at, msg, size);
 }
 
 std::string encode_message(const Message& msg) {
@@ -225,15 +240,26 @@ std::string encode_packet(const std::vector<Message>& messages) {
 }
 
 std::string encode_packet(const Message* first, const Message* last) {
-  std::size_t total = kPacketHeaderSize;
-  for (const Message* m = first; m != last; ++m) total += m->encoded_size();
   std::string out;
-  put_length(out, total, "a packet");  // before the allocation it would size
-  out.reserve(total);
-  put_length(out, static_cast<std::size_t>(last - first), "a message count");
-  out.push_back('\0');  // compression flag: v10 has no compression (protocol.md 3.2)
-  for (const Message* m = first; m != last; ++m) append_message(out, *m);
+  write_packet(out, nullptr, first, last);
   return out;
+}
+
+void write_packet(std::string& out, const Message* lead, const Message* first,
+                  const Message* last) {
+  std::size_t total = kPacketHeaderSize + (lead ? lead->encoded_size() : 0);
+  for (const Message* m = first; m != last; ++m) total += m->encoded_size();
+  check_length(total, "a packet");  // before the allocation it would size
+  const std::size_t count = static_cast<std::size_t>(last - first) + (lead ? 1 : 0);
+  check_length(count, "a message count");
+  // A buffer kept from a burst is let go once packets are far smaller again.
+  if (out.capacity() > kKeptPacketCapacity && out.capacity() / 4 > total) std::string().swap(out);
+  out.resize(total);
+  char* p = put_int32(out.data(), static_cast<std::int32_t>(total));
+  p = put_int32(p, static_cast<std::int32_t>(count));
+  *p++ = '\0';  // compression flag: v10 has no compression (protocol.md 3.2)
+  if (lead) p = put_message(p, *lead, lead->encoded_size());
+  for (const Message* m = first; m != last; ++m) p = put_message(p, *m, m->encoded_size());
 }
 
 std::optional<Message> decode_message(std::string_view bytes, DecodeError* error) {
@@ -247,7 +273,9 @@ std::optional<Message> decode_message(std::string_view bytes, DecodeError* error
 }
 
 std::optional<std::vector<Message>> decode_packet(std::string_view packet, DecodeError* error) {
-  return decode_packet_at(packet, error);
+  std::vector<Message> out;
+  if (!decode_packet_into(packet, out, error)) return std::nullopt;
+  return out;
 }
 
 void PacketReader::feed(std::string_view bytes) {
@@ -276,13 +304,13 @@ PacketReader::Status PacketReader::next(std::vector<Message>& out, DecodeError* 
     return Status::kError;
   }
   if (available < total) return Status::kNeedMore;
-  auto messages = decode_packet_at(std::string_view(buffer_.data() + consumed_, total), error);
+  const bool decoded =
+      decode_packet_into(std::string_view(buffer_.data() + consumed_, total), out, error);
   consumed_ += total;
-  if (!messages) {
+  if (!decoded) {
     failed_ = true;
     return Status::kError;
   }
-  out = std::move(*messages);
   if (consumed_ == buffer_.size()) {
     buffer_.clear();
     consumed_ = 0;

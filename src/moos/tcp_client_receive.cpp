@@ -103,21 +103,21 @@ bool TcpClient::read_and_announce(bool (TcpClient::*read)()) {
 }
 
 bool TcpClient::process_buffered() {
-  std::vector<Message> messages;
   while (true) {
     DecodeError derr;
-    const auto status = reader_.next(messages, &derr);
+    const auto status = reader_.next(decoded_, &derr);
     if (status == PacketReader::Status::kNeedMore) return true;
     if (status == PacketReader::Status::kError) {
       fail_io("bad packet from the server: " + derr.reason + " (offset " +
               std::to_string(derr.offset) + ")");
       return false;
     }
-    handle_packet(std::move(messages));
+    handle_packet(decoded_);
+    release_if_large(decoded_);
   }
 }
 
-void TcpClient::handle_packet(std::vector<Message> messages) {
+void TcpClient::handle_packet(std::vector<Message>& messages) {
   if (messages.empty()) return;
   auto begin = messages.begin();
   if (begin->type == msg_type::kTiming) {  // consumed by the comms layer (protocol.md 4.3)
@@ -125,9 +125,21 @@ void TcpClient::handle_packet(std::vector<Message> messages) {
     awaiting_timing_echo_ = false;
     ++begin;
   }
+  const auto not_mail = [](const Message& m) {
+    return m.type == msg_type::kNull || m.type == msg_type::kTiming;
+  };
   std::lock_guard<std::mutex> lock(mutex_);
+  // The usual packet, all mail to an inbox the app has just emptied: the vectors trade places.
+  if (inbox_.empty() && begin == messages.begin() &&
+      std::none_of(messages.begin(), messages.end(), not_mail)) {
+    inbox_.swap(messages);
+    for (const Message& m : inbox_) inbox_bytes_ += inbox_cost(m);
+    new_mail_ = true;
+    enforce_inbox_bounds();
+    return;
+  }
   for (auto it = begin; it != messages.end(); ++it) {
-    if (it->type == msg_type::kNull || it->type == msg_type::kTiming) continue;
+    if (not_mail(*it)) continue;
     inbox_bytes_ += inbox_cost(*it);
     inbox_.push_back(std::move(*it));
     new_mail_ = true;

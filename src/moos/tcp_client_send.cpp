@@ -89,25 +89,15 @@ Message TcpClient::timing_message() const {
 bool TcpClient::start_packet_if_due(double now) {
   if (!write_buffer_.empty() || now < next_send_allowed_) return false;
   const bool timing_due = !last_timing_sent_ || now - *last_timing_sent_ >= kTimingInterval_real_s;
-  std::vector<Message> batch;
   // TIMING first (protocol.md 4.3 step 2); stamped before mutex_ is taken, as the clock may be
   // the caller's code.
-  if (timing_due) batch.push_back(timing_message());
+  std::optional<Message> timing;
+  if (timing_due) timing = timing_message();
   {
     std::lock_guard<std::mutex> lock(mutex_);
     // Held messages wait for the release, unless a TIMING goes out anyway.
     if (!timing_due && (outbox_.empty() || holding_sends_)) return false;
-    // As many as fit in a packet the server surely accepts (codec.hpp); the rest go next.
-    std::size_t bytes = kPacketHeaderSize + (timing_due ? batch.front().encoded_size() : 0);
-    std::size_t taken = 0;
-    for (; taken < outbox_.size(); ++taken) {
-      const std::size_t size = outbox_[taken].encoded_size();
-      if (bytes + size > kDefaultMaxPacketBytes && !batch.empty()) break;
-      bytes += size;
-      outbox_bound_.remove(size);
-      batch.push_back(std::move(outbox_[taken]));
-    }
-    outbox_.erase(outbox_.begin(), outbox_.begin() + static_cast<std::ptrdiff_t>(taken));
+    take_batch(timing ? timing->encoded_size() : 0);
     ++packets_sent_;
     ++packets_in_flight_;
   }
@@ -115,9 +105,33 @@ bool TcpClient::start_packet_if_due(double now) {
     last_timing_sent_ = now;
     awaiting_timing_echo_ = true;
   }
-  write_buffer_ = encode_packet(batch);
+  write_packet(write_buffer_, timing ? &*timing : nullptr, batch_.data(),
+               batch_.data() + batch_.size());
   write_offset_ = 0;
+  batch_.clear();
+  release_if_large(batch_);
   return true;
+}
+
+void TcpClient::take_batch(std::size_t lead_bytes) {
+  batch_.clear();
+  // As many as fit in a packet the server surely accepts (codec.hpp); the rest go next. The
+  // whole outbox, as usual, trades places with the (empty) batch.
+  std::size_t bytes = kPacketHeaderSize + lead_bytes;
+  std::size_t taken = 0;
+  for (; taken < outbox_.size(); ++taken) {
+    const std::size_t size = outbox_[taken].encoded_size();
+    if (bytes + size > kDefaultMaxPacketBytes && (lead_bytes > 0 || taken > 0)) break;
+    bytes += size;
+    outbox_bound_.remove(size);
+  }
+  if (taken == outbox_.size()) {
+    batch_.swap(outbox_);
+    return;
+  }
+  batch_.reserve(taken);
+  for (std::size_t i = 0; i < taken; ++i) batch_.push_back(std::move(outbox_[i]));
+  outbox_.erase(outbox_.begin(), outbox_.begin() + static_cast<std::ptrdiff_t>(taken));
 }
 
 bool TcpClient::write_pending() {

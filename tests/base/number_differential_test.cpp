@@ -120,6 +120,25 @@ double value_like(std::mt19937_64& rng) {
   }
 }
 
+// parse_number divides the digits by a power of ten itself when both are exact (at most 2^53
+// and 22 decimals): the texts on either side of those limits, and mail's usual decimals.
+TEST(NumberDifferential, PlainDecimalsOnBothSidesOfTheExactLimitsReadAsStrtodReadsThem) {
+  for (const char* text :
+       {"9007199254740992", "9007199254740993", "900719925474099.3", "-9007199254740.993",
+        "0.9007199254740993", "1.0000000000000000000001", "0.0000000000000000000001",
+        "0.00000000000000000000001", "1234567890123456789", "12345678901234567890",
+        "0.1", "0.2", "0.3", "-470.50", "-0.00", "1700000000.05", "99999999999999999.9", "1.",
+        "-.25", "000000000000000000000.5", "3.14159265358979323"}) {
+    expect_same_number(text);
+  }
+  std::mt19937_64 rng(53);
+  for (int i = 0; i < 200000; ++i) {
+    std::string text = (rng() % 2 ? "-" : "") + digits(rng, 10);
+    if (rng() % 4 != 0) text += "." + digits(rng, 12);
+    expect_same_number(text);
+  }
+}
+
 TEST(NumberDifferential, FixAndFmtWriteWhatPrintfWrites) {
   std::mt19937_64 rng(2026);
   for (int i = 0; i < 300000; ++i) {

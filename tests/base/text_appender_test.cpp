@@ -30,6 +30,17 @@ TEST(TextAppender, WritesThePiecesInOrderAndFlushesAtTheEnd) {
   EXPECT_EQ(out, "head:pts={0,12.2},x=");
 }
 
+TEST(TextAppender, PutFieldIsTheKeyThenFmt) {
+  std::string out;
+  {
+    TextAppender text(out);
+    text.put_field("x=", 12.5, 2);
+    text.put_field(",y=", -0.001, 2);  // FMT's "-0" is "0"
+    text.put_field(",r=", 3.0, 5);
+  }
+  EXPECT_EQ(out, "x=12.5,y=0,r=3");
+}
+
 TEST(TextAppender, TakesNumbersOutsideTheFastPathAndPiecesLongerThanTheBuffer) {
   const std::string long_piece(1000, 'q');
   std::string out;

@@ -20,6 +20,14 @@ TEST(Text, FixIsPrintfFixed) {
   EXPECT_EQ(base::fix(1e300, 0).size(), 301u);  // long values do not truncate
 }
 
+TEST(Text, JoinedPutsThePiecesInOneString) {
+  EXPECT_EQ(joined({}), "");
+  EXPECT_EQ(joined({"Detection report sent to vehicle: ", "v1", " (label ", "", ")"}),
+            "Detection report sent to vehicle: v1 (label )");
+  const std::string long_piece(40, 'a');
+  EXPECT_EQ(joined({long_piece, "b"}), long_piece + "b");
+}
+
 TEST(Text, FmtMatchesSpecExamples_Spec0) {
   EXPECT_EQ(base::fmt(25, 1), "25");
   EXPECT_EQ(base::fmt(0.6561, 3), "0.656");

@@ -64,6 +64,22 @@ TEST(AppCastEvents, OldestEventsAreDroppedBeyondTheLimit_7_2) {
   EXPECT_TRUE(ac.events().empty());
 }
 
+// A full list's new line takes the buffer of the line it pushes out (an event per detection):
+// the same texts, no allocation.
+TEST(AppCastEvents, ANewEventReusesTheDroppedLinesBuffer) {
+  AppCast ac;
+  ac.set_max_events(2);
+  const std::string long_text(60, 'x');
+  ac.add_event(long_text + "1", 1.0);
+  ac.add_event(long_text + "2", 2.0);
+  const char* const oldest = ac.events().front().data();
+  ac.add_event(long_text + "3", 3.0);
+  ASSERT_EQ(ac.events().size(), 2u);
+  EXPECT_EQ(ac.events().front(), "[2.00]: " + long_text + "2");
+  EXPECT_EQ(ac.events().back(), "[3.00]: " + long_text + "3");
+  EXPECT_EQ(ac.events().back().data(), oldest);
+}
+
 TEST(AppCastRunWarnings, CountsRetractionAndOverflow_7_2) {
   AppCast ac;
   ac.set_max_run_warnings(2);

@@ -373,5 +373,54 @@ TEST(PacketReader, KeepsBytesOfTheNextPacket) {
   EXPECT_EQ(reader.take_buffered(), p2.substr(0, 10));
 }
 
+// A reader handed the same vector each time overwrites its messages in place: the strings the
+// last packet left are reused, not reallocated (the sensor decodes thousands a second).
+TEST(PacketReader, OverwritesTheCallersMessagesInPlace) {
+  const std::string long_value(200, 'v');
+  Message first = make_string_notify("A_KEY_LONGER_THAN_SSO", long_value, "pLongSourceName", kT0);
+  Message second = first;
+  second.sval = std::string(150, 'w');
+  second.id = 7;
+  PacketReader reader;
+  reader.feed(encode_packet({first}) + encode_packet({second, vector_a()}));
+  std::vector<Message> out;
+  ASSERT_EQ(reader.next(out), PacketReader::Status::kPacket);
+  ASSERT_EQ(out.size(), 1u);
+  const char* const sval_storage = out[0].sval.data();
+  const Message* const storage = out.data();
+  ASSERT_EQ(reader.next(out), PacketReader::Status::kPacket);
+  ASSERT_EQ(out.size(), 2u);
+  EXPECT_EQ(out[0], second);
+  EXPECT_EQ(out[1], vector_a());
+  EXPECT_EQ(out[0].sval.data(), sval_storage);  // the 200-byte buffer holds the 150 bytes
+  EXPECT_NE(out.data(), storage);               // grown to two messages
+}
+
+// write_packet: the lead message first, then the slice, over whatever `out` held.
+TEST(Codec, WritePacketPutsTheLeadFirstAndReplacesTheBuffer) {
+  const Message lead = make_double_notify(std::string(kTimingKey), 0.0, "", kT0);
+  const std::vector<Message> rest = {vector_a(), vector_b()};
+  std::string out = "stale bytes of an earlier packet";
+  write_packet(out, &lead, rest.data(), rest.data() + rest.size());
+  EXPECT_EQ(out, encode_packet({lead, vector_a(), vector_b()}));
+  write_packet(out, nullptr, rest.data(), rest.data() + 1);
+  EXPECT_EQ(out, encode_packet({vector_a()}));
+}
+
+// A sender's buffer keeps its capacity from packet to packet, but not a burst's megabytes.
+TEST(Codec, WritePacketLetsABurstsBufferGo) {
+  const Message big = make_string_notify("BIG", std::string(3u << 20, 'b'), "pBig", kT0);
+  std::string out;
+  write_packet(out, nullptr, &big, &big + 1);
+  ASSERT_GE(out.capacity(), 3u << 20);
+  const Message small = vector_a();
+  write_packet(out, nullptr, &small, &small + 1);
+  EXPECT_EQ(out, encode_packet({small}));
+  EXPECT_LT(out.capacity(), 1u << 20);
+  const std::size_t kept = out.capacity();
+  write_packet(out, nullptr, &small, &small + 1);
+  EXPECT_EQ(out.capacity(), kept);
+}
+
 }  // namespace
 }  // namespace moos

@@ -218,19 +218,15 @@ std::string format_node_report(const NodeReport& r) {
   std::string out;
   {
     base::TextAppender a(out);
-    const auto number = [&a](std::string_view key, double value, int decimals) {
-      a.put(key);
-      a.put_fmt(value, decimals);
-    };
     a.put("NAME=");
     a.put(r.name);
-    number(",X=", r.x_m, 2);
-    number(",Y=", r.y_m, 2);
-    number(",SPD=", r.speed_mps, 2);
-    number(",HDG=", r.heading_deg, 2);
-    if (r.lat_deg) number(",LAT=", *r.lat_deg, kLatLonDecimals);
-    if (r.lon_deg) number(",LON=", *r.lon_deg, kLatLonDecimals);
-    if (r.time_s) number(",TIME=", *r.time_s, 3);
+    a.put_field(",X=", r.x_m, 2);
+    a.put_field(",Y=", r.y_m, 2);
+    a.put_field(",SPD=", r.speed_mps, 2);
+    a.put_field(",HDG=", r.heading_deg, 2);
+    if (r.lat_deg) a.put_field(",LAT=", *r.lat_deg, kLatLonDecimals);
+    if (r.lon_deg) a.put_field(",LON=", *r.lon_deg, kLatLonDecimals);
+    if (r.time_s) a.put_field(",TIME=", *r.time_s, 3);
     if (r.type) {
       a.put(",TYPE=");
       a.put(*r.type);

@@ -38,10 +38,8 @@ std::string write_object_report(const ObjectReportFields& r, std::string_view ty
       text.put(*r.vname);
       text.put(',');
     }
-    text.put("x=");
-    text.put_fmt(r.x_m, 2);
-    text.put(",y=");
-    text.put_fmt(r.y_m, 2);
+    text.put_field("x=", r.x_m, 2);
+    text.put_field(",y=", r.y_m, 2);
     text.put(",label=");
     text.put(r.label);
     if (!type.empty()) {
@@ -50,8 +48,7 @@ std::string write_object_report(const ObjectReportFields& r, std::string_view ty
     }
     const auto angle = [&text](std::string_view comma_key_equals, const std::optional<double>& value) {
       if (!value) return;
-      text.put(comma_key_equals);
-      text.put_fmt(*value, 5);
+      text.put_field(comma_key_equals, *value, 5);
     };
     angle(",aspect=", r.aspect_deg);
     angle(",aspect_min=", r.aspect_min_deg);

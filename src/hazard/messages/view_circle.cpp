@@ -46,19 +46,15 @@ std::string format_view_circle(const ViewCircle& c) {
   out.reserve(200 + c.edge_color.size() + c.fill_color.size());
   {
     base::TextAppender text(out);
-    text.put("x=");
-    text.put_fmt(c.x_m, 2);
-    text.put(",y=");
-    text.put_fmt(c.y_m, 2);
-    text.put(",radius=");
-    text.put_fmt(c.radius_m, 5);
+    text.put_field("x=", c.x_m, 2);
+    text.put_field(",y=", c.y_m, 2);
+    text.put_field(",radius=", c.radius_m, 5);
     text.put(",vertices=");
     char digits[16];
     const auto written = std::to_chars(digits, digits + sizeof digits, c.vertices);
     text.put(std::string_view(digits, static_cast<std::size_t>(written.ptr - digits)));
     if (c.duration_s) {
-      text.put(",duration=");
-      text.put_fmt(*c.duration_s, 1);
+      text.put_field(",duration=", *c.duration_s, 1);
     }
     const auto field = [&text](std::string_view comma_key_equals, const std::string& value) {
       if (value.empty()) return;
@@ -67,14 +63,10 @@ std::string format_view_circle(const ViewCircle& c) {
     };
     field(",edge_color=", c.edge_color);
     field(",fill_color=", c.fill_color);
-    text.put(",time=");
-    text.put_fmt(c.time_s, 2);
-    text.put(",vertex_size=");
-    text.put_fmt(c.vertex_size, 1);
-    text.put(",edge_size=");
-    text.put_fmt(c.edge_size, 1);
-    text.put(",fill_transparency=");
-    text.put_fmt(std::clamp(c.fill_transparency, 0.0, 1.0), 2);
+    text.put_field(",time=", c.time_s, 2);
+    text.put_field(",vertex_size=", c.vertex_size, 1);
+    text.put_field(",edge_size=", c.edge_size, 1);
+    text.put_field(",fill_transparency=", std::clamp(c.fill_transparency, 0.0, 1.0), 2);
   }  // flushed here
   return out;
 }

@@ -47,12 +47,9 @@ std::string format_view_polygon(const ViewPolygon& p) {
     field(",msg=", p.msg);
     field(",edge_color=", p.edge_color);
     field(",fill_color=", p.fill_color);
-    text.put(",vertex_size=");
-    text.put_fmt(p.vertex_size, 1);
-    text.put(",edge_size=");
-    text.put_fmt(p.edge_size, 1);
-    text.put(",fill_transparency=");
-    text.put_fmt(std::clamp(p.fill_transparency, 0.0, 1.0), 2);
+    text.put_field(",vertex_size=", p.vertex_size, 1);
+    text.put_field(",edge_size=", p.edge_size, 1);
+    text.put_field(",fill_transparency=", std::clamp(p.fill_transparency, 0.0, 1.0), 2);
   }  // flushed here
   return out;
 }
