@@ -111,14 +111,12 @@ std::string no_reader() {
 
 }  // namespace
 
-bool OutputFile::fail(std::string& problem, const std::string& reason) {
+Result<void> OutputFile::fail(const std::string& reason) {
   if (error_.empty()) error_ = "cannot write " + where(path_, target_) + ": " + reason;
-  problem = error_;
-  return false;
+  return Result<void>::fail(error_);
 }
 
-std::optional<OutputFile> OutputFile::open(const std::string& path, OutputMode mode,
-                                           std::string& problem) {
+Result<OutputFile> OutputFile::open(const std::string& path, OutputMode mode) {
   OutputFile out;
   out.path_ = path;
   out.target_ = path;
@@ -128,11 +126,9 @@ std::optional<OutputFile> OutputFile::open(const std::string& path, OutputMode m
     out.target_ = *target;
     reason = out.open_target(mode);
   }
-  if (!reason.empty()) {
-    out.fail(problem, reason);
-    return std::nullopt;  // (out's destructor closes and removes what was made)
-  }
-  return out;
+  // (on failure, out's destructor closes and removes what was made)
+  if (!reason.empty()) return Result<OutputFile>::fail(out.fail(reason).error);
+  return Result<OutputFile>::ok(std::move(out));
 }
 
 std::string OutputFile::open_target(OutputMode mode) {
@@ -200,59 +196,61 @@ void OutputFile::discard() {
   temporary_.clear();
 }
 
-bool OutputFile::write(std::string_view bytes, std::string& problem) {
-  if (!error_.empty() || fd_ < 0) return fail(problem, "it is closed");
-  if (buffer_.size() + bytes.size() > kBufferBytes && !flush(problem)) return false;
+Result<void> OutputFile::write(std::string_view bytes) {
+  if (!error_.empty() || fd_ < 0) return fail("it is closed");
+  if (buffer_.size() + bytes.size() > kBufferBytes) {
+    if (auto flushed = flush(); !flushed) return flushed;
+  }
   if (bytes.size() >= kBufferBytes) {
-    if (!write_all(fd_, bytes.data(), bytes.size())) return fail(problem, std::strerror(errno));
-    return true;
+    if (!write_all(fd_, bytes.data(), bytes.size())) return fail(std::strerror(errno));
+    return Result<void>::ok();
   }
   buffer_.append(bytes);
-  return true;
+  return Result<void>::ok();
 }
 
-bool OutputFile::flush(std::string& problem) {
-  if (!error_.empty() || fd_ < 0) return fail(problem, "it is closed");
+Result<void> OutputFile::flush() {
+  if (!error_.empty() || fd_ < 0) return fail("it is closed");
   const bool written = write_all(fd_, buffer_.data(), buffer_.size());
   buffer_.clear();
-  return written || fail(problem, std::strerror(errno));
+  return written ? Result<void>::ok() : fail(std::strerror(errno));
 }
 
-bool OutputFile::commit(std::string& problem) {
-  if (!flush(problem)) {
+Result<void> OutputFile::commit() {
+  if (auto flushed = flush(); !flushed) {
     discard();
-    return false;
+    return flushed;
   }
   // A device or FIFO has nothing to sync (fsync fails with EINVAL there).
-  if (!through_ && ::fsync(fd_) != 0) fail(problem, std::strerror(errno));
-  if (::close(fd_) != 0 && error_.empty()) fail(problem, std::strerror(errno));
+  if (!through_ && ::fsync(fd_) != 0) fail(std::strerror(errno));
+  if (::close(fd_) != 0 && error_.empty()) fail(std::strerror(errno));
   fd_ = -1;
   if (error_.empty() && !temporary_.empty() &&
       std::rename(temporary_.c_str(), target_.c_str()) != 0) {
-    fail(problem, std::strerror(errno));
+    fail(std::strerror(errno));
   }
   if (error_.empty()) temporary_.clear();  // renamed: nothing left to remove
   discard();
-  return error_.empty();
+  return error_.empty() ? Result<void>::ok() : Result<void>::fail(error_);
 }
 
 OutputFileBuffer::int_type OutputFileBuffer::overflow(int_type c) {
   if (traits_type::eq_int_type(c, traits_type::eof())) return traits_type::not_eof(c);
   const char byte = traits_type::to_char_type(c);
-  return file_.write(std::string_view(&byte, 1), problem_) ? c : traits_type::eof();
+  return file_.write(std::string_view(&byte, 1)) ? c : traits_type::eof();
 }
 
 std::streamsize OutputFileBuffer::xsputn(const char* bytes, std::streamsize count) {
-  return file_.write(std::string_view(bytes, static_cast<std::size_t>(count)), problem_) ? count : 0;
+  return file_.write(std::string_view(bytes, static_cast<std::size_t>(count))) ? count : 0;
 }
 
-int OutputFileBuffer::sync() { return file_.flush(problem_) ? 0 : -1; }
+int OutputFileBuffer::sync() { return file_.flush() ? 0 : -1; }
 
-std::optional<std::string> write_output_file(const std::string& path, std::string_view text) {
-  std::string problem;
-  auto file = OutputFile::open(path, OutputMode::kReplace, problem);
-  if (!file || !file->write(text, problem) || !file->commit(problem)) return problem;
-  return std::nullopt;
+Result<void> write_output_file(const std::string& path, std::string_view text) {
+  auto file = OutputFile::open(path, OutputMode::kReplace);
+  if (!file) return Result<void>::fail(std::move(file.error));
+  if (auto written = file.value->write(text); !written) return written;
+  return file.value->commit();
 }
 
 }  // namespace base
