@@ -420,7 +420,7 @@ Outputs HazardManager::on_mission_params(const MissionParams& params) {
   transit_half_width_m_ = params.transit_path_width_m;
   if (params.search_region) {
     auto parsed = ConvexPolygon::parse(*params.search_region);
-    if (auto* poly = std::get_if<ConvexPolygon>(&parsed)) params_region_ = *poly;
+    if (parsed) params_region_ = std::move(parsed.value);
   }
   return out;
 }

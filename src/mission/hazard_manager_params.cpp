@@ -84,9 +84,8 @@ const std::vector<ParamRow>& param_rows() {
       {{"region", "", "search region (convex polygon) for the transit lane; else the grader's"},
        [](ManagerConfig& c, std::string_view value) -> std::string {
          auto parsed = ConvexPolygon::parse(value);
-         if (auto* e = std::get_if<ConvexPolygon::Error>(&parsed))
-           return "parameter region: " + e->message;
-         c.region = std::get<ConvexPolygon>(std::move(parsed));
+         if (!parsed) return "parameter region: " + parsed.error;
+         c.region = std::move(parsed.value);
          return {};
        }},
       bool_row({"report_xpath", "false", "add the xpath= part to HAZARDSET_REPORT"},

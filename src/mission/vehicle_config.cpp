@@ -73,8 +73,8 @@ const std::vector<Row>& rows() {
       points_row({"region", "", "survey area, convex polygon (lawnmower)"},
                  [](C& c, std::string_view value) -> std::string {
                    auto parsed = ConvexPolygon::parse(value);
-                   if (auto* e = std::get_if<ConvexPolygon::Error>(&parsed)) return e->message;
-                   c.region = std::get<ConvexPolygon>(std::move(parsed));
+                   if (!parsed) return parsed.error;
+                   c.region = std::move(parsed.value);
                    return {};
                  }),
       number_row({"swath_width", "25", "sensor W (m to each side) the lanes are spaced for (> 0)"},
@@ -91,8 +91,8 @@ const std::vector<Row>& rows() {
       points_row({"waypoints", "", "route when there is no region: pts={x1,y1:x2,y2:...}"},
                  [](C& c, std::string_view value) -> std::string {
                    auto parsed = parse_points(value);
-                   if (auto* e = std::get_if<ConvexPolygon::Error>(&parsed)) return e->message;
-                   c.waypoints_m = std::get<std::vector<glm::dvec2>>(std::move(parsed));
+                   if (!parsed) return parsed.error;
+                   c.waypoints_m = std::move(*parsed.value);
                    return {};
                  }),
       number_row({"start_x", "0", "start position east, m"}, any, "",

@@ -266,7 +266,7 @@ TEST(Manager, ReportKeepsTheAspectFieldsOfTheDetection_Spec4_4) {
 TEST(Manager, XpathIsTheMinimumHazardLaneOverTheReportedObjects) {
   ManagerConfig c = archie_config();
   c.report_xpath = true;
-  c.region = std::get<ConvexPolygon>(ConvexPolygon::parse("0,0:100,0:100,50:0,50"));
+  c.region = ConvexPolygon::parse("0,0:100,0:100,50:0,50").value.value();
   HazardManager m(c);
   m.on_config_ack(archie_ack(), 0.0);
   m.on_detection(detection("a", 25, 10), 1.0);

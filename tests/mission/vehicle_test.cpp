@@ -119,7 +119,7 @@ TEST(Vehicle, InvalidParametersAreNamed) {
 // on.
 void expect_flown_survey_covers_region(const VehicleParams& p, double heading_deg, double w_m) {
   const auto region =
-      std::get<ConvexPolygon>(ConvexPolygon::parse("0,0:160,-20:200,120:20,140"));
+      ConvexPolygon::parse("0,0:160,-20:200,120:20,140").value.value();
   LawnmowerOptions o;
   o.swath_half_width_m = w_m;
   o.lane_heading_deg = heading_deg;

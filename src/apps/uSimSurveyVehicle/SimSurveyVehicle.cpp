@@ -127,11 +127,11 @@ void SimSurveyVehicle::on_deploy(const moos::Message& m) {
 
 void SimSurveyVehicle::on_route(const moos::Message& m) {
   auto points = mission::parse_points(mission_app::mail_text(m));
-  if (auto* error = std::get_if<mission::ConvexPolygon::Error>(&points)) {
-    report_run_warning(m.key + " ignored: " + error->message);
+  if (!points) {
+    report_run_warning(m.key + " ignored: " + points.error);
     return;
   }
-  route_m_ = std::get<std::vector<glm::dvec2>>(std::move(points));
+  route_m_ = std::move(*points.value);
   route_started_ = false;
   ++routes_received_;
   report_event("New route with " + std::to_string(route_m_.size()) + " waypoints");
