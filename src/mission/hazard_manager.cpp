@@ -95,7 +95,7 @@ std::string fmt_setting(double width, double pd, double pfa, double pclass) {
 // ---- the manager ---------------------------------------------------------------------------
 
 HazardManager::HazardManager(ManagerConfig config) : config_(std::move(config)) {
-  assert(validate(config_).empty());
+  assert(validate(config_));
 }
 
 double HazardManager::log_odds(const Record& r) const {

@@ -106,11 +106,11 @@ TEST(Vehicle, IdleUntilGivenARouteAndEmptyRouteIsDoneAtOnce) {
 TEST(Vehicle, InvalidParametersAreNamed) {
   VehicleParams p;
   p.speed_mps = 0;
-  EXPECT_EQ(validate(p), "vehicle parameter speed_mps=0 must be > 0");
+  EXPECT_EQ(validate(p).error, "vehicle parameter speed_mps=0 must be > 0");
   p = {};
   p.heading_noise_tau_s = -1;
-  EXPECT_EQ(validate(p), "vehicle parameter heading_noise_tau_s=-1 must be > 0");
-  EXPECT_EQ(validate(VehicleParams{}), "");
+  EXPECT_EQ(validate(p).error, "vehicle parameter heading_noise_tau_s=-1 must be > 0");
+  EXPECT_EQ(validate(VehicleParams{}).error, "");
 }
 
 // The survey as the sensor sees it: sampled at 4 Hz, the sensor is on while the 2 s turn

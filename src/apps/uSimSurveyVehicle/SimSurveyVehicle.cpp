@@ -65,11 +65,12 @@ std::optional<std::string> SimSurveyVehicle::apply_app_param(const moos::ConfigL
 bool SimSurveyVehicle::on_start_up() {
   apply_config_lines([&](const moos::ConfigLine& line) {
     std::optional<std::string> problem = apply_app_param(line);
-    return problem ? *problem : mission::apply_survey_vehicle_param(config_, line.key, line.value);
+    return problem ? *problem
+                   : mission::apply_survey_vehicle_param(config_, line.key, line.value).error;
   });
   vname_ = vehicle_name(vname_);
-  if (const std::string problem = mission::validate(config_.vehicle); !problem.empty()) {
-    report_config_warning(problem + "; the vehicle's defaults are used");
+  if (const auto valid = mission::validate(config_.vehicle); !valid) {
+    report_config_warning(valid.error + "; the vehicle's defaults are used");
     config_.vehicle = mission::VehicleParams{};
   }
   if (config_.report_interval_s * settings().app_tick_hz < 1.0 - kReportIntervalTolerance) {
