@@ -78,9 +78,9 @@ class OutputFile {
 
  private:
   OutputFile() = default;
-  /// Opens target_ by the rule: "" on success, else why not.
-  std::string open_target(OutputMode mode);
-  std::string check_opened(OutputMode mode);
+  /// Opens target_ by the rule, or says why not.
+  Result<void> open_target(OutputMode mode);
+  Result<void> check_opened(OutputMode mode);
   Result<void> fail(const std::string& reason);
   void discard();
 
