@@ -35,9 +35,9 @@ void check_line_stream(std::string_view text) {
   } remover;
   std::ofstream(path, std::ios::binary | std::ios::trunc)
       .write(text.data(), static_cast<std::streamsize>(text.size()));
-  std::string problem;
-  std::optional<base::LineStream> stream = base::LineStream::open(path, kLineBound, problem);
-  if (!stream) std::abort();
+  base::Result<base::LineStream> opened = base::LineStream::open(path, kLineBound);
+  if (!opened) std::abort();
+  base::LineStream& stream = *opened.value;
   std::size_t number = 0;
   std::size_t long_lines = 0;
   for (const std::string_view line : fuzz::lines_of(text)) {
@@ -46,10 +46,10 @@ void check_line_stream(std::string_view text) {
       ++long_lines;
       continue;
     }
-    const std::optional<std::string_view> read = stream->next();
-    if (!read || *read != line || stream->line_number() != number) std::abort();
+    const std::optional<std::string_view> read = stream.next();
+    if (!read || *read != line || stream.line_number() != number) std::abort();
   }
-  if (stream->next() || stream->long_lines() != long_lines) std::abort();
+  if (stream.next() || stream.long_lines() != long_lines) std::abort();
 }
 
 }  // namespace

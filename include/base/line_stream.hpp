@@ -18,12 +18,14 @@
 #include <string_view>
 #include <vector>
 
+#include "base/result.hpp"
+
 namespace base {
 
 class LineStream {
  public:
-  static std::optional<LineStream> open(const std::string& path, std::size_t max_line_bytes,
-                                        std::string& problem);
+  /// The lines of `path`, or why it cannot be read ("is a directory").
+  static Result<LineStream> open(const std::string& path, std::size_t max_line_bytes);
   LineStream(LineStream&& other) noexcept;
   LineStream& operator=(LineStream&&) = delete;
   LineStream(const LineStream&) = delete;

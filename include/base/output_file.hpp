@@ -27,10 +27,11 @@
 // commit(), which reports the first error; a program then exits non-zero.
 
 #include <cstddef>
-#include <optional>
 #include <streambuf>
 #include <string>
 #include <string_view>
+
+#include "base/result.hpp"
 
 namespace base {
 
@@ -48,9 +49,8 @@ class OutputFile {
   /// Bytes gathered before they are written (a log writes a line at a time).
   static constexpr std::size_t kBufferBytes = std::size_t{64} * 1024;
 
-  /// The file to write at `path` by the rule above, or nullopt with `problem` set.
-  static std::optional<OutputFile> open(const std::string& path, OutputMode mode,
-                                        std::string& problem);
+  /// The file to write at `path` by the rule above, or why it cannot be written.
+  static Result<OutputFile> open(const std::string& path, OutputMode mode);
   OutputFile(OutputFile&& other) noexcept;
   OutputFile& operator=(OutputFile&& other) noexcept;
   OutputFile(const OutputFile&) = delete;
@@ -58,14 +58,14 @@ class OutputFile {
   /// Without commit(): closes, and removes a temporary file (the target stays as it was).
   ~OutputFile();
 
-  /// Buffers `bytes`; false with `problem` set once a write has failed (and on every later call).
-  bool write(std::string_view bytes, std::string& problem);
+  /// Buffers `bytes`; fails once a write has failed (and on every later call, the same way).
+  Result<void> write(std::string_view bytes);
   /// Hands the buffered bytes to the file (a log's periodic flush).
-  bool flush(std::string& problem);
+  Result<void> flush();
   /// Flushes, syncs a regular file to disk, closes and (kReplace) renames the temporary over
-  /// the target. After it, nothing more can be written. False with `problem` set on any error,
-  /// the first one a write met included; a failed kReplace leaves the target as it was.
-  bool commit(std::string& problem);
+  /// the target. After it, nothing more can be written. Fails on any error, the first one a
+  /// write met included; a failed kReplace leaves the target as it was.
+  Result<void> commit();
 
   /// The path as the user gave it.
   const std::string& path() const { return path_; }
@@ -78,10 +78,10 @@ class OutputFile {
 
  private:
   OutputFile() = default;
-  /// Opens target_ by the rule: "" on success, else why not.
-  std::string open_target(OutputMode mode);
-  std::string check_opened(OutputMode mode);
-  bool fail(std::string& problem, const std::string& reason);
+  /// Opens target_ by the rule, or says why not.
+  Result<void> open_target(OutputMode mode);
+  Result<void> check_opened(OutputMode mode);
+  Result<void> fail(const std::string& reason);
   void discard();
 
   int fd_ = -1;
@@ -106,11 +106,10 @@ class OutputFileBuffer : public std::streambuf {
 
  private:
   OutputFile& file_;
-  std::string problem_;
 };
 
-/// The whole of `text` written to `path` by the rule above (kReplace): nullopt on success, else
-/// the problem. For programs that write their output at once (gen_hazards, --port-file).
-std::optional<std::string> write_output_file(const std::string& path, std::string_view text);
+/// The whole of `text` written to `path` by the rule above (kReplace), or why not. For programs
+/// that write their output at once (gen_hazards, --port-file).
+Result<void> write_output_file(const std::string& path, std::string_view text);
 
 }  // namespace base

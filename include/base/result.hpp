@@ -23,4 +23,15 @@ struct Result {
   explicit operator bool() const { return value.has_value(); }
 };
 
+/// A fallible action with no value (writing a file, checking a setting): done, or why not.
+template <>
+struct Result<void> {
+  bool done = false;
+  std::string error;  ///< names the place at fault; empty when `done`
+
+  static Result ok() { return Result{true, {}}; }
+  static Result fail(std::string why) { return Result{false, std::move(why)}; }
+  explicit operator bool() const { return done; }
+};
+
 }  // namespace base

@@ -51,6 +51,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "base/result.hpp"
 #include "hazard/heading_history.hpp"
 #include "hazard/messages/config_ack.hpp"
 #include "hazard/messages/detection_report.hpp"
@@ -94,12 +95,12 @@ struct ManagerConfig {
 /// The manager's parameter table (params.hpp).
 const std::vector<ParamInfo>& manager_parameters();
 
-/// Applies one `key = value` configuration line (key case-insensitive). Returns "" or a warning
+/// Applies one `key = value` configuration line (key case-insensitive), or fails with a warning
 /// naming the parameter and value (the configuration is then unchanged).
-std::string apply_manager_param(ManagerConfig& config, std::string_view key,
-                                std::string_view value);
-/// Whole-configuration check: "" or the first problem (names the field and value).
-std::string validate(const ManagerConfig& config);
+base::Result<void> apply_manager_param(ManagerConfig& config, std::string_view key,
+                                       std::string_view value);
+/// Whole-configuration check: fails with the first problem (names the field and value).
+base::Result<void> validate(const ManagerConfig& config);
 
 /// What the manager knows about one object (for reports, pictures and tests).
 struct ObjectBelief {

@@ -18,8 +18,9 @@
 
 #include <string>
 #include <string_view>
-#include <variant>
 #include <vector>
+
+#include "base/result.hpp"
 
 namespace mission {
 
@@ -31,15 +32,12 @@ struct Bounds {
 
 class ConvexPolygon {
  public:
-  /// Builds from vertices; use `make` to get the reason when the vertices are not a valid
-  /// convex polygon.
-  struct Error {
-    std::string message;  ///< names the offending vertex or property
-  };
-  static std::variant<ConvexPolygon, Error> make(std::vector<glm::dvec2> vertices_m);
+  /// The polygon of these vertices, or why they are not a valid convex polygon (the error
+  /// names the offending vertex or property).
+  static base::Result<ConvexPolygon> make(std::vector<glm::dvec2> vertices_m);
 
   /// Parses the MOOS text forms described above. The error names the text and the problem.
-  static std::variant<ConvexPolygon, Error> parse(std::string_view text);
+  static base::Result<ConvexPolygon> parse(std::string_view text);
 
   const std::vector<glm::dvec2>& vertices() const { return vertices_m_; }
   Bounds bounds() const;
@@ -66,6 +64,6 @@ std::string format_points(const std::vector<glm::dvec2>& points_m);
 
 /// Parses a point list in the forms accepted for polygons, without any shape requirement
 /// (a waypoint list may have one point). An empty list is an error.
-std::variant<std::vector<glm::dvec2>, ConvexPolygon::Error> parse_points(std::string_view text);
+base::Result<std::vector<glm::dvec2>> parse_points(std::string_view text);
 
 }  // namespace mission

@@ -34,6 +34,8 @@
 #include <string>
 #include <vector>
 
+#include "base/result.hpp"
+
 namespace mission {
 
 struct VehicleParams {
@@ -47,8 +49,8 @@ struct VehicleParams {
   double lead_m = 15.0;             ///< look-ahead along the track line, > 0
 };
 
-/// Checks every field; the message names the field and its value, empty when all are valid.
-std::string validate(const VehicleParams& params);
+/// Checks every field: fails naming the first field at fault and its value.
+base::Result<void> validate(const VehicleParams& params);
 
 struct Pose {
   glm::dvec2 position_m{0.0, 0.0};  ///< local x east, y north

@@ -38,9 +38,9 @@ struct SurveyVehicleConfig {
 
 const std::vector<ParamInfo>& survey_vehicle_parameters();
 
-/// Applies one `key = value` line; "" or a warning naming the parameter and value.
-std::string apply_survey_vehicle_param(SurveyVehicleConfig& config, std::string_view key,
-                                       std::string_view value);
+/// Applies one `key = value` line, or fails with a warning naming the parameter and value.
+base::Result<void> apply_survey_vehicle_param(SurveyVehicleConfig& config, std::string_view key,
+                                              std::string_view value);
 
 /// The route described above (an error names the lawnmower option at fault).
 base::Result<std::vector<glm::dvec2>> plan_route(const SurveyVehicleConfig& config);

@@ -22,25 +22,17 @@ std::string kind_of(mode_t mode) {
 
 }  // namespace
 
-std::optional<LineStream> LineStream::open(const std::string& path, std::size_t max_line_bytes,
-                                           std::string& problem) {
+Result<LineStream> LineStream::open(const std::string& path, std::size_t max_line_bytes) {
   // Blocking: a FIFO waits for its writer, as a reader of a pipe should.
   const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) {
-    problem = std::string("cannot be opened: ") + std::strerror(errno);
-    return std::nullopt;
-  }
+  if (fd < 0) return Result<LineStream>::fail(std::string("cannot be opened: ") + std::strerror(errno));
   LineStream stream(fd, max_line_bytes);  // closes fd from here on
   struct stat info {};
-  if (::fstat(fd, &info) != 0) {
-    problem = std::string("cannot be examined: ") + std::strerror(errno);
-    return std::nullopt;
-  }
-  if (!S_ISREG(info.st_mode) && !S_ISFIFO(info.st_mode)) {
-    problem = kind_of(info.st_mode);
-    return std::nullopt;
-  }
-  return stream;
+  if (::fstat(fd, &info) != 0)
+    return Result<LineStream>::fail(std::string("cannot be examined: ") + std::strerror(errno));
+  if (!S_ISREG(info.st_mode) && !S_ISFIFO(info.st_mode))
+    return Result<LineStream>::fail(kind_of(info.st_mode));
+  return Result<LineStream>::ok(std::move(stream));
 }
 
 LineStream::LineStream(int fd, std::size_t max_line_bytes)

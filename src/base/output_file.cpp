@@ -37,24 +37,21 @@ std::string folder_of(const std::string& path) {
   return slash == 0 ? "/" : path.substr(0, slash);
 }
 
-/// The path `path` leads to once every symbolic link at its end is followed; nullopt with
-/// `reason` set for a loop or an unreadable link. Links in the folders above are the kernel's.
-std::optional<std::string> follow_links(const std::string& path, std::string& reason) {
+/// The path `path` leads to once every symbolic link at its end is followed, or why not (a
+/// loop, an unreadable link). Links in the folders above are the kernel's.
+Result<std::string> follow_links(const std::string& path) {
+  using R = Result<std::string>;
   std::string at = path;
   for (int hop = 0; hop <= kMaxLinks; ++hop) {
     struct stat info {};
-    if (::lstat(at.c_str(), &info) != 0 || !S_ISLNK(info.st_mode)) return at;
+    if (::lstat(at.c_str(), &info) != 0 || !S_ISLNK(info.st_mode)) return R::ok(std::move(at));
     std::string link(static_cast<std::size_t>(info.st_size > 0 ? info.st_size : 4096) + 1, '\0');
     const ssize_t n = ::readlink(at.c_str(), link.data(), link.size());
-    if (n < 0) {
-      reason = std::strerror(errno);
-      return std::nullopt;
-    }
+    if (n < 0) return R::fail(std::strerror(errno));
     link.resize(static_cast<std::size_t>(n));
     at = (link.empty() || link[0] == '/') ? link : folder_of(at) + "/" + link;
   }
-  reason = std::strerror(ELOOP);
-  return std::nullopt;
+  return R::fail(std::strerror(ELOOP));
 }
 
 /// Why a file of this kind is not written, or "" when it is one the rule writes.
@@ -111,43 +108,38 @@ std::string no_reader() {
 
 }  // namespace
 
-bool OutputFile::fail(std::string& problem, const std::string& reason) {
+Result<void> OutputFile::fail(const std::string& reason) {
   if (error_.empty()) error_ = "cannot write " + where(path_, target_) + ": " + reason;
-  problem = error_;
-  return false;
+  return Result<void>::fail(error_);
 }
 
-std::optional<OutputFile> OutputFile::open(const std::string& path, OutputMode mode,
-                                           std::string& problem) {
+Result<OutputFile> OutputFile::open(const std::string& path, OutputMode mode) {
   OutputFile out;
   out.path_ = path;
   out.target_ = path;
-  std::string reason;
-  const auto target = follow_links(path, reason);
-  if (target) {
-    out.target_ = *target;
-    reason = out.open_target(mode);
-  }
-  if (!reason.empty()) {
-    out.fail(problem, reason);
-    return std::nullopt;  // (out's destructor closes and removes what was made)
-  }
-  return out;
+  Result<std::string> target = follow_links(path);
+  if (!target) return Result<OutputFile>::fail(out.fail(target.error).error);
+  out.target_ = std::move(*target.value);
+  // (on failure, out's destructor closes and removes what was made)
+  if (auto opened = out.open_target(mode); !opened)
+    return Result<OutputFile>::fail(out.fail(opened.error).error);
+  return Result<OutputFile>::ok(std::move(out));
 }
 
-std::string OutputFile::open_target(OutputMode mode) {
+Result<void> OutputFile::open_target(OutputMode mode) {
+  using R = Result<void>;
   struct stat info {};
   const bool exists = ::stat(target_.c_str(), &info) == 0;
-  if (!exists && errno != ENOENT) return std::strerror(errno);
-  if (exists && !refusal(info.st_mode).empty()) return refusal(info.st_mode);
+  if (!exists && errno != ENOENT) return R::fail(std::strerror(errno));
+  if (exists && !refusal(info.st_mode).empty()) return R::fail(refusal(info.st_mode));
   through_ = exists && !S_ISREG(info.st_mode);
   if (through_) {
     const bool fifo = S_ISFIFO(info.st_mode);
     fd_ = open_through(target_, fifo);
-    if (fd_ < 0) return fifo && errno == ENXIO ? no_reader() : std::strerror(errno);
+    if (fd_ < 0) return R::fail(fifo && errno == ENXIO ? no_reader() : std::strerror(errno));
   } else if (mode == OutputMode::kReplace) {
     fd_ = create_temporary(target_, temporary_);
-    if (fd_ < 0) return std::strerror(errno);
+    if (fd_ < 0) return R::fail(std::strerror(errno));
     // Replacing a file keeps its permissions (the umask applies only to a new one). Best
     // effort: a file of another owner may refuse it, and the new file is still whole.
     if (exists) ::fchmod(fd_, info.st_mode & 07777);
@@ -155,22 +147,22 @@ std::string OutputFile::open_target(OutputMode mode) {
     // O_NONBLOCK: should the path have become a FIFO since stat(), this cannot hang.
     fd_ = ::open(target_.c_str(), O_WRONLY | O_CREAT | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC,
                  kNewFileMode);
-    if (fd_ < 0) return std::strerror(errno);
+    if (fd_ < 0) return R::fail(std::strerror(errno));
   }
   return check_opened(mode);
 }
 
-std::string OutputFile::check_opened(OutputMode mode) {
+Result<void> OutputFile::check_opened(OutputMode mode) {
   // What was opened is checked on the descriptor: the path may have changed since stat().
   struct stat opened {};
   if (::fstat(fd_, &opened) != 0 || !refusal(opened.st_mode).empty() ||
       S_ISREG(opened.st_mode) == through_) {
-    return "it changed while it was opened";
+    return Result<void>::fail("it changed while it was opened");
   }
   if (!through_ && mode == OutputMode::kInPlace && ::ftruncate(fd_, 0) != 0)
-    return std::strerror(errno);
+    return Result<void>::fail(std::strerror(errno));
   ::fcntl(fd_, F_SETFL, ::fcntl(fd_, F_GETFL) & ~O_NONBLOCK);  // from now on, writes wait for room
-  return "";
+  return Result<void>::ok();
 }
 
 OutputFile::OutputFile(OutputFile&& other) noexcept { *this = std::move(other); }
@@ -200,59 +192,61 @@ void OutputFile::discard() {
   temporary_.clear();
 }
 
-bool OutputFile::write(std::string_view bytes, std::string& problem) {
-  if (!error_.empty() || fd_ < 0) return fail(problem, "it is closed");
-  if (buffer_.size() + bytes.size() > kBufferBytes && !flush(problem)) return false;
+Result<void> OutputFile::write(std::string_view bytes) {
+  if (!error_.empty() || fd_ < 0) return fail("it is closed");
+  if (buffer_.size() + bytes.size() > kBufferBytes) {
+    if (auto flushed = flush(); !flushed) return flushed;
+  }
   if (bytes.size() >= kBufferBytes) {
-    if (!write_all(fd_, bytes.data(), bytes.size())) return fail(problem, std::strerror(errno));
-    return true;
+    if (!write_all(fd_, bytes.data(), bytes.size())) return fail(std::strerror(errno));
+    return Result<void>::ok();
   }
   buffer_.append(bytes);
-  return true;
+  return Result<void>::ok();
 }
 
-bool OutputFile::flush(std::string& problem) {
-  if (!error_.empty() || fd_ < 0) return fail(problem, "it is closed");
+Result<void> OutputFile::flush() {
+  if (!error_.empty() || fd_ < 0) return fail("it is closed");
   const bool written = write_all(fd_, buffer_.data(), buffer_.size());
   buffer_.clear();
-  return written || fail(problem, std::strerror(errno));
+  return written ? Result<void>::ok() : fail(std::strerror(errno));
 }
 
-bool OutputFile::commit(std::string& problem) {
-  if (!flush(problem)) {
+Result<void> OutputFile::commit() {
+  if (auto flushed = flush(); !flushed) {
     discard();
-    return false;
+    return flushed;
   }
   // A device or FIFO has nothing to sync (fsync fails with EINVAL there).
-  if (!through_ && ::fsync(fd_) != 0) fail(problem, std::strerror(errno));
-  if (::close(fd_) != 0 && error_.empty()) fail(problem, std::strerror(errno));
+  if (!through_ && ::fsync(fd_) != 0) fail(std::strerror(errno));
+  if (::close(fd_) != 0 && error_.empty()) fail(std::strerror(errno));
   fd_ = -1;
   if (error_.empty() && !temporary_.empty() &&
       std::rename(temporary_.c_str(), target_.c_str()) != 0) {
-    fail(problem, std::strerror(errno));
+    fail(std::strerror(errno));
   }
   if (error_.empty()) temporary_.clear();  // renamed: nothing left to remove
   discard();
-  return error_.empty();
+  return error_.empty() ? Result<void>::ok() : Result<void>::fail(error_);
 }
 
 OutputFileBuffer::int_type OutputFileBuffer::overflow(int_type c) {
   if (traits_type::eq_int_type(c, traits_type::eof())) return traits_type::not_eof(c);
   const char byte = traits_type::to_char_type(c);
-  return file_.write(std::string_view(&byte, 1), problem_) ? c : traits_type::eof();
+  return file_.write(std::string_view(&byte, 1)) ? c : traits_type::eof();
 }
 
 std::streamsize OutputFileBuffer::xsputn(const char* bytes, std::streamsize count) {
-  return file_.write(std::string_view(bytes, static_cast<std::size_t>(count)), problem_) ? count : 0;
+  return file_.write(std::string_view(bytes, static_cast<std::size_t>(count))) ? count : 0;
 }
 
-int OutputFileBuffer::sync() { return file_.flush(problem_) ? 0 : -1; }
+int OutputFileBuffer::sync() { return file_.flush() ? 0 : -1; }
 
-std::optional<std::string> write_output_file(const std::string& path, std::string_view text) {
-  std::string problem;
-  auto file = OutputFile::open(path, OutputMode::kReplace, problem);
-  if (!file || !file->write(text, problem) || !file->commit(problem)) return problem;
-  return std::nullopt;
+Result<void> write_output_file(const std::string& path, std::string_view text) {
+  auto file = OutputFile::open(path, OutputMode::kReplace);
+  if (!file) return Result<void>::fail(std::move(file.error));
+  if (auto written = file.value->write(text); !written) return written;
+  return file.value->commit();
 }
 
 }  // namespace base

@@ -95,7 +95,7 @@ std::string fmt_setting(double width, double pd, double pfa, double pclass) {
 // ---- the manager ---------------------------------------------------------------------------
 
 HazardManager::HazardManager(ManagerConfig config) : config_(std::move(config)) {
-  assert(validate(config_).empty());
+  assert(validate(config_));
 }
 
 double HazardManager::log_odds(const Record& r) const {
@@ -420,7 +420,7 @@ Outputs HazardManager::on_mission_params(const MissionParams& params) {
   transit_half_width_m_ = params.transit_path_width_m;
   if (params.search_region) {
     auto parsed = ConvexPolygon::parse(*params.search_region);
-    if (auto* poly = std::get_if<ConvexPolygon>(&parsed)) params_region_ = *poly;
+    if (parsed) params_region_ = std::move(parsed.value);
   }
   return out;
 }

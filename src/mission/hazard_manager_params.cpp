@@ -14,55 +14,63 @@ namespace mission {
 
 namespace {
 
-std::string problem(std::string_view name, double value, const char* rule) {
-  return "parameter " + std::string(name) + "=" + base::fmt(value, 6) + " " + rule;
+using Checked = base::Result<void>;
+
+/// Fine when `ok`, else the parameter's value and the rule it breaks.
+Checked holds(bool ok, std::string_view name, double value, const char* rule) {
+  if (ok) return Checked::ok();
+  return Checked::fail("parameter " + std::string(name) + "=" + base::fmt(value, 6) + " " + rule);
 }
-std::string check_positive(std::string_view name, double v) {
-  return v > 0.0 ? std::string() : problem(name, v, "must be > 0");
+Checked check_positive(std::string_view name, double v) {
+  return holds(v > 0.0, name, v, "must be > 0");
 }
-std::string check_non_negative(std::string_view name, double v) {
-  return v >= 0.0 ? std::string() : problem(name, v, "must be >= 0");
+Checked check_non_negative(std::string_view name, double v) {
+  return holds(v >= 0.0, name, v, "must be >= 0");
 }
-std::string check_probability(std::string_view name, double v) {
-  return v >= 0.0 && v <= 1.0 ? std::string() : problem(name, v, "must be in [0, 1]");
+Checked check_probability(std::string_view name, double v) {
+  return holds(v >= 0.0 && v <= 1.0, name, v, "must be in [0, 1]");
 }
-std::string check_open_probability(std::string_view name, double v) {
-  return v > 0.0 && v < 1.0 ? std::string() : problem(name, v, "must be in (0, 1)");
+Checked check_open_probability(std::string_view name, double v) {
+  return holds(v > 0.0 && v < 1.0, name, v, "must be in (0, 1)");
 }
-std::string check_fraction(std::string_view name, double v) {
-  return v > 0.0 && v <= 1.0 ? std::string() : problem(name, v, "must be in (0, 1]");
+Checked check_fraction(std::string_view name, double v) {
+  return holds(v > 0.0 && v <= 1.0, name, v, "must be in (0, 1]");
 }
 
-using NumberCheck = std::string (*)(std::string_view, double);
+using NumberCheck = Checked (*)(std::string_view, double);
 
 struct ParamRow {
   ParamInfo info;
-  std::function<std::string(ManagerConfig&, std::string_view)> apply;
-  /// The row's rule applied to a configuration built in code ("" when fine or not a number).
-  std::function<std::string(const ManagerConfig&)> check = [](const ManagerConfig&) {
-    return std::string();
+  std::function<Checked(ManagerConfig&, std::string_view)> apply;
+  /// The row's rule applied to a configuration built in code (fine when there is none).
+  std::function<Checked(const ManagerConfig&)> check = [](const ManagerConfig&) {
+    return Checked::ok();
   };
 };
 
 ParamRow number_row(ParamInfo info, double ManagerConfig::*field, NumberCheck check) {
-  return {info, [info, field, check](ManagerConfig& c, std::string_view value) -> std::string {
+  return {info, [info, field, check](ManagerConfig& c, std::string_view value) {
             const auto v = base::parse_number(value);
-            if (!v) return "parameter " + std::string(info.name) + "='" + std::string(value) +
-                           "' is not a number";
-            if (std::string error = check(info.name, *v); !error.empty()) return error;
+            if (!v) {
+              return Checked::fail("parameter " + std::string(info.name) + "='" +
+                                   std::string(value) + "' is not a number");
+            }
+            if (Checked checked = check(info.name, *v); !checked) return checked;
             c.*field = *v;
-            return {};
+            return Checked::ok();
           },
           [info, field, check](const ManagerConfig& c) { return check(info.name, c.*field); }};
 }
 
 ParamRow bool_row(ParamInfo info, bool ManagerConfig::*field) {
-  return {info, [info, field](ManagerConfig& c, std::string_view value) -> std::string {
+  return {info, [info, field](ManagerConfig& c, std::string_view value) {
             const auto v = base::parse_bool(value);
-            if (!v) return "parameter " + std::string(info.name) + "='" + std::string(value) +
-                           "' is not true or false";
+            if (!v) {
+              return Checked::fail("parameter " + std::string(info.name) + "='" +
+                                   std::string(value) + "' is not true or false");
+            }
             c.*field = *v;
-            return {};
+            return Checked::ok();
           }};
 }
 
@@ -75,38 +83,38 @@ const std::vector<ParamRow>& param_rows() {
       number_row({"prior_hazard", "0.5", "prior P(hazard) of a newly detected object, (0, 1)"},
                  &ManagerConfig::prior_hazard, check_open_probability),
       {{"report_name", "", "name= part of HAZARDSET_REPORT (quotes stripped)"},
-       [](ManagerConfig& c, std::string_view value) -> std::string {
+       [](ManagerConfig& c, std::string_view value) {
          std::string v(base::trim(value));
          v.erase(std::remove(v.begin(), v.end(), '"'), v.end());
          c.report_name = v;
-         return {};
+         return Checked::ok();
        }},
       {{"region", "", "search region (convex polygon) for the transit lane; else the grader's"},
-       [](ManagerConfig& c, std::string_view value) -> std::string {
+       [](ManagerConfig& c, std::string_view value) {
          auto parsed = ConvexPolygon::parse(value);
-         if (auto* e = std::get_if<ConvexPolygon::Error>(&parsed))
-           return "parameter region: " + e->message;
-         c.region = std::get<ConvexPolygon>(std::move(parsed));
-         return {};
+         if (!parsed) return Checked::fail("parameter region: " + parsed.error);
+         c.region = std::move(parsed.value);
+         return Checked::ok();
        }},
       bool_row({"report_xpath", "false", "add the xpath= part to HAZARDSET_REPORT"},
                &ManagerConfig::report_xpath),
       bool_row({"classify", "true", "request a classification of every detection"},
                &ManagerConfig::classify),
       {{"classify_lookahead", "2", "answers valued together for a request's priority, 1..20"},
-       [](ManagerConfig& c, std::string_view value) -> std::string {
+       [](ManagerConfig& c, std::string_view value) {
          const auto v = base::parse_unsigned(value);
-         if (!v || *v < 1 || *v > static_cast<std::uint64_t>(kMaxLookaheadAnswers))
-           return "parameter classify_lookahead='" + std::string(value) +
-                  "' is not a whole number in [1, 20]";
+         if (!v || *v < 1 || *v > static_cast<std::uint64_t>(kMaxLookaheadAnswers)) {
+           return Checked::fail("parameter classify_lookahead='" + std::string(value) +
+                                "' is not a whole number in [1, 20]");
+         }
          c.classify_lookahead = static_cast<int>(*v);
-         return {};
+         return Checked::ok();
        },
-       [](const ManagerConfig& c) -> std::string {
-         return c.classify_lookahead >= 1 && c.classify_lookahead <= kMaxLookaheadAnswers
-                    ? std::string()
-                    : "parameter classify_lookahead=" + std::to_string(c.classify_lookahead) +
-                          " must be in [1, 20]";
+       [](const ManagerConfig& c) {
+         if (c.classify_lookahead >= 1 && c.classify_lookahead <= kMaxLookaheadAnswers)
+           return Checked::ok();
+         return Checked::fail("parameter classify_lookahead=" +
+                              std::to_string(c.classify_lookahead) + " must be in [1, 20]");
        }},
       bool_row({"count_missed_passes", "true", "use passes without a detection as evidence"},
                &ManagerConfig::count_missed_passes),
@@ -139,20 +147,20 @@ const std::vector<ParamInfo>& manager_parameters() {
   return infos;
 }
 
-std::string apply_manager_param(ManagerConfig& config, std::string_view key,
-                                std::string_view value) {
+Checked apply_manager_param(ManagerConfig& config, std::string_view key,
+                            std::string_view value) {
   std::string name = base::to_lower(base::trim(key));
   if (name == "pd") name = "sensor_pd";  // as uFldHazardMgr: both names are accepted
   for (const ParamRow& row : param_rows())
     if (name == row.info.name) return row.apply(config, value);
-  return "unknown parameter '" + std::string(base::trim(key)) + "'";
+  return Checked::fail("unknown parameter '" + std::string(base::trim(key)) + "'");
 }
 
-std::string validate(const ManagerConfig& c) {
-  if (c.vname.empty()) return "the vehicle name is empty";
+Checked validate(const ManagerConfig& c) {
+  if (c.vname.empty()) return Checked::fail("the vehicle name is empty");
   for (const ParamRow& row : param_rows())
-    if (std::string p = row.check(c); !p.empty()) return p;
-  return {};
+    if (Checked checked = row.check(c); !checked) return checked;
+  return Checked::ok();
 }
 
 }  // namespace mission

@@ -109,11 +109,11 @@ std::vector<std::string> HazardMetric::load_hazard_file(std::string_view file_na
       source_ = std::string(right);
     } else if (base::iequals(left, "region")) {
       auto parsed = ConvexPolygon::parse(right);
-      if (auto* error = std::get_if<ConvexPolygon::Error>(&parsed)) {
+      if (!parsed) {
         warnings.push_back(std::string(file_name) + ":" + std::to_string(line_number) +
-                           ": bad region spec: " + error->message);
+                           ": bad region spec: " + parsed.error);
       } else {
-        region_ = std::get<ConvexPolygon>(std::move(parsed));
+        region_ = std::move(parsed.value);
       }
     }
   }

@@ -23,25 +23,26 @@ double signed_area_m2(const std::vector<glm::dvec2>& v) {
 }
 
 // The text between "pts={" and its closing brace, or the whole text when there is no "pts=".
-std::variant<std::string_view, std::string> points_text(std::string_view text) {
+base::Result<std::string_view> points_text(std::string_view text) {
+  using R = base::Result<std::string_view>;
   const auto pts = text.find("pts=");
-  if (pts == std::string_view::npos) return base::trim(text);
+  if (pts == std::string_view::npos) return R::ok(base::trim(text));
   const auto open = text.find_first_not_of(" \t", pts + 4);
   if (open == std::string_view::npos || text[open] != '{')
-    return std::string("'pts=' must be followed by '{'");
+    return R::fail("'pts=' must be followed by '{'");
   const auto close = text.find('}', open);
-  if (close == std::string_view::npos) return std::string("'pts={' has no closing '}'");
-  return text.substr(open + 1, close - open - 1);
+  if (close == std::string_view::npos) return R::fail("'pts={' has no closing '}'");
+  return R::ok(text.substr(open + 1, close - open - 1));
 }
 
 }  // namespace
 
-std::variant<ConvexPolygon, ConvexPolygon::Error> ConvexPolygon::make(
-    std::vector<glm::dvec2> vertices_m) {
+base::Result<ConvexPolygon> ConvexPolygon::make(std::vector<glm::dvec2> vertices_m) {
+  using R = base::Result<ConvexPolygon>;
   const std::size_t n = vertices_m.size();
-  if (n < 3) return Error{"a polygon needs at least 3 vertices, got " + std::to_string(n)};
+  if (n < 3) return R::fail("a polygon needs at least 3 vertices, got " + std::to_string(n));
   const double area = signed_area_m2(vertices_m);
-  if (!(std::abs(area) > 0.0)) return Error{"the polygon has zero area"};
+  if (!(std::abs(area) > 0.0)) return R::fail("the polygon has zero area");
   const double orientation = area > 0.0 ? 1.0 : -1.0;
   double turning_rad = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
@@ -50,22 +51,22 @@ std::variant<ConvexPolygon, ConvexPolygon::Error> ConvexPolygon::make(
     const glm::dvec2 c = vertices_m[(i + 2) % n];
     const double turn = cross(b - a, c - b) * orientation;
     if (turn < 0.0) {
-      return Error{"the polygon is not convex at vertex " + std::to_string((i + 1) % n + 1) +
-                   " (" + base::fmt(b.x, 2) + "," + base::fmt(b.y, 2) + ")"};
+      return R::fail("the polygon is not convex at vertex " + std::to_string((i + 1) % n + 1) +
+                     " (" + base::fmt(b.x, 2) + "," + base::fmt(b.y, 2) + ")");
     }
     if (b != a && c != b) turning_rad += std::atan2(turn, glm::dot(b - a, c - b));
   }
   if (std::abs(turning_rad - 2.0 * kPi) > kWindingTolerance_rad)
-    return Error{"the polygon winds around more than once"};
-  return ConvexPolygon(std::move(vertices_m), orientation);
+    return R::fail("the polygon winds around more than once");
+  return R::ok(ConvexPolygon(std::move(vertices_m), orientation));
 }
 
-std::variant<ConvexPolygon, ConvexPolygon::Error> ConvexPolygon::parse(std::string_view text) {
+base::Result<ConvexPolygon> ConvexPolygon::parse(std::string_view text) {
+  using R = base::Result<ConvexPolygon>;
   auto points = parse_points(text);
-  if (auto* error = std::get_if<Error>(&points)) return *error;
-  auto polygon = make(std::get<std::vector<glm::dvec2>>(std::move(points)));
-  if (auto* error = std::get_if<Error>(&polygon))
-    return Error{"polygon '" + std::string(base::trim(text)) + "': " + error->message};
+  if (!points) return R::fail(std::move(points.error));
+  auto polygon = make(std::move(*points.value));
+  if (!polygon) return R::fail("polygon '" + std::string(base::trim(text)) + "': " + polygon.error);
   return polygon;
 }
 
@@ -123,13 +124,15 @@ std::string format_points(const std::vector<glm::dvec2>& points_m) {
   return out + "}";
 }
 
-std::variant<std::vector<glm::dvec2>, ConvexPolygon::Error> parse_points(std::string_view text) {
-  using Error = ConvexPolygon::Error;
+base::Result<std::vector<glm::dvec2>> parse_points(std::string_view text) {
+  using R = base::Result<std::vector<glm::dvec2>>;
+  auto refused = [text](const std::string& why) {
+    return R::fail("polygon '" + std::string(base::trim(text)) + "': " + why);
+  };
   const auto body = points_text(text);
-  if (const auto* problem = std::get_if<std::string>(&body))
-    return Error{"polygon '" + std::string(base::trim(text)) + "': " + *problem};
-  const std::string_view list = base::trim(std::get<std::string_view>(body));
-  if (list.empty()) return Error{"polygon '" + std::string(base::trim(text)) + "': no vertices"};
+  if (!body) return refused(body.error);
+  const std::string_view list = base::trim(*body.value);
+  if (list.empty()) return refused("no vertices");
   std::vector<glm::dvec2> points;
   for (std::string_view vertex : base::split_trimmed(list, ':')) {
     const auto coords = base::split_trimmed(vertex, ',');
@@ -137,12 +140,11 @@ std::variant<std::vector<glm::dvec2>, ConvexPolygon::Error> parse_points(std::st
     const auto y = coords.size() >= 2 ? base::parse_number(coords[1]) : std::nullopt;
     const bool z_ok = coords.size() == 2 || (coords.size() == 3 && base::parse_number(coords[2]));
     if (!x || !y || !z_ok) {
-      return Error{"polygon '" + std::string(base::trim(text)) + "': bad vertex '" +
-                   std::string(base::trim(vertex)) + "' (expected x,y)"};
+      return refused("bad vertex '" + std::string(base::trim(vertex)) + "' (expected x,y)");
     }
     points.emplace_back(*x, *y);
   }
-  return points;
+  return R::ok(std::move(points));
 }
 
 }  // namespace mission

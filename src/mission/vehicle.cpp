@@ -34,12 +34,13 @@ constexpr double kDegPerRad = 57.295779513082320876798;
 /// 180 degrees, and a U-turn onto a parallel lane is two 90-degree corners anyway.
 constexpr double kMaxAnticipatedTurn_deg = 120.0;
 
-std::string bad(const char* name, double value, const char* rule) {
-  return std::string("vehicle parameter ") + name + "=" + base::fmt(value, 6) + " " + rule;
+base::Result<void> bad(const char* name, double value, const char* rule) {
+  return base::Result<void>::fail(std::string("vehicle parameter ") + name + "=" +
+                                  base::fmt(value, 6) + " " + rule);
 }
 }  // namespace
 
-std::string validate(const VehicleParams& p) {
+base::Result<void> validate(const VehicleParams& p) {
   auto positive = [](double v) { return std::isfinite(v) && v > 0.0; };
   auto non_negative = [](double v) { return std::isfinite(v) && v >= 0.0; };
   if (!positive(p.speed_mps)) return bad("speed_mps", p.speed_mps, "must be > 0");
@@ -53,12 +54,12 @@ std::string validate(const VehicleParams& p) {
   if (!non_negative(p.capture_radius_m))
     return bad("capture_radius_m", p.capture_radius_m, "must be >= 0");
   if (!positive(p.lead_m)) return bad("lead_m", p.lead_m, "must be > 0");
-  return {};
+  return base::Result<void>::ok();
 }
 
 SurveyVehicle::SurveyVehicle(const VehicleParams& params, const Pose& start)
     : params_(params), start_time_s_(start.time_s) {
-  assert(validate(params).empty());
+  assert(validate(params));
   state_.position_m = start.position_m;
   state_.heading_deg = base::norm360(start.heading_deg);
   state_.segment_start_m = start.position_m;

@@ -13,9 +13,11 @@ namespace {
 /// Where a numeric parameter lives in the configuration.
 using Field = double& (*)(SurveyVehicleConfig&);
 
+using Applied = base::Result<void>;
+
 struct Row {
   ParamInfo info;
-  std::function<std::string(SurveyVehicleConfig&, std::string_view)> apply;
+  std::function<Applied(SurveyVehicleConfig&, std::string_view)> apply;
 };
 
 bool positive(double v) { return v > 0.0; }
@@ -28,10 +30,11 @@ Row number_row(ParamInfo info, bool (*ok)(double), const char* rule, Field field
   auto apply = [info, ok, rule, field](SurveyVehicleConfig& c, std::string_view value) {
     const auto v = base::parse_number(value);
     const std::string name(info.name);
-    if (!v) return "parameter " + name + "='" + std::string(value) + "' is not a number";
-    if (!ok(*v)) return "parameter " + name + "=" + base::fmt(*v, 6) + " " + rule;
+    if (!v) return Applied::fail("parameter " + name + "='" + std::string(value) +
+                                 "' is not a number");
+    if (!ok(*v)) return Applied::fail("parameter " + name + "=" + base::fmt(*v, 6) + " " + rule);
     field(c) = *v;
-    return std::string();
+    return Applied::ok();
   };
   return {info, apply};
 }
@@ -39,9 +42,11 @@ Row number_row(ParamInfo info, bool (*ok)(double), const char* rule, Field field
 // A parameter whose value is a point list (a region or a route).
 template <class Apply>
 Row points_row(ParamInfo info, Apply apply) {
-  return {info, [info, apply](SurveyVehicleConfig& c, std::string_view value) -> std::string {
-            std::string error = apply(c, value);
-            return error.empty() ? error : "parameter " + std::string(info.name) + ": " + error;
+  return {info, [info, apply](SurveyVehicleConfig& c, std::string_view value) {
+            Applied applied = apply(c, value);
+            if (!applied)
+              applied.error = "parameter " + std::string(info.name) + ": " + applied.error;
+            return applied;
           }};
 }
 
@@ -64,18 +69,21 @@ const std::vector<Row>& rows() {
       number_row({"lead", "15", "look-ahead along the track line, m (> 0)"}, positive,
                  "must be > 0", [](C& c) -> double& { return c.vehicle.lead_m; }),
       {{"random_seed", "1", "heading-noise seed (whole number)"},
-       [](C& c, std::string_view value) -> std::string {
+       [](C& c, std::string_view value) {
          const auto v = base::parse_unsigned(value);
-         if (!v) return "parameter random_seed='" + std::string(value) + "' is not a whole number";
+         if (!v) {
+           return Applied::fail("parameter random_seed='" + std::string(value) +
+                                "' is not a whole number");
+         }
          c.vehicle.seed = *v;
-         return {};
+         return Applied::ok();
        }},
       points_row({"region", "", "survey area, convex polygon (lawnmower)"},
-                 [](C& c, std::string_view value) -> std::string {
+                 [](C& c, std::string_view value) {
                    auto parsed = ConvexPolygon::parse(value);
-                   if (auto* e = std::get_if<ConvexPolygon::Error>(&parsed)) return e->message;
-                   c.region = std::get<ConvexPolygon>(std::move(parsed));
-                   return {};
+                   if (!parsed) return Applied::fail(std::move(parsed.error));
+                   c.region = std::move(parsed.value);
+                   return Applied::ok();
                  }),
       number_row({"swath_width", "25", "sensor W (m to each side) the lanes are spaced for (> 0)"},
                  positive, "must be > 0",
@@ -89,11 +97,11 @@ const std::vector<Row>& rows() {
                  non_negative, "must be >= 0",
                  [](C& c) -> double& { return c.lawnmower.lane_extension_m; }),
       points_row({"waypoints", "", "route when there is no region: pts={x1,y1:x2,y2:...}"},
-                 [](C& c, std::string_view value) -> std::string {
+                 [](C& c, std::string_view value) {
                    auto parsed = parse_points(value);
-                   if (auto* e = std::get_if<ConvexPolygon::Error>(&parsed)) return e->message;
-                   c.waypoints_m = std::get<std::vector<glm::dvec2>>(std::move(parsed));
-                   return {};
+                   if (!parsed) return Applied::fail(std::move(parsed.error));
+                   c.waypoints_m = std::move(*parsed.value);
+                   return Applied::ok();
                  }),
       number_row({"start_x", "0", "start position east, m"}, any, "",
                  [](C& c) -> double& { return c.start_m.x; }),
@@ -114,12 +122,12 @@ const std::vector<ParamInfo>& survey_vehicle_parameters() {
   return infos;
 }
 
-std::string apply_survey_vehicle_param(SurveyVehicleConfig& config, std::string_view key,
-                                       std::string_view value) {
+Applied apply_survey_vehicle_param(SurveyVehicleConfig& config, std::string_view key,
+                                   std::string_view value) {
   const std::string name = base::to_lower(base::trim(key));
   for (const Row& r : rows())
     if (name == r.info.name) return r.apply(config, base::trim(value));
-  return "unknown parameter '" + std::string(base::trim(key)) + "'";
+  return Applied::fail("unknown parameter '" + std::string(base::trim(key)) + "'");
 }
 
 base::Result<std::vector<glm::dvec2>> plan_route(const SurveyVehicleConfig& config) {

@@ -145,15 +145,15 @@ class AlogFile::Impl {
 };
 
 std::string AlogFile::Impl::open_file() {
-  std::string problem;
-  auto file = base::OutputFile::open(path_, base::OutputMode::kInPlace, problem);
-  if (!file) return problem;
+  auto file = base::OutputFile::open(path_, base::OutputMode::kInPlace);
+  if (!file) return file.error;
   const std::string header = alog_header(file_name_of(path_), logstart_s_);
-  if (!file->write(header, problem) || !file->flush(problem)) return problem;
-  fd_ = file->descriptor();
-  regular_ = !file->written_through();
+  if (auto written = file.value->write(header); !written) return written.error;
+  if (auto flushed = file.value->flush(); !flushed) return flushed.error;
+  fd_ = file.value->descriptor();
+  regular_ = !file.value->written_through();
   ::fcntl(fd_, F_SETFL, ::fcntl(fd_, F_GETFL) | O_NONBLOCK);  // never wait for a reader
-  file_ = std::move(file);
+  file_ = std::move(file.value);
   boundary_ = header.size();
   in_file_ = 0;
   torn_ = false;
@@ -383,8 +383,7 @@ bool AlogFile::Impl::close(std::string& problem) {
   queue_.clear();
   closed_ = true;
   if (file_) {
-    std::string closing;
-    if (!file_->commit(closing)) last_problem_ = closing;
+    if (auto closing = file_->commit(); !closing) last_problem_ = closing.error;
     file_.reset();
   }
   fd_ = -1;

@@ -35,13 +35,13 @@ class LineStreamTest : public ::testing::Test {
   static std::vector<std::pair<std::size_t, std::string>> lines_of(const std::string& path,
                                                                    std::size_t max,
                                                                    std::size_t* long_lines) {
-    std::string problem;
-    auto stream = LineStream::open(path, max, problem);
-    EXPECT_TRUE(stream) << problem;
+    Result<LineStream> opened = LineStream::open(path, max);
+    EXPECT_TRUE(opened) << opened.error;
     std::vector<std::pair<std::size_t, std::string>> out;
-    if (!stream) return out;
-    while (const auto line = stream->next()) out.emplace_back(stream->line_number(), *line);
-    if (long_lines) *long_lines = stream->long_lines();
+    if (!opened) return out;
+    LineStream& stream = *opened.value;
+    while (const auto line = stream.next()) out.emplace_back(stream.line_number(), *line);
+    if (long_lines) *long_lines = stream.long_lines();
     return out;
   }
 
@@ -90,13 +90,11 @@ TEST_F(LineStreamTest, AFifoIsReadAsAFileIs) {
 }
 
 TEST_F(LineStreamTest, ADeviceOrFolderIsRefusedWithTheReason) {
-  std::string problem;
-  EXPECT_FALSE(LineStream::open("/dev/zero", 100, problem));
-  EXPECT_EQ(problem, "is a device, not a regular file");
-  EXPECT_FALSE(LineStream::open(dir_.string(), 100, problem));
-  EXPECT_EQ(problem, "is a directory");
-  EXPECT_FALSE(LineStream::open((dir_ / "missing").string(), 100, problem));
-  EXPECT_NE(problem.find("cannot be opened"), std::string::npos);
+  EXPECT_EQ(LineStream::open("/dev/zero", 100).error, "is a device, not a regular file");
+  EXPECT_EQ(LineStream::open(dir_.string(), 100).error, "is a directory");
+  const Result<LineStream> missing = LineStream::open((dir_ / "missing").string(), 100);
+  EXPECT_FALSE(missing);
+  EXPECT_NE(missing.error.find("cannot be opened"), std::string::npos);
 }
 
 }  // namespace

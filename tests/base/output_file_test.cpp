@@ -37,18 +37,18 @@ class OutputFileTest : public ::testing::Test {
 
   /// write_output_file as a program would use it: 0, or 1 with the problem.
   static WriteEnd replace(const std::string& path) {
-    const auto problem = write_output_file(path, kText);
-    return {problem ? 1 : 0, problem.value_or("")};
+    const Result<void> written = write_output_file(path, kText);
+    return {written ? 0 : 1, written.error};
   }
   /// A log's way: opened in place, written a line at a time, committed.
   static WriteEnd in_place(const std::string& path) {
-    std::string problem;
-    auto file = OutputFile::open(path, OutputMode::kInPlace, problem);
-    bool ok = file.has_value();
-    for (std::size_t at = 0; ok && at < kText.size(); at += 1000)
-      ok = file->write(std::string_view(kText).substr(at, 1000), problem);
-    ok = ok && file->commit(problem);
-    return {ok ? 0 : 1, problem};
+    auto file = OutputFile::open(path, OutputMode::kInPlace);
+    if (!file) return {1, file.error};
+    Result<void> done = Result<void>::ok();
+    for (std::size_t at = 0; done && at < kText.size(); at += 1000)
+      done = file.value->write(std::string_view(kText).substr(at, 1000));
+    if (done) done = file.value->commit();
+    return {done ? 0 : 1, done.error};
   }
   static void is_the_text(const std::string& bytes) { EXPECT_EQ(bytes, kText); }
 
@@ -94,10 +94,10 @@ TEST_F(OutputFileTest, AReaderNeverSeesAHalfFile) {
   const std::string path = (dir_ / "out").string();
   const std::string a(300000, 'a');
   const std::string b(100000, 'b');
-  ASSERT_EQ(write_output_file(path, a), std::nullopt);
+  ASSERT_EQ(write_output_file(path, a).error, "");
   std::atomic<bool> done{false};
   std::thread writer([&] {
-    for (int i = 0; i < 100; ++i) EXPECT_EQ(write_output_file(path, i % 2 ? a : b), std::nullopt);
+    for (int i = 0; i < 100; ++i) EXPECT_EQ(write_output_file(path, i % 2 ? a : b).error, "");
     done = true;
   });
   int reads = 0;
@@ -115,10 +115,9 @@ TEST_F(OutputFileTest, WithoutCommitTheTargetStaysAsItWasAndNoTemporaryIsLeft) {
   const fs::path path = dir_ / "out";
   std::ofstream(path) << "old\n";
   {
-    std::string problem;
-    auto file = OutputFile::open(path.string(), OutputMode::kReplace, problem);
-    ASSERT_TRUE(file) << problem;
-    ASSERT_TRUE(file->write(kText, problem));
+    auto file = OutputFile::open(path.string(), OutputMode::kReplace);
+    ASSERT_TRUE(file) << file.error;
+    ASSERT_TRUE(file.value->write(kText));
   }
   EXPECT_EQ(read_all(path), "old\n");
   EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 1);
@@ -128,14 +127,14 @@ TEST_F(OutputFileTest, AReplacedFileKeepsItsPermissionsAndANewOneGetsTheUsualOne
   const fs::path kept = dir_ / "kept";
   std::ofstream(kept) << "old\n";
   ASSERT_EQ(::chmod(kept.c_str(), 0640), 0);
-  ASSERT_EQ(write_output_file(kept.string(), "new\n"), std::nullopt);
+  ASSERT_EQ(write_output_file(kept.string(), "new\n").error, "");
   struct stat info {};
   ASSERT_EQ(::stat(kept.c_str(), &info), 0);
   EXPECT_EQ(info.st_mode & 0777, 0640u);
 
   const mode_t old_mask = ::umask(022);
   const fs::path fresh = dir_ / "fresh";
-  EXPECT_EQ(write_output_file(fresh.string(), "x\n"), std::nullopt);
+  EXPECT_EQ(write_output_file(fresh.string(), "x\n").error, "");
   ::umask(old_mask);
   ASSERT_EQ(::stat(fresh.c_str(), &info), 0);
   EXPECT_EQ(info.st_mode & 0777, 0644u);
@@ -144,7 +143,7 @@ TEST_F(OutputFileTest, AReplacedFileKeepsItsPermissionsAndANewOneGetsTheUsualOne
 TEST_F(OutputFileTest, ALinkToNothingYetCreatesItsTargetAndALinkChainIsFollowed) {
   fs::create_symlink(dir_ / "made", dir_ / "dangling");
   fs::create_symlink("dangling", dir_ / "chain");
-  ASSERT_EQ(write_output_file((dir_ / "chain").string(), "x\n"), std::nullopt);
+  ASSERT_EQ(write_output_file((dir_ / "chain").string(), "x\n").error, "");
   EXPECT_EQ(kind_at(dir_ / "chain"), S_IFLNK);
   EXPECT_EQ(kind_at(dir_ / "dangling"), S_IFLNK);
   EXPECT_EQ(read_all(dir_ / "made"), "x\n");
@@ -154,13 +153,13 @@ TEST_F(OutputFileTest, ALinkLoopAndAMissingFolderAreErrorsNamingThePath) {
   fs::create_symlink("loop_b", dir_ / "loop_a");
   fs::create_symlink("loop_a", dir_ / "loop_b");
   const std::string loop = (dir_ / "loop_a").string();
-  const auto problem = write_output_file(loop, "x\n");
-  ASSERT_TRUE(problem);
-  EXPECT_NE(problem->find("'" + loop + "'"), std::string::npos) << *problem;
-  EXPECT_NE(problem->find("Too many levels of symbolic links"), std::string::npos) << *problem;
+  const std::string problem = write_output_file(loop, "x\n").error;
+  ASSERT_FALSE(problem.empty());
+  EXPECT_NE(problem.find("'" + loop + "'"), std::string::npos) << problem;
+  EXPECT_NE(problem.find("Too many levels of symbolic links"), std::string::npos) << problem;
 
   const std::string missing = (dir_ / "no_such_folder" / "out").string();
-  EXPECT_EQ(write_output_file(missing, "x\n"),
+  EXPECT_EQ(write_output_file(missing, "x\n").error,
             "cannot write '" + missing + "': No such file or directory");
 }
 
@@ -174,9 +173,9 @@ TEST_F(OutputFileTest, ASocketIsRefused) {
   const bool bound = ::bind(fd, reinterpret_cast<sockaddr*>(&address), sizeof address) == 0;
   ::close(fd);  // (the socket file stays)
   if (!bound) GTEST_SKIP() << "no socket file can be made here";
-  const auto problem = write_output_file(socket_path, "x\n");
-  ASSERT_TRUE(problem);
-  EXPECT_NE(problem->find("it is a socket"), std::string::npos) << *problem;
+  const std::string problem = write_output_file(socket_path, "x\n").error;
+  ASSERT_FALSE(problem.empty());
+  EXPECT_NE(problem.find("it is a socket"), std::string::npos) << problem;
   EXPECT_EQ(kind_at(socket_path), S_IFSOCK);
 }
 

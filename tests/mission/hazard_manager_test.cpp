@@ -55,32 +55,32 @@ double prior_plus(double log_lr) { return logistic(logit(0.5) + log_lr); }
 
 TEST(ManagerConfigTable, ParametersAreValidatedAndNamed_Spec13) {
   ManagerConfig c = archie_config();
-  EXPECT_EQ(apply_manager_param(c, "Swath_Width", "10"), "");
+  EXPECT_EQ(apply_manager_param(c, "Swath_Width", "10").error, "");
   EXPECT_EQ(c.swath_width_m, 10);
-  EXPECT_EQ(apply_manager_param(c, "pd", "0.75"), "");  // uFldHazardMgr's alias of sensor_pd
+  EXPECT_EQ(apply_manager_param(c, "pd", "0.75").error, "");  // uFldHazardMgr's alias of sensor_pd
   EXPECT_EQ(c.pd, 0.75);
-  EXPECT_EQ(apply_manager_param(c, "sensor_pd", "1.5"),
+  EXPECT_EQ(apply_manager_param(c, "sensor_pd", "1.5").error,
             "parameter sensor_pd=1.5 must be in [0, 1]");
-  EXPECT_EQ(apply_manager_param(c, "swath_width", "wide"),
+  EXPECT_EQ(apply_manager_param(c, "swath_width", "wide").error,
             "parameter swath_width='wide' is not a number");
-  EXPECT_EQ(apply_manager_param(c, "prior_hazard", "0"),
+  EXPECT_EQ(apply_manager_param(c, "prior_hazard", "0").error,
             "parameter prior_hazard=0 must be in (0, 1)");
-  EXPECT_EQ(apply_manager_param(c, "report_name", "\"final report\""), "");
+  EXPECT_EQ(apply_manager_param(c, "report_name", "\"final report\"").error, "");
   EXPECT_EQ(c.report_name, "final report");
-  EXPECT_EQ(apply_manager_param(c, "region", "0,0:10,0:10,10"), "");
+  EXPECT_EQ(apply_manager_param(c, "region", "0,0:10,0:10,10").error, "");
   EXPECT_TRUE(c.region.has_value());
-  EXPECT_NE(apply_manager_param(c, "region", "0,0:10,0").find("parameter region: polygon"),
+  EXPECT_NE(apply_manager_param(c, "region", "0,0:10,0").error.find("parameter region: polygon"),
             std::string::npos);
-  EXPECT_EQ(apply_manager_param(c, "classify_lookahead", "0"),
+  EXPECT_EQ(apply_manager_param(c, "classify_lookahead", "0").error,
             "parameter classify_lookahead='0' is not a whole number in [1, 20]");
-  EXPECT_EQ(apply_manager_param(c, "report_xpath", "yes"), "");
+  EXPECT_EQ(apply_manager_param(c, "report_xpath", "yes").error, "");
   EXPECT_TRUE(c.report_xpath);
-  EXPECT_EQ(apply_manager_param(c, "colour", "red"), "unknown parameter 'colour'");
-  EXPECT_EQ(validate(c), "");
+  EXPECT_EQ(apply_manager_param(c, "colour", "red").error, "unknown parameter 'colour'");
+  EXPECT_EQ(validate(c).error, "");
   c.detection_latency_s = -1;
-  EXPECT_EQ(validate(c), "parameter detection_latency=-1 must be >= 0");
+  EXPECT_EQ(validate(c).error, "parameter detection_latency=-1 must be >= 0");
   ManagerConfig unnamed;
-  EXPECT_EQ(validate(unnamed), "the vehicle name is empty");
+  EXPECT_EQ(validate(unnamed).error, "the vehicle name is empty");
   EXPECT_GE(manager_parameters().size(), 15u);
 }
 
@@ -266,7 +266,7 @@ TEST(Manager, ReportKeepsTheAspectFieldsOfTheDetection_Spec4_4) {
 TEST(Manager, XpathIsTheMinimumHazardLaneOverTheReportedObjects) {
   ManagerConfig c = archie_config();
   c.report_xpath = true;
-  c.region = std::get<ConvexPolygon>(ConvexPolygon::parse("0,0:100,0:100,50:0,50"));
+  c.region = ConvexPolygon::parse("0,0:100,0:100,50:0,50").value.value();
   HazardManager m(c);
   m.on_config_ack(archie_ack(), 0.0);
   m.on_detection(detection("a", 25, 10), 1.0);

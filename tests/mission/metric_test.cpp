@@ -312,7 +312,7 @@ TEST(MetricStart, PostsRegionLaneAndMissionParams) {
 }
 
 TEST(TransitLane, FirstXWithTheFewestHazardsByHand_Spec14_2) {
-  const auto region = std::get<ConvexPolygon>(ConvexPolygon::parse("0,0:100,0:100,50:0,50"));
+  const auto region = ConvexPolygon::parse("0,0:100,0:100,50:0,50").value.value();
   // Candidates x = 20..79; hazards at x = 25 and 30 leave strips [x-20, x+20] empty from x = 51.
   const auto lane = min_hazard_lane(region, {{25, 10}, {30, 40}, {500, 10}}, 20);
   ASSERT_TRUE(lane.has_value());
@@ -323,9 +323,9 @@ TEST(TransitLane, FirstXWithTheFewestHazardsByHand_Spec14_2) {
   const auto lane2 = min_hazard_lane(region, {{25, 10}, {30, 40}, {71, 10}}, 20);
   EXPECT_EQ(lane2->hazard_count, 1);
   EXPECT_EQ(lane2->x_m, 46);
-  const auto narrow = std::get<ConvexPolygon>(ConvexPolygon::parse("0,0:30,0:30,50:0,50"));
+  const auto narrow = ConvexPolygon::parse("0,0:30,0:30,50:0,50").value.value();
   EXPECT_FALSE(min_hazard_lane(narrow, {}, 20).has_value());
-  const auto exact = std::get<ConvexPolygon>(ConvexPolygon::parse("0,0:40,0:40,50:0,50"));
+  const auto exact = ConvexPolygon::parse("0,0:40,0:40,50:0,50").value.value();
   const auto single = min_hazard_lane(exact, {{10, 10}}, 20);
   ASSERT_TRUE(single.has_value());
   EXPECT_EQ(single->x_m, 20);

@@ -94,7 +94,7 @@ RunResult run_survey(std::uint64_t seed, int objects, double hazard_fraction, do
   constexpr double kPd = 0.9;
   const double pfa = std::pow(kPd, 4);
   constexpr double kPclass = 0.85;
-  const auto region = std::get<ConvexPolygon>(ConvexPolygon::parse("0,0:300,0:300,200:0,200"));
+  const auto region = ConvexPolygon::parse("0,0:300,0:300,200:0,200").value.value();
   RunResult result;
   for (int i = 0; i < objects; ++i) {
     const glm::dvec2 p{300.0 * uniform01(seed, 7, 3 * i), 200.0 * uniform01(seed, 7, 3 * i + 1)};

@@ -8,7 +8,7 @@ namespace mission {
 namespace {
 
 ConvexPolygon region_of(std::string_view text) {
-  return std::get<ConvexPolygon>(ConvexPolygon::parse(text));
+  return ConvexPolygon::parse(text).value.value();
 }
 
 LawnmowerPlan must_plan(const ConvexPolygon& region, const LawnmowerOptions& options) {

@@ -11,26 +11,28 @@ namespace {
 
 TEST(VehicleConfig, TableAppliesAndNamesEveryProblem) {
   SurveyVehicleConfig c;
-  EXPECT_EQ(apply_survey_vehicle_param(c, "SPEED", "1.2"), "");
+  EXPECT_EQ(apply_survey_vehicle_param(c, "SPEED", "1.2").error, "");
   EXPECT_EQ(c.vehicle.speed_mps, 1.2);
-  EXPECT_EQ(apply_survey_vehicle_param(c, "speed", "0"), "parameter speed=0 must be > 0");
-  EXPECT_EQ(apply_survey_vehicle_param(c, "speed", "fast"),
+  EXPECT_EQ(apply_survey_vehicle_param(c, "speed", "0").error, "parameter speed=0 must be > 0");
+  EXPECT_EQ(apply_survey_vehicle_param(c, "speed", "fast").error,
             "parameter speed='fast' is not a number");
   EXPECT_EQ(c.vehicle.speed_mps, 1.2);
-  EXPECT_EQ(apply_survey_vehicle_param(c, "overlap", "1"), "parameter overlap=1 must be in [0, 1)");
-  EXPECT_EQ(apply_survey_vehicle_param(c, "random_seed", "-4"),
+  EXPECT_EQ(apply_survey_vehicle_param(c, "overlap", "1").error,
+            "parameter overlap=1 must be in [0, 1)");
+  EXPECT_EQ(apply_survey_vehicle_param(c, "random_seed", "-4").error,
             "parameter random_seed='-4' is not a whole number");
-  EXPECT_EQ(apply_survey_vehicle_param(c, "random_seed", "42"), "");
+  EXPECT_EQ(apply_survey_vehicle_param(c, "random_seed", "42").error, "");
   EXPECT_EQ(c.vehicle.seed, 42u);
-  EXPECT_EQ(apply_survey_vehicle_param(c, "lane_heading", "-30"), "");
+  EXPECT_EQ(apply_survey_vehicle_param(c, "lane_heading", "-30").error, "");
   EXPECT_EQ(c.lawnmower.lane_heading_deg, -30);
-  EXPECT_NE(apply_survey_vehicle_param(c, "region", "0,0:1,1").find("parameter region: polygon"),
+  EXPECT_NE(apply_survey_vehicle_param(c, "region", "0,0:1,1")
+                .error.find("parameter region: polygon"),
             std::string::npos);
-  EXPECT_EQ(apply_survey_vehicle_param(c, "waypoints", "pts={0,10:20,30}"), "");
+  EXPECT_EQ(apply_survey_vehicle_param(c, "waypoints", "pts={0,10:20,30}").error, "");
   EXPECT_EQ(c.waypoints_m.size(), 2u);
-  EXPECT_EQ(apply_survey_vehicle_param(c, "wheels", "4"), "unknown parameter 'wheels'");
+  EXPECT_EQ(apply_survey_vehicle_param(c, "wheels", "4").error, "unknown parameter 'wheels'");
   EXPECT_EQ(survey_vehicle_parameters().size(), 17u);
-  EXPECT_EQ(validate(c.vehicle), "");
+  EXPECT_EQ(validate(c.vehicle).error, "");
 }
 
 TEST(VehicleConfig, RouteIsTheLawnmowerWhenARegionIsGivenElseTheWaypoints) {

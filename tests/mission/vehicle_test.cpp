@@ -106,11 +106,11 @@ TEST(Vehicle, IdleUntilGivenARouteAndEmptyRouteIsDoneAtOnce) {
 TEST(Vehicle, InvalidParametersAreNamed) {
   VehicleParams p;
   p.speed_mps = 0;
-  EXPECT_EQ(validate(p), "vehicle parameter speed_mps=0 must be > 0");
+  EXPECT_EQ(validate(p).error, "vehicle parameter speed_mps=0 must be > 0");
   p = {};
   p.heading_noise_tau_s = -1;
-  EXPECT_EQ(validate(p), "vehicle parameter heading_noise_tau_s=-1 must be > 0");
-  EXPECT_EQ(validate(VehicleParams{}), "");
+  EXPECT_EQ(validate(p).error, "vehicle parameter heading_noise_tau_s=-1 must be > 0");
+  EXPECT_EQ(validate(VehicleParams{}).error, "");
 }
 
 // The survey as the sensor sees it: sampled at 4 Hz, the sensor is on while the 2 s turn
@@ -119,7 +119,7 @@ TEST(Vehicle, InvalidParametersAreNamed) {
 // on.
 void expect_flown_survey_covers_region(const VehicleParams& p, double heading_deg, double w_m) {
   const auto region =
-      std::get<ConvexPolygon>(ConvexPolygon::parse("0,0:160,-20:200,120:20,140"));
+      ConvexPolygon::parse("0,0:160,-20:200,120:20,140").value.value();
   LawnmowerOptions o;
   o.swath_half_width_m = w_m;
   o.lane_heading_deg = heading_deg;

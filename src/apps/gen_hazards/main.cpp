@@ -49,8 +49,8 @@ int main(int argc, char** argv) {
   }
   const std::string& text = std::get<std::string>(file);
   if (!cli.output_path) return write_stdout(text);
-  if (auto error = base::write_output_file(*cli.output_path, text)) {
-    print_error(*error);
+  if (auto written = base::write_output_file(*cli.output_path, text); !written) {
+    print_error(written.error);
     return kExitCannotWrite;
   }
   return kExitOk;

@@ -5,7 +5,6 @@
 #include <functional>
 #include <limits>
 #include <string_view>
-#include <variant>
 
 #include "base/text.hpp"
 #include "hazard/ranges.hpp"
@@ -62,11 +61,11 @@ std::string without_polygon_prefix(const std::string& message, std::string_view 
 
 void apply_polygon(const ArgContext& c) {
   auto parsed = mission::ConvexPolygon::parse(c.value);
-  if (const auto* error = std::get_if<mission::ConvexPolygon::Error>(&parsed)) {
-    c.fail("not a valid convex polygon: " + without_polygon_prefix(error->message, c.value));
+  if (!parsed) {
+    c.fail("not a valid convex polygon: " + without_polygon_prefix(parsed.error, c.value));
     return;
   }
-  auto& polygon = std::get<mission::ConvexPolygon>(parsed);
+  auto& polygon = *parsed.value;
   // Every object must load in the sensor, which refuses positions beyond the bound; a polygon
   // beyond it (1e300 once gave "covers only -nan of its bounding box") is refused here.
   const mission::Bounds box = polygon.bounds();

@@ -21,9 +21,12 @@ std::optional<InputLog> InputLog::open(const std::string& path, std::ostream& er
     }
     log.mapped_ = std::move(whole.value);
   } else {
-    auto stream = base::LineStream::open(path, kMaxInputLineBytes, problem);
-    if (!stream) return std::nullopt;
-    log.stream_.emplace(std::move(*stream));
+    base::Result<base::LineStream> stream = base::LineStream::open(path, kMaxInputLineBytes);
+    if (!stream) {
+      problem = std::move(stream.error);
+      return std::nullopt;
+    }
+    log.stream_.emplace(std::move(*stream.value));
   }
   log.fill();
   return log;

@@ -13,18 +13,17 @@ namespace {
 /// The replay written to --output (base/output_file.hpp): a regular file replaced only when the
 /// replay succeeded (else it stays as it was), a device or FIFO written through.
 int replay_to_file(const hazard_replay::Options& options) {
-  std::string problem;
-  auto file = base::OutputFile::open(*options.output_path, base::OutputMode::kReplace, problem);
+  auto file = base::OutputFile::open(*options.output_path, base::OutputMode::kReplace);
   if (!file) {
-    std::cerr << "hazard_replay: --output: " << problem << "\n";
+    std::cerr << "hazard_replay: --output: " << file.error << "\n";
     return 1;
   }
-  base::OutputFileBuffer buffer(*file);
+  base::OutputFileBuffer buffer(*file.value);
   std::ostream out(&buffer);
   const int status = hazard_replay::run(options, out, std::cerr);
   if (status != 0) return status;
-  if (!file->commit(problem)) {
-    std::cerr << "hazard_replay: --output: " << problem << "\n";
+  if (auto committed = file.value->commit(); !committed) {
+    std::cerr << "hazard_replay: --output: " << committed.error << "\n";
     return 1;
   }
   return 0;

@@ -41,13 +41,9 @@ std::string sort_warnings(const MissionResult& r, const Setting& setting, bool f
 }
 
 int write_alog(const std::string& path, const std::string& alog, std::ostream& err) {
-  std::string problem;
-  auto file = base::OutputFile::open(path, base::OutputMode::kReplace, problem);
-  if (!file || !file->write(alog, problem) || !file->commit(problem)) {
-    err << "hazard_study: --alog: " << problem << "\n";
-    return 1;
-  }
-  return 0;
+  const base::Result<void> written = base::write_output_file(path, alog);
+  if (!written) err << "hazard_study: --alog: " << written.error << "\n";
+  return written ? 0 : 1;
 }
 
 /// The plan of one field: a generated field's name and text go to the plan and the cache;

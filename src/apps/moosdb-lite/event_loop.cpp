@@ -60,9 +60,9 @@ std::string peer_name(const sockaddr_in& addr) {
 /// The bound port, one line, by the rule of every user-named output (base/output_file.hpp): a
 /// script waiting for the file never reads half a number, and a device or FIFO stays one.
 bool write_port_file(const std::string& path, int port, std::string* error) {
-  const auto problem = base::write_output_file(path, std::to_string(port) + "\n");
-  if (problem) *error = "--port-file: " + *problem;
-  return !problem;
+  const auto written = base::write_output_file(path, std::to_string(port) + "\n");
+  if (!written) *error = "--port-file: " + written.error;
+  return static_cast<bool>(written);
 }
 
 }  // namespace

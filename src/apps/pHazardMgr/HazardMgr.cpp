@@ -83,11 +83,11 @@ std::optional<std::string> HazardMgr::apply_app_param(const moos::ConfigLine& li
 bool HazardMgr::on_start_up() {
   apply_config_lines([&](const moos::ConfigLine& line) {
     std::optional<std::string> problem = apply_app_param(line);
-    return problem ? *problem : mission::apply_manager_param(config_, line.key, line.value);
+    return problem ? *problem : mission::apply_manager_param(config_, line.key, line.value).error;
   });
   config_.vname = vehicle_name(app_.vname);
-  if (const std::string problem = mission::validate(config_); !problem.empty()) {
-    report_config_warning(problem + "; the manager's defaults are used");
+  if (const auto valid = mission::validate(config_); !valid) {
+    report_config_warning(valid.error + "; the manager's defaults are used");
     const std::string vname = config_.vname;
     config_ = mission::ManagerConfig{};
     config_.vname = vname;

@@ -73,8 +73,8 @@ int export_file(const std::string& log_path, const std::string& output, OfflineS
   }
   // The rule of every user-named output: a regular file replaced atomically, a device or FIFO
   // written through, a link followed (base/output_file.hpp).
-  if (const auto problem = base::write_output_file(output, *html)) {
-    err << kAppName << ": --output: " << *problem << "\n";
+  if (const auto written = base::write_output_file(output, *html); !written) {
+    err << kAppName << ": --output: " << written.error << "\n";
     return 1;
   }
   out << kAppName << ": wrote " << output << " (" << log->mail.size() << " postings of "

@@ -35,9 +35,8 @@ std::optional<ReplayLog> read_replay_log(const std::string& path, const std::vec
                                          const ReplayLimits& limits, std::string* error) {
   std::error_code ec;
   const std::uintmax_t bytes = std::filesystem::file_size(path, ec);
-  std::string problem;
-  std::optional<base::LineStream> in = base::LineStream::open(path, limits.max_line_bytes, problem);
-  if (ec || !in) {
+  base::Result<base::LineStream> opened = base::LineStream::open(path, limits.max_line_bytes);
+  if (ec || !opened) {
     *error = path + ": cannot read the log";
     return std::nullopt;
   }
@@ -46,9 +45,10 @@ std::optional<ReplayLog> read_replay_log(const std::string& path, const std::vec
              std::to_string(limits.max_file_bytes);
     return std::nullopt;
   }
+  base::LineStream& in = *opened.value;
   ReplayLog log;
-  for (std::optional<std::string_view> line; (line = in->next());) {
-    log.lines = in->line_number();
+  for (std::optional<std::string_view> line; (line = in.next());) {
+    log.lines = in.line_number();
     if (log.lines > limits.max_lines) {
       *error = path + ":" + std::to_string(log.lines) + ": more than " +
                std::to_string(limits.max_lines) + " lines";
@@ -79,7 +79,7 @@ std::optional<ReplayLog> read_replay_log(const std::string& path, const std::vec
     }
     log.mail.push_back(std::move(m));
   }
-  add_skip_warnings(path, *in, limits, log);
+  add_skip_warnings(path, in, limits, log);
   return log;
 }
 

@@ -65,11 +65,12 @@ std::optional<std::string> SimSurveyVehicle::apply_app_param(const moos::ConfigL
 bool SimSurveyVehicle::on_start_up() {
   apply_config_lines([&](const moos::ConfigLine& line) {
     std::optional<std::string> problem = apply_app_param(line);
-    return problem ? *problem : mission::apply_survey_vehicle_param(config_, line.key, line.value);
+    return problem ? *problem
+                   : mission::apply_survey_vehicle_param(config_, line.key, line.value).error;
   });
   vname_ = vehicle_name(vname_);
-  if (const std::string problem = mission::validate(config_.vehicle); !problem.empty()) {
-    report_config_warning(problem + "; the vehicle's defaults are used");
+  if (const auto valid = mission::validate(config_.vehicle); !valid) {
+    report_config_warning(valid.error + "; the vehicle's defaults are used");
     config_.vehicle = mission::VehicleParams{};
   }
   if (config_.report_interval_s * settings().app_tick_hz < 1.0 - kReportIntervalTolerance) {
@@ -127,11 +128,11 @@ void SimSurveyVehicle::on_deploy(const moos::Message& m) {
 
 void SimSurveyVehicle::on_route(const moos::Message& m) {
   auto points = mission::parse_points(mission_app::mail_text(m));
-  if (auto* error = std::get_if<mission::ConvexPolygon::Error>(&points)) {
-    report_run_warning(m.key + " ignored: " + error->message);
+  if (!points) {
+    report_run_warning(m.key + " ignored: " + points.error);
     return;
   }
-  route_m_ = std::get<std::vector<glm::dvec2>>(std::move(points));
+  route_m_ = std::move(*points.value);
   route_started_ = false;
   ++routes_received_;
   report_event("New route with " + std::to_string(route_m_.size()) + " waypoints");

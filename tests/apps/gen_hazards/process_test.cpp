@@ -8,7 +8,6 @@
 #include <set>
 #include <sstream>
 #include <string>
-#include <variant>
 #include <vector>
 
 #include "child_process.hpp"
@@ -173,8 +172,8 @@ TEST(GenHazardsProcess, GeneratedFilesLoadCleanlyAndKeepObjectsInTheirRegions) {
     for (std::size_t i = 1; i <= 2; ++i) {
       ASSERT_EQ(lines[i].rfind("region = pts={", 0), 0u) << lines[i];
       auto parsed = mission::ConvexPolygon::parse(lines[i].substr(9));
-      ASSERT_TRUE(std::holds_alternative<mission::ConvexPolygon>(parsed)) << lines[i];
-      regions.push_back(std::get<mission::ConvexPolygon>(parsed));
+      ASSERT_TRUE(parsed) << lines[i] << ": " << parsed.error;
+      regions.push_back(*parsed.value);
     }
     std::set<std::string> labels;
     int hazards = 0;

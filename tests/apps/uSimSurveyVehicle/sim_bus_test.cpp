@@ -167,7 +167,7 @@ TEST_F(SimOnBus, FliesTheLibrarysLawnmowerAndMatchesTheLibraryVehicle_ThinAdapte
   mission::SurveyVehicleConfig config;
   for (const auto& l : std::vector<std::pair<std::string, std::string>>{
            {"start_x", "-20"}, {"start_y", "10"}, {"region", kRegion}, {"swath_width", "25"}})
-    ASSERT_EQ(mission::apply_survey_vehicle_param(config, l.first, l.second), "");
+    ASSERT_EQ(mission::apply_survey_vehicle_param(config, l.first, l.second).error, "");
   const auto route = *mission::plan_route(config).value;
   ASSERT_EQ(app->vehicle()->waypoints(), route);
 
