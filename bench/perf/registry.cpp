@@ -17,6 +17,10 @@ const std::vector<Workload>& workloads() {
       {"replay", "hazard_replay::run: 100,000 objects, 100 vehicles, 30 s log (30,000 node reports)", replay_log},
       {"moosdb-relay", "moos::Database with the codec: 21 clients, 120 s of a 20-vehicle mission's mail",
        database_relay},
+#ifdef PERF_WITH_STUDY
+      {"study-jake", "hazard_study's lockstep runner: one whole Jake mission, seed 1 (6 apps, 4,700 MOOS s)",
+       study_jake},
+#endif
 #ifdef PERF_WITH_VIEWER
       {"viewer-retained", "pWebViewer's retained state: 60 s of a 100-vehicle mission, 4 snapshots",
        viewer_retained},

@@ -65,5 +65,6 @@ std::uint64_t sensor_dense_late();
 std::uint64_t replay_log();
 std::uint64_t database_relay();
 std::uint64_t viewer_retained();
+std::uint64_t study_jake();
 
 }  // namespace perf

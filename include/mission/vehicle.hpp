@@ -104,6 +104,8 @@ class SurveyVehicle {
   VehicleParams params_;
   double start_time_s_ = 0.0;
   std::vector<glm::dvec2> waypoints_m_;
+  /// turn_anticipation_m of each waypoint, computed once per route: step() asks every step.
+  std::vector<double> anticipation_m_;
   State state_;
   std::optional<double> done_time_s_;
   Pose last_pose_;

@@ -31,12 +31,16 @@ namespace moos {
 
 class BusClient;
 struct BusCore;
+struct BusClientState;
 
 class InProcessBus {
  public:
   struct Options {
     std::string community = kDefaultCommunity;  ///< protocol.md 5.11
     double time_warp = 1.0;        ///< 0 < W <= 400 (protocol.md 1.10)
+    /// Keep every accepted NOTIFY for postings() (tests read them); a runner that reads the
+    /// mail through a client instead saves a copy of every posting.
+    bool keep_postings = true;
   };
 
   /// `clock` must outlive the bus and every client (usually a ManualClock).
@@ -55,7 +59,8 @@ class InProcessBus {
   double moos_time() const;
   const std::string& community() const;
 
-  /// Every accepted NOTIFY, in order, as stored (community filled in).
+  /// Every accepted NOTIFY, in order, as stored (community filled in); none without
+  /// Options::keep_postings.
   std::vector<Message> postings() const;
   /// Accepted NOTIFYs of one variable, in order.
   std::vector<Message> postings_of(const std::string& var) const;
@@ -100,6 +105,7 @@ class BusClient final : public Comms {
   BusClient(std::shared_ptr<BusCore> core, std::string name);
 
   std::shared_ptr<BusCore> core_;
+  BusClientState* state_ = nullptr;  ///< owned by the bus; set when connected, until destroyed
 };
 
 }  // namespace moos

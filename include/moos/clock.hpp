@@ -8,6 +8,7 @@
 //   loop that sleeps between iterations runs instantly and deterministically in tests.
 // - Both clocks are safe to read from several threads.
 
+#include <atomic>
 #include <mutex>
 
 #include "moos/mail_signal.hpp"
@@ -58,8 +59,8 @@ class ManualClock final : public Clock {
   void set_unix_s(double unix_s);
 
  private:
-  mutable std::mutex mutex_;
-  double now_s_;
+  std::mutex mutex_;  ///< orders the writers; readers only load (every app reads it per cycle)
+  std::atomic<double> now_s_;
 };
 
 }  // namespace moos

@@ -143,6 +143,8 @@ class Comms {
   void set_on_mail(std::function<void()> callback);
   /// A copy of the on-mail callback (empty if none), for code that calls it later.
   std::function<void()> on_mail_callback() const;
+  /// Whether an on-mail callback is set: a check without copying it (the bus asks per posting).
+  bool has_on_mail() const { return has_on_mail_.load(); }
 
   /// Remembered plain registrations (the `Subscribing` list of `<APP>_STATUS`, protocol.md 7.1).
   std::set<std::string> registered_names() const;
@@ -185,6 +187,7 @@ class Comms {
   std::set<std::string> published_;
   std::function<void()> on_connect_;
   std::function<void()> on_mail_;
+  std::atomic<bool> has_on_mail_{false};
   std::atomic<std::uint64_t> mail_dropped_{0};
   std::atomic<std::uint64_t> postings_dropped_{0};
   std::string last_post_error_;  ///< under book_mutex_

@@ -89,6 +89,13 @@ struct DatabaseConfig {
   std::size_t max_reply_bytes = kDefaultMaxPacketBytes;
   std::size_t max_stored_bytes = kDefaultMaxStoredBytes;
   bool db_variables = true;  ///< publish the DB_* variables of protocol.md 5.7
+  /// For a connection layer in the same process (moos::InProcessBus): when set, each mail of an
+  /// asynchronous client (a NOTIFY: live update, snapshot or answer) is handed to it as it is
+  /// queued, in the order it would have in the client's packets, instead of leaving in a packet
+  /// through take_output(); protocol replies (WELCOME, POISON, TIMING echoes) still leave there.
+  /// The max_pending_bytes bound applies per call as without it. The sink must not call back
+  /// into the Database.
+  std::function<void(ClientId, Message&&)> mail_sink;
 };
 
 /// One packet for one client.
@@ -138,12 +145,17 @@ class Database {
   /// Processes one packet from a connected client (protocol.md 5.2) and queues the replies.
   /// Taken by value: its NOTIFYs are moved into storage, not copied.
   void process_packet(ClientId id, std::vector<Message> packet, double now_moos_s);
+  /// process_packet() of a packet that holds `msg` alone (moved from), without building one.
+  void process_message(ClientId id, Message&& msg, double now_moos_s);
 
   /// Rewrites DB_TIME, DB_UPTIME, DB_CLIENTS and DB_RWSUMMARY (protocol.md 5.7).
   void refresh_db_variables(double now_moos_s);
 
   /// Packets to send, oldest first; the list is emptied.
   std::vector<OutPacket> take_output();
+  /// The same into `out`, whose old contents are dropped: the two lists trade their storage, so
+  /// a caller that keeps `out` between calls allocates no list per call (the in-process bus).
+  void take_output(std::vector<OutPacket>& out);
   /// Clients to disconnect because their undelivered mail overflowed; the list is emptied.
   std::vector<DropRequest> take_drop_requests();
 
@@ -206,9 +218,11 @@ class Database {
     int refusals = 0;
   };
 
+  /// process_packet() of the messages [first, last), which it moves from.
+  void process_messages(ClientId id, Message* first, Message* last, double now_moos_s);
   // One handler per message type (protocol.md 5.2 step 3), each in the file of its rule.
-  void handle_message(ClientId id, Message msg, double now);
-  void handle_notify(ClientId id, Message msg, double now);
+  void handle_message(ClientId id, Message&& msg, double now);
+  void handle_notify(ClientId id, Message&& msg, double now);
   void handle_register(ClientId id, const Message& msg, double now);
   void handle_unregister(ClientId id, const Message& msg);
   void handle_wildcard_register(ClientId id, const Message& msg, double now);
@@ -217,9 +231,9 @@ class Database {
 
   // NOTIFY storage and fan-out (database_notify.cpp). publish() returns the variable; the
   // write was refused if the variable's type differs from the message's afterwards.
-  VarId publish(Message msg, double now);
+  VarId publish(Message&& msg, double now);
   void store(Variable& var, const Message& msg, double now);
-  void fan_out(Variable& var, const Message& msg, double now);
+  void fan_out(Variable& var, Message&& msg, double now);
   VarId find_or_create(const std::string& name);
   /// Why a client's write of `msg` (or, without a value, a new name) would take the store
   /// beyond max_stored_bytes; empty when it fits.
@@ -247,7 +261,7 @@ class Database {
 
   // Mail and replies (database_mail.cpp).
   Message snapshot(const Variable& var) const;
-  void queue_mail(ClientId id, Message msg);
+  void queue_mail(ClientId id, Message&& msg);
   void flush_async_mail();
   /// Moves the client's pending mail behind `reply`: all of it for an asynchronous client,
   /// what fits in config_.max_reply_bytes for a synchronous one.

@@ -68,6 +68,9 @@ SurveyVehicle::SurveyVehicle(const VehicleParams& params, const Pose& start)
 
 void SurveyVehicle::set_waypoints(std::vector<glm::dvec2> waypoints_m) {
   waypoints_m_ = std::move(waypoints_m);
+  anticipation_m_.clear();
+  for (std::size_t i = 0; i < waypoints_m_.size(); ++i)
+    anticipation_m_.push_back(turn_anticipation_m(i));
   state_.target = 0;
   state_.turning = false;
   state_.segment_start_m = state_.position_m;
@@ -89,7 +92,7 @@ SurveyVehicle::State SurveyVehicle::step(const State& from, double dt_s, bool wh
     const bool captured = glm::length(target - s.position_m) <= params_.capture_radius_m;
     const double along_m =
         length_m > 0.0 ? glm::dot(s.position_m - s.segment_start_m, track) / length_m : 0.0;
-    const bool passed = length_m > 0.0 && along_m >= length_m - turn_anticipation_m(s.target);
+    const bool passed = length_m > 0.0 && along_m >= length_m - anticipation_m_[s.target];
     if (!captured && !passed) break;
     s.segment_start_m = target;
     ++s.target;

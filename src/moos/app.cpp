@@ -388,11 +388,10 @@ void MoosApp::report_dropped_postings() {
 }
 
 void MoosApp::handle_framework_mail(std::vector<Message>& mail) {
-  const std::string node = community();
   auto framework = [&](const Message& m) {
     if (m.key == kTimingKey) return true;
     if (m.key != kAppCastRequestKey) return false;
-    if (auto request = parse_appcast_request(m.sval, node, settings_.app_name))
+    if (auto request = parse_appcast_request(m.sval, community(), settings_.app_name))
       requests_[request->key] = Request{curr_time_, *request};
     return true;
   };
@@ -436,7 +435,8 @@ void MoosApp::post_report(double iterate_start) {
   if (traits_.post_iteration_timing)
     comms_->notify(iter_len_var_, (moos_time() - iterate_start) * settings_.app_tick_hz);
   appcast_.set_iteration(iteration_);
-  appcast_.set_node(community());
+  // Only a node name that comes from the connection (no Community setting) can change.
+  if (settings_.community.empty()) appcast_.set_node(community());
 
   // protocol.md 7.2: real seconds since the last terminal report and the last appcast.
   const double warp = comms_->time_warp();
@@ -469,7 +469,8 @@ void MoosApp::post_report(double iterate_start) {
 
 std::string MoosApp::terminal_report() {
   appcast_.set_iteration(iteration_);
-  appcast_.set_node(community());
+  // Only a node name that comes from the connection (no Community setting) can change.
+  if (settings_.community.empty()) appcast_.set_node(community());
   appcast_.set_messages(build_report());
   return appcast_.terminal_report();
 }

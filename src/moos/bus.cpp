@@ -1,14 +1,17 @@
 // In-process MOOS community: an adapter between Comms clients and moos::Database; contract in
 // include/moos/bus.hpp.
 //
-// Data structures: the Database (every rule of protocol.md 5); per client name, its current
-// Database connection id (a reconnect is a new connection, as over TCP), its inbox and connection
-// count; the connection ids back to names, to route the Database's output. One mutex guards
-// everything; on-mail callbacks run after it is released.
+// Data structures: the Database (every rule of protocol.md 5); per client name, its state: the
+// current Database connection id (a reconnect is a new connection, as over TCP), its inbox and
+// connection count; the connection ids back to the states, to route the Database's output. Each
+// BusClient points at its state, which lives as long as it does. One mutex guards everything;
+// the flags a client checks every cycle (connected, mail waiting) are atomic so that the checks
+// take no lock. On-mail callbacks run after the mutex is released.
 
 #include "moos/bus.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <functional>
 #include <map>
 #include <mutex>
@@ -17,28 +20,42 @@
 
 namespace moos {
 
+/// One client name's connection to the bus.
+struct BusClientState {
+  explicit BusClientState(std::string n) : name(std::move(n)) {}
+  const std::string name;
+  BusClient* handle = nullptr;  // for on-mail callbacks
+  ClientId id = 0;              // the current Database connection
+  // Written under the bus mutex; read without it by the client's own per-cycle checks.
+  std::atomic<bool> connected{true};
+  std::atomic<std::uint64_t> connections{1};
+  std::atomic<bool> has_mail{false};  // the inbox is not empty
+  std::vector<Message> inbox;
+  std::vector<Message> outbox;  // postings made while disconnected (comms.hpp)
+  OutboxBound outbox_bound;
+};
+
 struct BusCore {
-  struct ClientState {
-    BusClient* handle = nullptr;  // for on-mail callbacks; cleared when the client goes away
-    ClientId id = 0;              // the current Database connection
-    bool connected = true;
-    std::uint64_t connections = 1;
-    std::vector<Message> inbox;
-    std::vector<Message> outbox;  // postings made while disconnected (comms.hpp)
-    OutboxBound outbox_bound;
-  };
+  using ClientState = BusClientState;
 
   BusCore(Clock& c, InProcessBus::Options o)
       : clock(c),
         options(std::move(o)),
-        db(database_config(options), now(), [this](const std::string& line) { diagnostics.push_back(line); },
-           [this](const Message& m) { postings.push_back(m); }) {}
+        db(database_config(), now(), [this](const std::string& line) { diagnostics.push_back(line); },
+           observer()) {}
 
-  static DatabaseConfig database_config(const InProcessBus::Options& o) {
+  DatabaseConfig database_config() {
     DatabaseConfig config;
-    config.community = o.community;
+    config.community = options.community;
     config.db_variables = false;  // no refresh timer on the bus (see bus.hpp)
+    // Mail goes straight into the inboxes: no packet per message to build and route.
+    config.mail_sink = [this](ClientId to, Message&& m) { take_mail(to, std::move(m)); };
     return config;
+  }
+
+  Database::NotifyObserver observer() {
+    if (!options.keep_postings) return {};
+    return [this](const Message& m) { postings.push_back(m); };
   }
 
   double now() const { return clock.unix_now_s() * options.time_warp; }
@@ -49,75 +66,103 @@ struct BusCore {
   std::vector<Message> postings;
   std::vector<std::string> diagnostics;
   Database db;  // after the two lists its callbacks fill
+  // Map nodes do not move: a BusClient keeps a pointer to its state for its lifetime.
   std::map<std::string, ClientState> clients;
-  std::map<ClientId, std::string> names_by_id;
+  std::map<ClientId, ClientState*> states_by_id;
   ClientId next_id = 1;
+  std::vector<OutPacket> output;  // kept between calls: the Database's output trades storage
+  std::vector<ClientState*> woken;  // clients that got mail in the current call, in order
 
   // ---- mutex held ------------------------------------------------------------------------------
 
-  /// A new Database connection for `name`; false if the Database refused it (POISON).
-  bool open_connection(const std::string& name, ClientState& state) {
+  /// A new Database connection for `state`; false if the Database refused it (POISON).
+  bool open_connection(ClientState& state) {
     Message ident;
     ident.type = msg_type::kData;
     ident.data_type = data_type::kString;
     ident.key = kAsynchronousKey;
-    ident.sval = name;
+    ident.sval = state.name;
     ident.time = now();
     const ClientId id = next_id++;
+    states_by_id[id] = &state;  // before the handshake: mail may follow the WELCOME at once
     const bool welcomed = db.connect(id, {ident}, now());
     if (welcomed) {
       state.id = id;
-      names_by_id[id] = name;
+    } else {
+      states_by_id.erase(id);
     }
     return welcomed;
   }
 
   void close_connection(ClientState& state) {
-    names_by_id.erase(state.id);
+    states_by_id.erase(state.id);
     db.disconnect(state.id, now());
     state.connected = false;
     state.inbox.clear();
+    state.has_mail = false;
   }
 
-  /// Hands `messages` to the Database as `state`'s packet and routes the output; the on-mail
+  /// Hands `msg` to the Database as `state`'s packet and routes the output; the on-mail
   /// callbacks of the clients that got mail are appended to `callbacks` (called after the lock).
+  void deliver(ClientState& state, Message&& msg, std::vector<std::function<void()>>& callbacks) {
+    db.process_message(state.id, std::move(msg), now());
+    settle(&callbacks);
+  }
+
+  /// deliver() of a packet of several messages.
   void deliver(ClientState& state, std::vector<Message> messages,
                std::vector<std::function<void()>>& callbacks) {
-    std::vector<std::string> woken;
     db.process_packet(state.id, std::move(messages), now());
-    route_output(woken);
+    settle(&callbacks);
+  }
+
+  /// After a Database call: routes its output and, with `callbacks`, collects the on-mail
+  /// callbacks of the clients that got mail (none from a destructor: the mail waits).
+  void settle(std::vector<std::function<void()>>* callbacks = nullptr) {
+    route_output();
     // Copied under the bus lock (lock order: bus, then a client's book), called after it.
-    for (const auto& client : woken) {
-      auto w = clients.find(client);
-      if (w == clients.end() || !w->second.handle) continue;
-      if (auto cb = w->second.handle->on_mail_callback()) callbacks.push_back(std::move(cb));
+    if (callbacks) {
+      for (ClientState* client : woken) {
+        if (!client->handle || !client->handle->has_on_mail()) continue;
+        if (auto cb = client->handle->on_mail_callback()) callbacks->push_back(std::move(cb));
+      }
+    }
+    woken.clear();
+  }
+
+  /// The Database's packets: protocol replies, which are not mail. Then the clients it drops.
+  void route_output() {
+    db.take_output(output);
+    for (auto& packet : output) {
+      const auto to = states_by_id.find(packet.to);
+      if (to == states_by_id.end()) continue;  // a refused connection's POISON
+      for (auto& m : packet.messages)
+        if (m.type == msg_type::kNotify) take_mail(*to->second, std::move(m));
+    }
+    output.clear();
+    // The server would close these connections; so does the bus.
+    for (const auto& drop : db.take_drop_requests()) {
+      const auto to = states_by_id.find(drop.id);
+      if (to == states_by_id.end()) continue;
+      diagnostics.push_back("client \"" + to->second->name + "\" dropped: " + drop.reason);
+      close_connection(*to->second);
     }
   }
 
-  /// Moves the Database's output into the inboxes (only NOTIFYs are mail; WELCOME is protocol)
-  /// and lists the clients that got mail, for their on-mail callbacks.
-  void route_output(std::vector<std::string>& woken) {
-    for (auto& packet : db.take_output()) {
-      const auto name = names_by_id.find(packet.to);
-      if (name == names_by_id.end()) continue;  // a refused connection's POISON
-      ClientState& state = clients.at(name->second);
-      bool mail = false;
-      for (auto& m : packet.messages) {
-        if (m.type != msg_type::kNotify) continue;
-        state.inbox.push_back(std::move(m));
-        mail = true;
-      }
-      if (mail && std::find(woken.begin(), woken.end(), name->second) == woken.end())
-        woken.push_back(name->second);
-    }
-    // The server would close these connections; so does the bus.
-    for (const auto& drop : db.take_drop_requests()) {
-      const auto name = names_by_id.find(drop.id);
-      if (name == names_by_id.end()) continue;
-      diagnostics.push_back("client \"" + name->second + "\" dropped: " + drop.reason);
-      close_connection(clients.at(name->second));
-    }
+  void take_mail(ClientId to, Message&& m) {
+    const auto state = states_by_id.find(to);
+    if (state != states_by_id.end()) take_mail(*state->second, std::move(m));
   }
+
+  void take_mail(ClientState& state, Message&& m) {
+    // An inbox emptied by fetch() starts with room for a cycle's usual mail.
+    if (state.inbox.capacity() == 0) state.inbox.reserve(kInboxStartCapacity);
+    state.inbox.push_back(std::move(m));
+    state.has_mail = true;
+    if (std::find(woken.begin(), woken.end(), &state) == woken.end()) woken.push_back(&state);
+  }
+
+  static constexpr std::size_t kInboxStartCapacity = 8;
 };
 
 // ---- InProcessBus ---------------------------------------------------------------------------
@@ -132,15 +177,19 @@ InProcessBus::~InProcessBus() = default;
 std::unique_ptr<BusClient> InProcessBus::connect(const std::string& name) {
   if (name.empty()) return nullptr;
   std::unique_ptr<BusClient> client(new BusClient(core_, name));
-  std::vector<std::string> woken;
   {
     std::lock_guard<std::mutex> lock(core_->mutex);
-    if (core_->clients.count(name) != 0) return nullptr;  // a real DB would POISON it (1.6)
-    BusCore::ClientState state;
-    if (!core_->open_connection(name, state)) return nullptr;
+    // A real DB would POISON a second client of one name (1.6).
+    const auto [it, fresh] = core_->clients.try_emplace(name, name);
+    if (!fresh) return nullptr;
+    BusCore::ClientState& state = it->second;
+    if (!core_->open_connection(state)) {
+      core_->clients.erase(it);
+      return nullptr;
+    }
     state.handle = client.get();
-    core_->clients.emplace(name, std::move(state));
-    core_->route_output(woken);
+    client->state_ = &state;
+    core_->settle();
   }
   return client;
 }
@@ -192,50 +241,41 @@ BusClient::BusClient(std::shared_ptr<BusCore> core, std::string name)
     : Comms(std::move(name)), core_(std::move(core)) {}
 
 BusClient::~BusClient() {
+  if (!state_) return;  // refused at connect
   std::lock_guard<std::mutex> lock(core_->mutex);
-  auto it = core_->clients.find(name());
-  if (it == core_->clients.end() || it->second.handle != this) return;  // refused at connect
-  if (it->second.connected) core_->close_connection(it->second);
-  core_->clients.erase(it);
-  std::vector<std::string> woken;
-  core_->route_output(woken);  // no callbacks from a destructor: the mail waits in the inboxes
+  if (state_->connected) core_->close_connection(*state_);
+  core_->clients.erase(state_->name);
+  core_->settle();  // no callbacks from a destructor: the mail waits in the inboxes
 }
 
-bool BusClient::is_connected() const {
-  std::lock_guard<std::mutex> lock(core_->mutex);
-  auto it = core_->clients.find(name());
-  return it != core_->clients.end() && it->second.connected;
-}
+// The state's flags are atomic: an app's per-cycle checks take no lock.
+bool BusClient::is_connected() const { return state_ && state_->connected; }
 
-std::uint64_t BusClient::connection_count() const {
-  std::lock_guard<std::mutex> lock(core_->mutex);
-  auto it = core_->clients.find(name());
-  return it == core_->clients.end() ? 0 : it->second.connections;
-}
+std::uint64_t BusClient::connection_count() const { return state_ ? state_->connections.load() : 0; }
 
 std::string BusClient::community() const { return core_->options.community; }
 Clock& BusClient::clock() const { return core_->clock; }
 double BusClient::time_warp() const { return core_->options.time_warp; }
 
 std::vector<Message> BusClient::fetch() {
+  // Mail that reached the inbox before this call set has_mail before it (under the lock).
+  if (!state_ || !state_->has_mail) return {};
   std::lock_guard<std::mutex> lock(core_->mutex);
-  auto it = core_->clients.find(name());
-  if (it == core_->clients.end()) return {};
   std::vector<Message> mail;
-  mail.swap(it->second.inbox);
+  mail.swap(state_->inbox);
+  state_->has_mail = false;
   return mail;
 }
 
 bool BusClient::transmit(Message msg) {
+  if (!state_) return false;
   std::vector<std::function<void()>> callbacks;
   std::string refusal;
   {
     std::lock_guard<std::mutex> lock(core_->mutex);
-    auto it = core_->clients.find(name());
-    if (it == core_->clients.end()) return false;
-    BusCore::ClientState& state = it->second;
+    BusCore::ClientState& state = *state_;
     if (state.connected) {
-      core_->deliver(state, {std::move(msg)}, callbacks);
+      core_->deliver(state, std::move(msg), callbacks);
     } else {
       // Kept for the reconnect, as TcpClient keeps it; registrations are replayed instead.
       if (msg.type != msg_type::kNotify) return false;
@@ -256,29 +296,26 @@ bool BusClient::transmit(Message msg) {
 }
 
 void BusClient::simulate_disconnect() {
+  if (!state_) return;
   std::lock_guard<std::mutex> lock(core_->mutex);
-  auto it = core_->clients.find(name());
-  if (it == core_->clients.end() || !it->second.connected) return;
-  core_->close_connection(it->second);
-  std::vector<std::string> woken;
-  core_->route_output(woken);
+  if (!state_->connected) return;
+  core_->close_connection(*state_);
+  core_->settle();
 }
 
 bool BusClient::simulate_reconnect() {
+  if (!state_) return false;
   // Taken before the bus lock (lock order: bus, then a client's book).
   std::vector<Message> packet = replay_messages();
   std::vector<std::function<void()>> callbacks;
   {
     std::lock_guard<std::mutex> lock(core_->mutex);
-    auto it = core_->clients.find(name());
-    if (it == core_->clients.end()) return false;
-    BusCore::ClientState& state = it->second;
+    BusCore::ClientState& state = *state_;
     if (state.connected) return true;
-    if (!core_->open_connection(name(), state)) return false;
+    if (!core_->open_connection(state)) return false;
     state.connected = true;
     ++state.connections;
-    std::vector<std::string> woken;
-    core_->route_output(woken);
+    core_->settle();
     // The replay, then the postings kept while disconnected, in order, before any new posting.
     for (auto& m : state.outbox) packet.push_back(std::move(m));
     state.outbox.clear();

@@ -28,20 +28,17 @@ SystemClock& system_clock() {
   return clock;
 }
 
-double ManualClock::unix_now_s() const {
-  std::lock_guard<std::mutex> lock(mutex_);
-  return now_s_;
-}
+double ManualClock::unix_now_s() const { return now_s_.load(); }
 
 void ManualClock::sleep_real_s(double real_s) {
   if (!(real_s > 0)) return;
   std::lock_guard<std::mutex> lock(mutex_);
-  now_s_ += real_s;
+  now_s_ = now_s_.load() + real_s;
 }
 
 void ManualClock::set_unix_s(double unix_s) {
   std::lock_guard<std::mutex> lock(mutex_);
-  if (unix_s > now_s_) now_s_ = unix_s;
+  if (unix_s > now_s_.load()) now_s_ = unix_s;
 }
 
 }  // namespace moos

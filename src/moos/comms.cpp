@@ -191,6 +191,7 @@ void Comms::set_on_connect(std::function<void()> callback) {
 
 void Comms::set_on_mail(std::function<void()> callback) {
   std::lock_guard<std::mutex> lock(book_mutex_);
+  has_on_mail_ = static_cast<bool>(callback);
   on_mail_ = std::move(callback);
 }
 

@@ -126,37 +126,50 @@ void Database::disconnect(ClientId id, double now_moos_s) {
 // Packets (protocol.md 5.2)
 
 void Database::process_packet(ClientId id, std::vector<Message> packet, double now_moos_s) {
-  if (clients_.count(id) == 0) return;
+  process_messages(id, packet.data(), packet.data() + packet.size(), now_moos_s);
+}
+
+void Database::process_message(ClientId id, Message&& msg, double now_moos_s) {
+  process_messages(id, &msg, &msg + 1, now_moos_s);
+}
+
+void Database::process_messages(ClientId id, Message* first, Message* last, double now_moos_s) {
+  const auto found = clients_.find(id);
+  if (found == clients_.end()) return;
   // Step 2: a leading TIMING is echoed to asynchronous clients; synchronous clients never
   // receive TIMING (protocol.md 5.6), so theirs is dropped. TIMING elsewhere is ignored.
   std::optional<Message> echo;
-  std::size_t first = 0;
-  if (!packet.empty() && packet.front().type == mt::kTiming) {
-    first = 1;
-    if (clients_.at(id).async) {
-      echo = packet.front();
+  if (first != last && first->type == mt::kTiming) {
+    if (found->second.async) {
+      echo = *first;
       echo->dval = now_moos_s;  // server local warped time; the DB's skew is 0
       echo->dval2 = 0.0;        // outgoing delay for this client, seconds (none)
     }
+    ++first;
   }
-  for (std::size_t i = first; i < packet.size(); ++i)
-    handle_message(id, std::move(packet[i]), now_moos_s);
+  for (; first != last; ++first) handle_message(id, std::move(*first), now_moos_s);
 
   // Step 6: the reply. Sync: NULL first, always. Async: echo first, only if non-empty.
   Client& client = clients_.at(id);
-  std::vector<Message> reply;
-  if (!client.async) {
-    reply.push_back(null_reply(now_moos_s));
-  } else if (echo) {
-    reply.push_back(std::move(*echo));
+  if (client.async && !echo) {
+    if (!client.pending.empty()) send_packet(id, std::move(client.pending));
+    client.pending.clear();
+    client.pending_bytes = 0;
+  } else {
+    std::vector<Message> reply;
+    if (!client.async) {
+      reply.push_back(null_reply(now_moos_s));
+    } else {
+      reply.push_back(std::move(*echo));
+    }
+    take_pending(client, reply);
+    send_packet(id, std::move(reply));
   }
-  take_pending(client, reply);
-  if (!reply.empty()) send_packet(id, std::move(reply));
   // Step 7, for every asynchronous client and on every packet (protocol.md 5.6 SHOULD).
   flush_async_mail();
 }
 
-void Database::handle_message(ClientId id, Message msg, double now) {
+void Database::handle_message(ClientId id, Message&& msg, double now) {
   switch (msg.type) {
     case mt::kNotify: handle_notify(id, std::move(msg), now); break;
     case mt::kRegister: handle_register(id, msg, now); break;

@@ -31,7 +31,7 @@ Message Database::snapshot(const Variable& var) const {
   return m;
 }
 
-void Database::queue_mail(ClientId id, Message msg) {
+void Database::queue_mail(ClientId id, Message&& msg) {
   Client& client = clients_.at(id);
   if (client.overflowed) return;
   const std::size_t size = msg.encoded_size();
@@ -43,7 +43,11 @@ void Database::queue_mail(ClientId id, Message msg) {
     return;
   }
   client.pending_bytes += size;
-  client.pending.push_back(std::move(msg));
+  if (client.async && config_.mail_sink) {
+    config_.mail_sink(id, std::move(msg));  // delivered now: no packet per message
+  } else {
+    client.pending.push_back(std::move(msg));
+  }
   if (client.async && !client.queued_for_flush) {
     client.queued_for_flush = true;
     async_with_mail_.push_back(id);
@@ -79,10 +83,10 @@ void Database::flush_async_mail() {
     if (it == clients_.end()) continue;
     Client& client = it->second;
     client.queued_for_flush = false;
+    client.pending_bytes = 0;  // the bound is per call, with a mail sink too
     if (client.pending.empty()) continue;
     send_packet(id, std::move(client.pending));
     client.pending.clear();
-    client.pending_bytes = 0;
   }
   async_with_mail_.clear();
 }
@@ -105,6 +109,11 @@ std::vector<OutPacket> Database::take_output() {
   std::vector<OutPacket> out;
   out.swap(output_);
   return out;
+}
+
+void Database::take_output(std::vector<OutPacket>& out) {
+  out.clear();
+  out.swap(output_);
 }
 
 std::vector<DropRequest> Database::take_drop_requests() {

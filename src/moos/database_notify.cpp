@@ -2,6 +2,7 @@
 // Contract in include/moos/database.hpp. Clients' NOTIFYs and the DB's own variables take
 // the same path, so subscribers cannot tell them apart.
 
+#include <string>
 #include <utility>
 
 #include "base/text.hpp"
@@ -17,6 +18,8 @@ namespace dt = data_type;
 /// Write-frequency estimate of a variable (dval2 of the `ALL` answer, protocol.md 5.8): writes
 /// counted over windows of at least this many MOOS seconds.
 constexpr double kFrequencyWindow_moos_s = 1.0;
+/// Spare capacity a stored string may keep beyond twice its size (overwrite()).
+constexpr std::size_t kSlackBytes = 64;
 
 bool is_value_type(char data_type) {
   return data_type == dt::kDouble || data_type == dt::kString || data_type == dt::kBinary;
@@ -31,9 +34,20 @@ std::string type_name(char data_type) {
   }
 }
 
+/// `to` = `from`, in `to`'s storage unless that is far larger than needed: the store's bound
+/// (max_stored_bytes) counts the values' sizes, so a large write followed by small ones must not
+/// keep its memory.
+void overwrite(std::string& to, const std::string& from) {
+  if (to.capacity() > 2 * from.size() + kSlackBytes) {
+    to = std::string(from);
+  } else {
+    to.assign(from);
+  }
+}
+
 }  // namespace
 
-void Database::handle_notify(ClientId id, Message msg, double now) {
+void Database::handle_notify(ClientId id, Message&& msg, double now) {
   if (msg.key.empty()) return refuse(id, "NOTIFY with an empty variable name refused");
   if (!is_value_type(msg.data_type))
     return refuse(id, "NOTIFY " + base::excerpt(msg.key) + " with data type '" + msg.data_type +
@@ -65,7 +79,7 @@ void Database::publish_db_variable(Message msg, double now) {
          type_name(vars_[var].data_type));
 }
 
-Database::VarId Database::publish(Message msg, double now) {
+Database::VarId Database::publish(Message&& msg, double now) {
   const VarId id = find_or_create(msg.key);
   if (vars_[id].write_count == 0) {
     // Step 2: the first write fixes the type and binds the wildcard filters.
@@ -79,26 +93,33 @@ Database::VarId Database::publish(Message msg, double now) {
   if (msg.community.empty()) msg.community = config_.community;
   store(var, msg, now);
   if (notify_observer_) notify_observer_(msg);
-  fan_out(var, msg, now);
+  fan_out(var, std::move(msg), now);
   return id;
 }
 
 void Database::store(Variable& var, const Message& msg, double now) {
   // Step 4: the value, its stamps and the write-frequency estimate.
-  Value value;
+  // Written over the last value: a variable written again and again (a node report) keeps its
+  // strings' storage instead of allocating them anew for every write.
+  if (var.value) {
+    stored_bytes_ -= value_bytes(*var.value);
+  } else {
+    var.value.emplace();
+  }
+  Value& value = *var.value;
   if (msg.data_type == dt::kDouble) {
     value.dval = msg.dval;
+    value.sval.clear();
   } else {
-    value.sval = msg.sval;
+    value.dval = kUnsetDouble;
+    overwrite(value.sval, msg.sval);
   }
   value.time_moos_s = msg.time;
   value.db_write_moos_s = now;
-  value.writer = msg.source;
-  value.writer_aux = msg.source_aux;
-  value.community = msg.community;
-  if (var.value) stored_bytes_ -= value_bytes(*var.value);
+  overwrite(value.writer, msg.source);
+  overwrite(value.writer_aux, msg.source_aux);
+  overwrite(value.community, msg.community);
   stored_bytes_ += value_bytes(value);
-  var.value = std::move(value);
 
   WriteFrequency& f = var.frequency;
   if (var.write_count == 0) f.window_start_moos_s = now;
@@ -111,16 +132,22 @@ void Database::store(Variable& var, const Message& msg, double now) {
   }
 }
 
-void Database::fan_out(Variable& var, const Message& msg, double now) {
+void Database::fan_out(Variable& var, Message&& msg, double now) {
   // Steps 5-6: every subscriber whose interval expired, the publisher included; throttled
-  // updates are dropped, not delayed. A subscription that never delivered is due.
+  // updates are dropped, not delayed. A subscription that never delivered is due. Each due
+  // subscriber but the last gets a copy; the last one gets the message itself.
+  ClientId previous = 0;
+  bool have_previous = false;
   for (auto& [subscriber, sub] : var.subscribers) {
     const bool due = sub.interval_s <= 0.0 || !sub.last_delivery_moos_s ||
                      now - *sub.last_delivery_moos_s >= sub.interval_s;
     if (!due) continue;
     sub.last_delivery_moos_s = now;
-    queue_mail(subscriber, msg);
+    if (have_previous) queue_mail(previous, Message(msg));
+    previous = subscriber;
+    have_previous = true;
   }
+  if (have_previous) queue_mail(previous, std::move(msg));
 }
 
 Database::VarId Database::find_or_create(const std::string& name) {

@@ -311,6 +311,36 @@ TEST_F(BusTest, PostingsHistoryAndLatest) {
   EXPECT_EQ(bus.latest("X")->dval, 1.0);
 }
 
+TEST(Bus, WithoutKeptPostingsTheMailStillArrives) {
+  ManualClock clock{1000.0};
+  InProcessBus bus{clock, InProcessBus::Options{"alpha", 1.0, false}};
+  auto a = bus.connect("pA");
+  auto b = bus.connect("pB");
+  b->register_variable("X");
+  a->notify("X", 1.0);
+  a->notify("X", 2.0);
+  EXPECT_TRUE(bus.postings().empty());
+  EXPECT_EQ(bus.latest("X")->dval, 2.0);
+  const auto mail = b->fetch();
+  ASSERT_EQ(mail.size(), 2u);
+  EXPECT_EQ(mail[1].dval, 2.0);
+  EXPECT_TRUE(b->fetch().empty());
+}
+
+TEST_F(BusTest, ADisconnectedClientFetchesNothingAndItsStateSurvivesTheOthers) {
+  b->register_variable("X");
+  a->notify("X", 1.0);
+  b->simulate_disconnect();
+  EXPECT_FALSE(b->is_connected());
+  EXPECT_TRUE(b->fetch().empty());  // undelivered mail goes with the connection
+  auto c = bus.connect("pC");
+  c.reset();  // another client's going leaves pB's state alone
+  ASSERT_TRUE(b->simulate_reconnect());
+  EXPECT_TRUE(b->is_connected());
+  EXPECT_EQ(b->connection_count(), 2u);
+  EXPECT_EQ(b->fetch().size(), 1u);  // the snapshot of X at the replayed REGISTER
+}
+
 // ---- settled with the server: the bus runs moos::Database's rules --------------------------
 
 TEST_F(BusTest, WildcardFilterReplacesAnExplicitRegistrationAtFirstWrite_5_3) {

@@ -120,9 +120,10 @@ MissionResult run_mission(const MissionPlan& plan, const Setting& setting, std::
 
   moos::ManualClock clock;
   const double t0 = clock.unix_now_s();
+  // The runner reads the mail through its own client: the bus keeps no copy of the postings.
   moos::InProcessBus bus(clock, moos::InProcessBus::Options{
                                     plan.community.empty() ? moos::kDefaultCommunity : plan.community,
-                                    1.0});
+                                    1.0, false});
   if (alog) *alog += moos::alog_header(plan.community.empty() ? "hazard_study" : plan.community, t0);
   auto runner = bus.connect(kRunnerName);
   // Without a log the runner reads only what the result needs (fewer copies of the mail).
@@ -150,10 +151,8 @@ MissionResult run_mission(const MissionPlan& plan, const Setting& setting, std::
     lockstep.add(*app);
     apps.push_back(std::move(app));
   }
-  // The bus keeps every posting for tests; a mission reads them through the observer instead.
   auto observe = [&] {
     observer.take(runner->fetch());
-    bus.clear_postings();
     return !observer.end().empty();
   };
   const double deploy = t0 + options.deploy_s;

@@ -114,6 +114,8 @@ void HazardMgr::on_new_mail(const std::vector<moos::Message>& mail) {
 }
 
 void HazardMgr::handle(const moos::Message& m, double time_s) {
+  // Node reports are most of the mail: read where they lie, not copied.
+  if (m.key == app_.node_report_var && m.is_string()) return on_node_report(m.sval, time_s);
   const std::string text = mission_app::mail_text(m);
   auto warn_parse = [&](const std::string& error) {
     report_run_warning(m.key + " ignored: " + error);

@@ -171,9 +171,7 @@ void SimSurveyVehicle::post_node_report(const mission::Pose& pose) {
   }
   r.time_s = pose.time_s;
   r.type = vehicle_type_;
-  mission::Outputs out;
-  out.post(node_report_var_, hazard::format_node_report(r));
-  publish(out);
+  notify(node_report_var_, hazard::format_node_report(r));  // the text moves on, uncopied
   ++node_reports_posted_;
 }
 

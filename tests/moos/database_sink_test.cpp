@@ -1,0 +1,169 @@
+// Unit tests of moos::Database's ways for a connection layer in the same process
+// (moos::InProcessBus): the mail sink, one-message packets and output into a kept list. Each is
+// checked against the plain packet path, which the other database tests pin down.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "database_fixture.hpp"
+
+namespace moos::test {
+namespace {
+
+struct Sunk {
+  ClientId to;
+  Message message;
+};
+
+/// Two DBs fed the same traffic: `plain` sends every mail in packets, `sunk` hands the
+/// asynchronous clients' mail to its sink.
+class DatabaseSinkTest : public ::testing::Test {
+ protected:
+  static DatabaseConfig config(std::vector<Sunk>* sink) {
+    DatabaseConfig c;
+    c.community = "alpha";
+    if (sink) c.mail_sink = [sink](ClientId to, Message&& m) { sink->push_back({to, std::move(m)}); };
+    return c;
+  }
+
+  void connect(ClientId id, const std::string& name, bool async) {
+    ASSERT_TRUE(plain_.connect(id, {identification(name, async)}, kT0));
+    ASSERT_TRUE(sunk_.connect(id, {identification(name, async)}, kT0));
+  }
+
+  /// The packets' messages of `plain` and the sink's of `sunk`, for client `id`.
+  void send(ClientId from, const std::vector<Message>& packet, double now = kT0) {
+    plain_.process_packet(from, packet, now);
+    sunk_.process_packet(from, packet, now);
+  }
+
+  static std::vector<Message> mail_of(const std::vector<OutPacket>& out, ClientId id) {
+    std::vector<Message> mail;
+    for (const auto& p : out)
+      if (p.to == id)
+        for (const auto& m : p.messages)
+          if (m.type == msg_type::kNotify) mail.push_back(m);
+    return mail;
+  }
+
+  std::vector<Message> sunk_mail_of(ClientId id) const {
+    std::vector<Message> mail;
+    for (const auto& s : sink_)
+      if (s.to == id) mail.push_back(s.message);
+    return mail;
+  }
+
+  std::vector<Sunk> sink_;
+  Database plain_{config(nullptr), kT0, [](const std::string&) {}};
+  Database sunk_{config(&sink_), kT0, [](const std::string&) {}};
+};
+
+TEST_F(DatabaseSinkTest, TheSinkGetsAnAsynchronousClientsMailAsItsPacketsWouldCarryIt) {
+  connect(kA, "async", true);
+  connect(kB, "pub", true);
+  plain_.take_output();
+  sunk_.take_output();
+  sink_.clear();
+  send(kB, {notify_double("X", 0.5, "pub")});  // written before: a snapshot at REGISTER
+  send(kA, {registration("X", 0, "async"), registration("Y", 0, "async"),
+            wildcard("AppPattern=*,VarPattern=Z_*,Interval=0", "async")});
+  std::vector<Message> packet;
+  for (int i = 0; i < 30; ++i) packet.push_back(notify_double(i % 3 ? "X" : "Z_1", i, "pub"));
+  packet.push_back(notify_string("Y", "text", "pub"));
+  send(kB, packet);
+  const auto plain_out = plain_.take_output();
+  const auto expected = mail_of(plain_out, kA);
+  ASSERT_EQ(expected.size(), 1u + 31u);
+  EXPECT_EQ(sunk_mail_of(kA), expected);
+  EXPECT_TRUE(mail_of(sunk_.take_output(), kA).empty());  // no packet carried it as well
+}
+
+TEST_F(DatabaseSinkTest, ASynchronousClientsMailStillWaitsForItsReply) {
+  connect(kA, "sync", false);
+  connect(kB, "pub", true);
+  send(kA, {registration("X", 0, "sync")});
+  send(kB, {notify_double("X", 1, "pub")});
+  EXPECT_TRUE(sunk_mail_of(kA).empty());
+  sunk_.take_output();
+  sunk_.process_packet(kA, {null_message("sync")}, kT0);
+  const auto reply = sunk_.take_output();
+  ASSERT_EQ(reply.size(), 1u);
+  ASSERT_EQ(reply[0].messages.size(), 2u);  // the NULL, then the mail
+  EXPECT_EQ(reply[0].messages[0].type, msg_type::kNull);
+  EXPECT_EQ(reply[0].messages[1].key, "X");
+}
+
+TEST_F(DatabaseSinkTest, ATimingEchoStillLeavesInAPacket) {
+  connect(kA, "async", true);
+  sunk_.take_output();
+  sunk_.process_packet(kA, {timing(kT0 - 1)}, kT0 + 2);
+  const auto out = sunk_.take_output();
+  ASSERT_EQ(out.size(), 1u);
+  ASSERT_EQ(out[0].messages.size(), 1u);
+  EXPECT_EQ(out[0].messages[0].type, msg_type::kTiming);
+  EXPECT_EQ(out[0].messages[0].dval, kT0 + 2);
+}
+
+TEST(DatabaseSink, TheUndeliveredMailBoundStillAppliesPerCall) {
+  std::vector<Sunk> sink;
+  DatabaseConfig config;
+  config.max_pending_bytes = 1000;
+  config.mail_sink = [&](ClientId to, Message&& m) { sink.push_back({to, std::move(m)}); };
+  Database db(config, kT0, [](const std::string&) {});
+  ASSERT_TRUE(db.connect(kA, {identification("reader", true)}, kT0));
+  ASSERT_TRUE(db.connect(kB, {identification("pub", true)}, kT0));
+  db.process_packet(kA, {registration("X", 0, "reader")}, kT0);
+  // One message per call: the mail leaves with each call, nothing accumulates.
+  for (int i = 0; i < 40; ++i) db.process_packet(kB, {notify_double("X", i, "pub")}, kT0);
+  EXPECT_TRUE(db.take_drop_requests().empty());
+  EXPECT_EQ(sink.size(), 40u);
+  EXPECT_EQ(db.pending_bytes(kA), 0u);
+  // One call queuing more than the bound: the client is reported, as without a sink.
+  std::vector<Message> packet(40, notify_double("X", 1, "pub"));
+  db.process_packet(kB, packet, kT0);
+  const auto drops = db.take_drop_requests();
+  ASSERT_EQ(drops.size(), 1u);
+  EXPECT_EQ(drops[0].id, kA);
+}
+
+TEST_F(DatabaseTest, ProcessMessageIsAPacketOfOneMessage) {
+  connect(kA, "async", true);
+  connect(kB, "sync", false);
+  Database twin{config(), kT0, [](const std::string&) {}};
+  ASSERT_TRUE(twin.connect(kA, {identification("async", true)}, kT0));
+  ASSERT_TRUE(twin.connect(kB, {identification("sync", false)}, kT0));
+  twin.take_output();
+  const std::vector<Message> traffic = {registration("X", 0, "async"), registration("X", 0, "sync"),
+                                        notify_double("X", 2, "async"), timing(kT0),
+                                        notify_string("X", "wrong type", "sync")};
+  for (const Message& m : traffic) {
+    const ClientId from = m.source == "async" ? kA : kB;
+    db_.process_packet(from, {m}, kT0 + 1);
+    twin.process_message(from, Message(m), kT0 + 1);
+    const auto expected = db_.take_output();
+    const auto got = twin.take_output();
+    ASSERT_EQ(got.size(), expected.size()) << m.key;
+    for (std::size_t i = 0; i < got.size(); ++i) {
+      EXPECT_EQ(got[i].to, expected[i].to);
+      EXPECT_EQ(got[i].messages, expected[i].messages);
+    }
+  }
+}
+
+TEST_F(DatabaseTest, OutputTakenIntoAKeptListReplacesItsContents) {
+  connect(kA, "async", true);
+  db_.process_packet(kA, {registration("X", 0, "async")}, kT0);
+  db_.process_packet(kA, {notify_double("X", 1, "async")}, kT0);
+  std::vector<OutPacket> kept(3);  // stale packets from an earlier call
+  db_.take_output(kept);
+  ASSERT_EQ(kept.size(), 1u);
+  EXPECT_EQ(kept[0].to, kA);
+  EXPECT_EQ(keys(kept[0].messages), std::vector<std::string>{"X"});
+  db_.take_output(kept);
+  EXPECT_TRUE(kept.empty());
+}
+
+}  // namespace
+}  // namespace moos::test
