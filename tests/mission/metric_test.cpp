@@ -335,7 +335,7 @@ TEST(TransitLane, FirstXWithTheFewestHazardsByHand_Spec14_2) {
 // The lane's counts come from the sorted x of the points (two binary searches per strip); they
 // equal the rule's direct count, points on the strip's and the region's edges included.
 TEST(TransitLane, EqualsTheDirectCountOnRandomPoints) {
-  const auto region = std::get<ConvexPolygon>(ConvexPolygon::parse("0,0:300,0:300,-200:0,-200"));
+  const auto region = *ConvexPolygon::parse("0,0:300,0:300,-200:0,-200").value;
   std::vector<glm::dvec2> points;
   std::uint64_t state = 12345;
   auto next = [&] { return (state = state * 6364136223846793005ULL + 1442695040888963407ULL) >> 40; };
