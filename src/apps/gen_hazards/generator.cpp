@@ -133,15 +133,15 @@ class PointSampler {
 
 /// A region whose area is a tiny part of its bounding box would take very many draws per
 /// object (the original could spin for ever); reject it up front, naming it.
-std::optional<GenerationError> check_fill(const Region& region, double min_fill_fraction) {
+base::Result<void> check_fill(const Region& region, double min_fill_fraction) {
   const mission::Bounds box = region.polygon.bounds();
   const glm::dvec2 size = box.max_m - box.min_m;
   const double fill = region.polygon.area_m2() / (size.x * size.y);
-  if (fill >= min_fill_fraction) return std::nullopt;  // false for NaN (overflowing sizes) too
-  return GenerationError{"'" + region.argument + "': the polygon covers only " +
-                         base::fmt(fill, 6) + " of its bounding box (at least " +
-                         base::fmt(min_fill_fraction, 6) +
-                         " is needed to place points in it); it is too thin"};
+  if (fill >= min_fill_fraction) return base::Result<void>::ok();  // false for NaN sizes too
+  return base::Result<void>::fail("'" + region.argument + "': the polygon covers only " +
+                                  base::fmt(fill, 6) + " of its bounding box (at least " +
+                                  base::fmt(min_fill_fraction, 6) +
+                                  " is needed to place points in it); it is too thin");
 }
 
 long tenths(double deg) { return std::lround(deg * kTenthsPerDeg); }
@@ -187,15 +187,16 @@ AspectWindowTenths resolve_aspect_window(AspectWindowTenths drawn) {
   return {drawn.min_tenths - excess / 2, drawn.max_tenths - (excess - excess / 2)};
 }
 
-std::optional<GenerationError> generate(const GeneratorConfig& config,
-                                        const std::function<void(const GeneratedObject&)>& sink,
-                                        const GeneratorLimits& limits) {
-  if (total_objects(config) == 0) return std::nullopt;
+base::Result<void> generate(const GeneratorConfig& config,
+                            const std::function<void(const GeneratedObject&)>& sink,
+                            const GeneratorLimits& limits) {
+  using Outcome = base::Result<void>;
+  if (total_objects(config) == 0) return Outcome::ok();
   if (config.regions.empty()) {
-    return GenerationError{"'" + config.sets.front().argument + "': objects need a --polygon"};
+    return Outcome::fail("'" + config.sets.front().argument + "': objects need a --polygon");
   }
   for (const auto& region : config.regions) {
-    if (auto error = check_fill(region, limits.min_fill_fraction)) return error;
+    if (auto fill = check_fill(region, limits.min_fill_fraction); !fill) return fill;
   }
   PointSampler sampler(config.regions, config.seed, limits.max_attempts);
   LabelPool labels(config.seed, limits.max_label_draws);
@@ -205,10 +206,10 @@ std::optional<GenerationError> generate(const GeneratorConfig& config,
     for (std::uint64_t n = 0; n < set.count; ++n, ++index) {
       const auto point = sampler.place(index);
       if (!point) {
-        return GenerationError{"'" + sampler.worst_region().argument +
-                               "': could not place object " + std::to_string(n + 1) + " of '" +
-                               set.argument + "' in " + std::to_string(limits.max_attempts) +
-                               " attempts; the polygon is too thin"};
+        return Outcome::fail("'" + sampler.worst_region().argument +
+                             "': could not place object " + std::to_string(n + 1) + " of '" +
+                             set.argument + "' in " + std::to_string(limits.max_attempts) +
+                             " attempts; the polygon is too thin");
       }
       GeneratedObject out;
       out.drawn_m = *point;
@@ -226,30 +227,30 @@ std::optional<GenerationError> generate(const GeneratorConfig& config,
       sink(out);
     }
   }
-  return std::nullopt;
+  return Outcome::ok();
 }
 
-std::variant<std::vector<GeneratedObject>, GenerationError> generate_objects(
-    const GeneratorConfig& config, const GeneratorLimits& limits) {
+base::Result<std::vector<GeneratedObject>> generate_objects(const GeneratorConfig& config,
+                                                            const GeneratorLimits& limits) {
   std::vector<GeneratedObject> objects;
-  if (auto error = generate(config, [&](const GeneratedObject& o) { objects.push_back(o); }, limits))
-    return *error;
-  return objects;
+  auto done = generate(config, [&](const GeneratedObject& o) { objects.push_back(o); }, limits);
+  if (!done) return base::Result<std::vector<GeneratedObject>>::fail(std::move(done.error));
+  return base::Result<std::vector<GeneratedObject>>::ok(std::move(objects));
 }
 
-std::variant<std::string, GenerationError> build_hazard_file(const std::string& header,
-                                                             const GeneratorConfig& config,
-                                                             const GeneratorLimits& limits) {
+base::Result<std::string> build_hazard_file(const std::string& header,
+                                            const GeneratorConfig& config,
+                                            const GeneratorLimits& limits) {
   std::string out = header + "\n";
   for (const auto& region : config.regions) out += "region = " + region.polygon.spec_pts() + "\n";
-  auto error = generate(
+  auto done = generate(
       config,
       [&](const GeneratedObject& o) {
         out += "hazard = " + hazard::format_hazard_line(o.object) + "\n";
       },
       limits);
-  if (error) return *error;
-  return out;
+  if (!done) return base::Result<std::string>::fail(std::move(done.error));
+  return base::Result<std::string>::ok(std::move(out));
 }
 
 }  // namespace gen_hazards

@@ -27,12 +27,12 @@
 #include <functional>
 #include <optional>
 #include <string>
-#include <variant>
 #include <vector>
 
 #include <glm/vec2.hpp>
 
 #include "hazard/hazard_object.hpp"
+#include "base/result.hpp"
 #include "options.hpp"
 
 namespace gen_hazards {
@@ -60,25 +60,21 @@ struct GeneratedObject {
   std::size_t set_index = 0;    ///< which --objects set (argument order)
 };
 
-struct GenerationError {
-  std::string message;  ///< names the argument at fault
-};
-
-/// Generates every object in output order and hands each to `sink`. Returns the error (and
-/// stops) if a region is too thin or an object cannot be placed.
-std::optional<GenerationError> generate(const GeneratorConfig& config,
-                                        const std::function<void(const GeneratedObject&)>& sink,
-                                        const GeneratorLimits& limits = {});
+/// Generates every object in output order and hands each to `sink`. Fails (and stops), naming
+/// the argument at fault, if a region is too thin or an object cannot be placed.
+base::Result<void> generate(const GeneratorConfig& config,
+                            const std::function<void(const GeneratedObject&)>& sink,
+                            const GeneratorLimits& limits = {});
 
 /// Collects generate()'s objects.
-std::variant<std::vector<GeneratedObject>, GenerationError> generate_objects(
-    const GeneratorConfig& config, const GeneratorLimits& limits = {});
+base::Result<std::vector<GeneratedObject>> generate_objects(const GeneratorConfig& config,
+                                                            const GeneratorLimits& limits = {});
 
 /// The whole hazard file (D30): `header` + "\n", one `region = pts={...}` line per region,
 /// then one `hazard = ...` line per object, each formatted by hazard::format_hazard_line.
-std::variant<std::string, GenerationError> build_hazard_file(const std::string& header,
-                                                             const GeneratorConfig& config,
-                                                             const GeneratorLimits& limits = {});
+base::Result<std::string> build_hazard_file(const std::string& header,
+                                            const GeneratorConfig& config,
+                                            const GeneratorLimits& limits = {});
 
 // ---- The formulas, exposed for tests ----
 

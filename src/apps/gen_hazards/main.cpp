@@ -5,7 +5,6 @@
 
 #include <cstdio>
 #include <string>
-#include <variant>
 #include <vector>
 
 #include "app_support.hpp"
@@ -43,11 +42,11 @@ int main(int argc, char** argv) {
 
   cli.config.seed = cli.seed ? *cli.seed : app_support::operating_system_seed();
   const auto file = build_hazard_file(header_line(cli.recorded_args, cli.config.seed), cli.config);
-  if (const auto* error = std::get_if<GenerationError>(&file)) {
-    print_error(error->message);
+  if (!file) {
+    print_error(file.error);
     return kExitBadInput;
   }
-  const std::string& text = std::get<std::string>(file);
+  const std::string& text = *file.value;
   if (!cli.output_path) return write_stdout(text);
   if (auto written = base::write_output_file(*cli.output_path, text); !written) {
     print_error(written.error);

@@ -2,7 +2,6 @@
 
 #include "field.hpp"
 
-#include <variant>
 
 #include "base/text.hpp"
 #include "generator.hpp"
@@ -65,9 +64,8 @@ FieldText generate_field(const FieldSpec& spec, std::uint64_t field_seed) {
   config.seed = field_seed;
   auto file = gen_hazards::build_hazard_file(
       gen_hazards::header_line(spec.recorded_args, field_seed), config);
-  if (auto* error = std::get_if<gen_hazards::GenerationError>(&file))
-    return FieldText{std::nullopt, "--field: " + error->message};
-  return FieldText{std::get<std::string>(std::move(file)), {}};
+  if (!file) return FieldText{std::nullopt, "--field: " + file.error};
+  return FieldText{std::move(file.value), {}};
 }
 
 }  // namespace hazard_study

@@ -7,7 +7,6 @@
 #include <set>
 #include <sstream>
 #include <string>
-#include <variant>
 #include <vector>
 
 #include "generator.hpp"
@@ -45,17 +44,15 @@ GeneratorConfig config_of(const std::vector<std::string>& args, std::uint64_t se
 std::vector<GeneratedObject> objects_of(const GeneratorConfig& config,
                                         const GeneratorLimits& limits = {}) {
   auto result = generate_objects(config, limits);
-  if (const auto* error = std::get_if<GenerationError>(&result)) {
-    ADD_FAILURE() << error->message;
+  if (!result) {
+    ADD_FAILURE() << result.error;
     return {};
   }
-  return std::get<std::vector<GeneratedObject>>(std::move(result));
+  return std::move(*result.value);
 }
 
 std::string error_of(const GeneratorConfig& config, const GeneratorLimits& limits = {}) {
-  const auto result = generate_objects(config, limits);
-  const auto* error = std::get_if<GenerationError>(&result);
-  return error ? error->message : std::string();
+  return generate_objects(config, limits).error;
 }
 
 // Expects `count` within kSigmas binomial standard deviations of n * p.
@@ -213,8 +210,8 @@ TEST(GenHazardsGenerator, ResemblanceIsThePowerOfTheStep_Manual6_3) {
 TEST(GenHazardsGenerator, ResemblanceIsWrittenForBenignObjectsOnly_Spec4_4) {
   const auto text = build_hazard_file(
       "// h", config_of({kManualBox, "--objects=3,hazard", "--objects=3,benign", "--exp=1"}, 5));
-  ASSERT_TRUE(std::holds_alternative<std::string>(text));
-  std::istringstream lines(std::get<std::string>(text));
+  ASSERT_TRUE(text) << text.error;
+  std::istringstream lines(*text.value);
   std::string line;
   int hazards = 0, benign = 0;
   while (std::getline(lines, line)) {
@@ -273,9 +270,9 @@ TEST(GenHazardsGenerator, LabelFallbackTakesTheSmallestFreeLabel) {
 TEST(GenHazardsGenerator, SameSeedGivesTheSameFieldAndOtherSeedsDiffer) {
   const std::vector<std::string> args = {kManualBox, "--objects=20,benign", "--exp=2",
                                          "--aspect_min_range=20"};
-  const auto a = std::get<std::string>(build_hazard_file("// h", config_of(args, 99)));
-  const auto b = std::get<std::string>(build_hazard_file("// h", config_of(args, 99)));
-  const auto c = std::get<std::string>(build_hazard_file("// h", config_of(args, 100)));
+  const auto a = *build_hazard_file("// h", config_of(args, 99)).value;
+  const auto b = *build_hazard_file("// h", config_of(args, 99)).value;
+  const auto c = *build_hazard_file("// h", config_of(args, 100)).value;
   EXPECT_EQ(a, b);
   EXPECT_NE(a, c);
 }
@@ -414,8 +411,8 @@ TEST(GenHazardsGenerator, FileHasHeaderOneRegionLinePerPolygonThenObjects_D30) {
       config_of({"--polygon=0,0:100,0:100,100", "--polygon=pts={12.34,0:20,0:20,7.96}",
                  "--objects=2,hazard", "--objects=1,benign"},
                 3));
-  ASSERT_TRUE(std::holds_alternative<std::string>(text));
-  std::istringstream in(std::get<std::string>(text));
+  ASSERT_TRUE(text) << text.error;
+  std::istringstream in(*text.value);
   std::vector<std::string> lines;
   for (std::string line; std::getline(in, line);) lines.push_back(line);
   ASSERT_EQ(lines.size(), 6u);
@@ -429,7 +426,7 @@ TEST(GenHazardsGenerator, FileHasHeaderOneRegionLinePerPolygonThenObjects_D30) {
   // The whole file loads in the sensor with no warning.
   hazard::HazardField field;
   std::vector<std::string> warnings;
-  const auto counts = hazard::load_hazard_file_text(std::get<std::string>(text), "f", field, warnings);
+  const auto counts = hazard::load_hazard_file_text(*text.value, "f", field, warnings);
   EXPECT_TRUE(warnings.empty()) << joined(warnings);
   EXPECT_EQ(counts.hazards, 2);
   EXPECT_EQ(counts.benign, 1);
@@ -437,8 +434,9 @@ TEST(GenHazardsGenerator, FileHasHeaderOneRegionLinePerPolygonThenObjects_D30) {
 
 TEST(GenHazardsGenerator, NoObjectsGivesHeaderAndRegionsOnly_Spec12_4) {
   const auto text = build_hazard_file("// h", config_of({kManualBox}, 1));
-  EXPECT_EQ(std::get<std::string>(text), "// h\nregion = pts={-150,-75:-150,-400:400,-400:400,-75}\n");
-  EXPECT_EQ(std::get<std::string>(build_hazard_file("// h", config_of({}, 1))), "// h\n");
+  ASSERT_TRUE(text) << text.error;
+  EXPECT_EQ(*text.value, "// h\nregion = pts={-150,-75:-150,-400:400,-400:400,-75}\n");
+  EXPECT_EQ(*build_hazard_file("// h", config_of({}, 1)).value, "// h\n");
 }
 
 }  // namespace

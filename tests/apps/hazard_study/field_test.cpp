@@ -63,7 +63,8 @@ TEST(StudyField, TheFieldOfASeedIsGenHazardsOwnFileForThatSeed) {
   gen_hazards::GeneratorConfig config = cli.config;
   config.seed = 7;
   const auto file = gen_hazards::build_hazard_file(gen_hazards::header_line(cli.recorded_args, 7), config);
-  EXPECT_EQ(*a.text, std::get<std::string>(file));
+  ASSERT_TRUE(file) << file.error;
+  EXPECT_EQ(*a.text, *file.value);
   EXPECT_EQ(a.text->rfind("// gen_hazards --polygon=-150,-75:-150,-400:400,-400:400,-75 "
                           "--objects=5,hazard --objects=10,benign --seed=7\n", 0), 0u);
 }
