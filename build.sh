@@ -10,7 +10,7 @@
 #                       sanitize (the whole suite again under ASan + UBSan, halting), tsan (the
 #                       threaded test programs and the programs they start under ThreadSanitizer,
 #                       halting), fuzz (each
-#                       fuzz target for HAZARD_FUZZ_SECONDS seconds on its seed corpus, default 15,
+#                       fuzz target for HAZARD_FUZZ_SECONDS seconds on its seed corpus, default 10,
 #                       HAZARD_JOBS at a time)
 #                       HAZARD_TEST_PHASES="release sanitize" runs only the phases named
 #   ./build.sh test-release | test-perf | test-sanitize | test-tsan | test-fuzz   one phase
@@ -158,7 +158,7 @@ run_tests() {
 # The test phases of `./build.sh test` (docs/robustness.md, "Sanitizer CI"). Each selects its
 # own preset and build folder, so a phase never reuses another's objects.
 TEST_PHASES_ALL=(release perf sanitize tsan fuzz)
-FUZZ_SECONDS="${HAZARD_FUZZ_SECONDS:-15}"
+FUZZ_SECONDS="${HAZARD_FUZZ_SECONDS:-10}"
 
 use_preset() {
   PRESET="$1"

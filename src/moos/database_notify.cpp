@@ -104,7 +104,7 @@ void Database::store(Variable& var, const Message& msg, double now) {
   if (var.value) {
     stored_bytes_ -= value_bytes(*var.value);
   } else {
-    var.value.emplace();
+    var.value = Value{};  // assigned: clang cannot emplace() a nested class with initializers here
   }
   Value& value = *var.value;
   if (msg.data_type == dt::kDouble) {
