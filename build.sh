@@ -41,6 +41,7 @@ JOBS="${HAZARD_JOBS:-$(nproc 2>/dev/null || echo 2)}"
 DEBIAN_PACKAGES=(
   cmake ninja-build g++ pkg-config
   libgeographiclib-dev libglm-dev libgtest-dev libbenchmark-dev
+  libmimalloc-dev        # the programs' allocator (cmake/allocator.cmake)
   python3 python3-venv
   librsvg2-bin
   libboost1.74-dev chromium   # Boost.Beast and Asio (header-only): pWebViewer's HTTP server

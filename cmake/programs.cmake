@@ -2,12 +2,14 @@
 # Declares one of the installed programs: installed into bin/, listed in programs.txt (build.sh
 # links each into the tree's bin/ folder from it) and given a man page generated from its own
 # --help, --version, --example and --interface (cmake/man_page.cmake), so the page cannot drift
-# from the program. SUMMARY is the man page's NAME line.
+# from the program, and linked with the programs' allocator (cmake/allocator.cmake). SUMMARY is
+# the man page's NAME line.
 function(hazard_program target)
   cmake_parse_arguments(PARSE_ARGV 1 ARG "" "SUMMARY" "")
   if(NOT ARG_SUMMARY)
     message(FATAL_ERROR "hazard_program(${target}): SUMMARY is required")
   endif()
+  hazard_use_allocator(${target})
   install(TARGETS ${target} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT programs)
   set_property(GLOBAL APPEND PROPERTY HAZARD_PROGRAMS ${target})
   set_property(GLOBAL PROPERTY HAZARD_PROGRAM_SUMMARY_${target} "${ARG_SUMMARY}")

@@ -25,6 +25,15 @@ def programs(build_dir):
     return names
 
 
+def cache_option(build_dir, name):
+    """A boolean option of the build's CMakeCache.txt (ON, TRUE, 1, YES: true)."""
+    cache = (pathlib.Path(build_dir) / "CMakeCache.txt").read_text()
+    for line in cache.splitlines():
+        if line.startswith(name + ":"):
+            return line.split("=", 1)[1].strip().upper() in ("ON", "TRUE", "1", "YES")
+    raise AssertionError(f"{name} is not in {build_dir}/CMakeCache.txt")
+
+
 def run(command, timeout=120, **kwargs):
     """Runs a command; its CompletedProcess (text, both streams captured)."""
     return subprocess.run([str(c) for c in command], capture_output=True, text=True,

@@ -9,7 +9,7 @@ import shutil
 import tempfile
 import unittest
 
-from install_support import checked, parse_arguments, programs, run
+from install_support import cache_option, checked, parse_arguments, programs, run
 
 ARGS = parse_arguments()
 
@@ -57,6 +57,8 @@ class DebianPackage(unittest.TestCase):
         for package in ("libc6", "libstdc++6", "libgeographiclib", "python3"):
             self.assertIn(package, depends)
         self.assertNotIn("moos", depends.lower())
+        if cache_option(ARGS.build_dir, "HAZARD_MIMALLOC"):
+            self.assertIn("libmimalloc2.0", depends)
         # pWebViewer's HTTP server is Boost.Beast, header-only: no HTTP or Boost library to install.
         self.assertNotIn("httplib", depends)
         self.assertNotIn("libboost", depends)

@@ -12,7 +12,7 @@ import shutil
 import tempfile
 import unittest
 
-from install_support import checked, parse_arguments, programs, run, system_path
+from install_support import cache_option, checked, parse_arguments, programs, run, system_path
 
 ARGS = parse_arguments()
 SOURCE = pathlib.Path(ARGS.source_dir)
@@ -48,6 +48,25 @@ class Installed(unittest.TestCase):
                 self.assertEqual(result.returncode, 0, result.stderr)
                 self.assertIn(name, result.stdout)
                 self.assertGreater(len(result.stdout.splitlines()), 5)
+
+    def test_every_program_allocates_through_mimalloc(self):
+        if not cache_option(ARGS.build_dir, "HAZARD_MIMALLOC"):
+            self.skipTest("built with -DHAZARD_MIMALLOC=OFF")
+        for name in self.programs:
+            with self.subTest(program=name):
+                path = self.prefix / "bin" / name
+                needed = re.findall(r"\(NEEDED\).*\[(.+)\]", checked(["readelf", "-d", path]))
+                self.assertIn("libmimalloc.so.2", needed)
+                # The dynamic linker binds the program's and libstdc++'s malloc and operator
+                # new to mimalloc, not to the C library's.
+                result = run([path, "--version"], env=dict(self.env, LD_DEBUG="bindings"))
+                self.assertEqual(result.returncode, 0, result.stderr[-2000:])
+                for symbol in ("malloc", "_Znwm"):
+                    bound = re.findall(rf"binding file (\S+) .* to (\S+) .*symbol `{symbol}'",
+                                       result.stderr)
+                    self.assertTrue(bound, f"no binding of {symbol}")
+                    self.assertEqual({os.path.basename(to) for _, to in bound},
+                                     {"libmimalloc.so.2"}, bound)
 
     def test_every_program_has_a_man_page_made_from_its_own_texts(self):
         for name in self.programs:
