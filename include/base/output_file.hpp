@@ -19,7 +19,8 @@
 //   never removed. A FIFO is opened non-blocking so that a FIFO nobody reads cannot hang the
 //   program: it waits up to kFifoReaderWait_s for a reader (one started beside the program may
 //   come a moment late), then fails with "no process is reading the FIFO". Once open, writes
-//   block as in any pipe. A reader that goes away raises SIGPIPE, as for any pipe.
+//   block as in any pipe. A reader that goes away raises SIGPIPE, as for any pipe, unless the
+//   program ignores it (every MOOS app does: moos::run_app), when the write fails with EPIPE.
 // - A directory, a block device, a socket: refused at open, naming the path and the kind.
 // Every problem is one message naming the path the user gave (and the file a link leads to):
 // "cannot write '/dev/full': No space left on device". Writes are buffered (kBufferBytes), so a

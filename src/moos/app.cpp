@@ -4,6 +4,7 @@
 #include "moos/app.hpp"
 
 #include <algorithm>
+#include <csignal>
 #include <limits>
 #include <ostream>
 
@@ -557,6 +558,10 @@ int run_app(MoosApp& app, const CommandLine& cl, std::ostream& out, std::ostream
   client_options.name = settings.moos_name;
   client_options.time_warp = settings.time_warp;
   client_options.tw_delay_factor_ms = *tw_delay_factor;
+  // A reader that leaves a FIFO or pipe the app writes (a log, its terminal output) makes the
+  // write fail with EPIPE, which the writer reports and counts, instead of ending the app
+  // without a word while it still serves its community. Sockets already send with MSG_NOSIGNAL.
+  std::signal(SIGPIPE, SIG_IGN);
   // Before the comms thread starts, so that only the watcher takes SIGINT and SIGTERM.
   StopSignals stop_signals;
   TcpClient client(client_options);

@@ -1,10 +1,14 @@
 // pLogLite, the binary, when its log cannot be written as it runs: a full disk (a file size
 // limit, RLIMIT_FSIZE, lifted later with prlimit: no privileges needed) and a log folder
 // deleted while it is written. The log stays whole records, says what it is missing with a gap
-// marker, and the exit status says the log is not whole (kExitLogNotWhole).
+// marker, and the exit status says the log is not whole (kExitLogNotWhole). A FIFO whose reader
+// leaves: the logger keeps serving and counts what it could not write.
 #include <gtest/gtest.h>
 
+#include <fcntl.h>
 #include <sys/resource.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <chrono>
 #include <filesystem>
@@ -164,6 +168,44 @@ TEST_F(LoggerFaults, ALogFolderDeletedWhileLoggingIsCreatedAgainWithAHeaderAndAG
   EXPECT_GT(lines.gap_lost, 0u);
   EXPECT_FALSE(contains(lines.variables, "BEFORE_DELETE"));
   EXPECT_TRUE(contains(lines.variables, "AFTER_DELETE"));
+}
+
+TEST_F(LoggerFaults, AFifoWhoseReaderLeavesKeepsTheLoggerServingAndCountsTheLostRecords) {
+  ASSERT_TRUE(server_.ok());
+  std::filesystem::create_directories(dir_ / "logs");
+  ASSERT_EQ(::mkfifo(log_path().c_str(), 0600), 0);
+  // The reader is there first: the logger opens the FIFO without waiting for one.
+  // O_CLOEXEC: a child holding the read end too would keep the pipe whole.
+  const int reader = ::open(log_path().c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  ASSERT_GE(reader, 0);
+  ASSERT_TRUE(start_logger()) << (logger_ ? logger_->stderr_text() : "");
+  // The log's header arrives: the logger has the FIFO open.
+  char header[4096];
+  bool got_header = false;
+  for (const double until = steady_now_s() + kPatience_s; !got_header && steady_now_s() < until;) {
+    got_header = ::read(reader, header, sizeof header) > 0;
+    if (!got_header) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  ::close(reader);  // the reader leaves; every later write meets a broken pipe
+  ASSERT_TRUE(got_header) << logger_->stderr_text();
+
+  const double give_up = steady_now_s() + kPatience_s;
+  while (steady_now_s() < give_up && logger_->stderr_text().find("Broken pipe") == std::string::npos) {
+    poke({"AFTER_READER=1"});
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  }
+  EXPECT_NE(logger_->stderr_text().find("Broken pipe"), std::string::npos) << logger_->stderr_text();
+  ASSERT_TRUE(logger_->running()) << "the logger ended: " << logger_->stderr_text();
+  // Still serving its community: a client sees it connected.
+  const auto watch = run_program(MOOS_CLI_PATH,
+                                 {"watch", "--port=" + std::to_string(server_.port()), "--count=1",
+                                  "--timeout=2", "DB_CLIENTS"},
+                                 5.0);
+  EXPECT_NE(watch.out.find("pLogLite"), std::string::npos) << watch.out;
+
+  EXPECT_EQ(logger_->stop(), kExitLogNotWhole) << logger_->stderr_text();
+  EXPECT_NE(logger_->stderr_text().find("records lost"), std::string::npos)
+      << logger_->stderr_text();
 }
 
 }  // namespace
