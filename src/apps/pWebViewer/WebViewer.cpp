@@ -30,7 +30,7 @@ WebViewer::~WebViewer() {
 }
 
 std::string WebViewer::url() const {
-  return "http://" + config_.http.bind_address + ":" + std::to_string(http_port()) + "/";
+  return server_url(config_.http.bind_address, http_port());
 }
 
 std::string WebViewer::page_url() const {

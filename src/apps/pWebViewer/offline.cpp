@@ -103,8 +103,8 @@ int serve_replay(const std::string& log_path, OfflineSetup& s, std::ostream& out
     return 1;
   }
   // The token as in a live run, so that the printed URL is the same kind (a replay has no buttons).
-  out << kAppName << ": serving http://" << s.config.http.bind_address << ":" << server.port()
-      << "/?token=" << server.token() << " (replay of " << log_path << ", " << log->mail.size() << " postings)" << std::endl;
+  out << kAppName << ": serving " << server_url(s.config.http.bind_address, server.port())
+      << "?token=" << server.token() << " (replay of " << log_path << ", " << log->mail.size() << " postings)" << std::endl;
   int signal = 0;
   sigwait(&stop_signals, &signal);
   server.stop();

@@ -61,12 +61,6 @@ bool is_wildcard(std::string_view address) {
   return address == "0.0.0.0" || address == "::" || address == "[::]";
 }
 
-/// The bound address as it appears in a Host header.
-std::string host_form(const std::string& address) {
-  if (address.find(':') != std::string::npos && address.front() != '[') return "[" + address + "]";
-  return base::to_lower(address);
-}
-
 bool host_allowed(const GuardConfig& config, const std::string& name) {
   if (name == "localhost" || name == "127.0.0.1" || name == "[::1]") return true;
   if (name == host_form(config.bind_address)) return true;
@@ -129,6 +123,15 @@ std::string new_token() {
     out += hex;
   }
   return out;
+}
+
+std::string host_form(const std::string& address) {
+  if (address.find(':') != std::string::npos && address.front() != '[') return "[" + address + "]";
+  return base::to_lower(address);
+}
+
+std::string server_url(const std::string& bind_address, int port) {
+  return "http://" + host_form(bind_address) + ":" + std::to_string(port) + "/";
 }
 
 }  // namespace web_viewer

@@ -54,4 +54,10 @@ bool is_host_name(std::string_view name);
 
 std::string new_token();
 
+/// The bound address as a Host header and a URL write it: an IPv6 literal in brackets
+/// ("::1" -> "[::1]"), a name in lower case.
+std::string host_form(const std::string& address);
+/// "http://HOST:PORT/" of a server bound to `bind_address` (host_form).
+std::string server_url(const std::string& bind_address, int port);
+
 }  // namespace web_viewer

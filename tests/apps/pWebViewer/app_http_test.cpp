@@ -80,6 +80,15 @@ class ViewerOnBus : public ::testing::Test {
   std::optional<WebViewer> app;
 };
 
+// The printed URL must open in a browser: an IPv6 literal goes in brackets, as in a Host header.
+TEST(ServerUrl, AnIpv6BindAddressIsBracketedAndAnIpv4OneIsNot) {
+  EXPECT_EQ(server_url("::1", 8080), "http://[::1]:8080/");
+  EXPECT_EQ(server_url("fe80::1", 80), "http://[fe80::1]:80/");
+  EXPECT_EQ(server_url("[::1]", 8080), "http://[::1]:8080/");
+  EXPECT_EQ(server_url("127.0.0.1", 8080), "http://127.0.0.1:8080/");
+  EXPECT_EQ(server_url("Viewer.Example", 9000), "http://viewer.example:9000/");
+}
+
 TEST_F(ViewerOnBus, ServesThePageFilesOnLoopback) {
   ASSERT_TRUE(start());
   ASSERT_GT(app->http_port(), 0);
