@@ -12,23 +12,8 @@
 #include "options.hpp"
 #include "replay.hpp"
 
-namespace {
-
-std::vector<std::string> arguments_of(std::string_view text) {
-  std::vector<std::string> args;
-  while (true) {
-    const std::size_t end = text.find('\0');
-    args.emplace_back(text.substr(0, end));
-    if (end == std::string_view::npos) break;
-    text.remove_prefix(end + 1);
-  }
-  return args;
-}
-
-}  // namespace
-
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  std::vector<std::string> args = arguments_of(fuzz::as_text(data, size));
+  std::vector<std::string> args = fuzz::arguments_of(fuzz::as_text(data, size));
   std::vector<std::string> argv = {"uFldHazardSensor"};
   argv.insert(argv.end(), args.begin(), args.end());
 

@@ -101,6 +101,11 @@ def seed_text_files():
     write("command_line", "sensor", "jake.moos\0uFldHazardSensor_2\0--moos_port=9001\0--SEED=3")
     write("command_line", "server", "--moos_port=9000\0--moos_community=shoreside\0-h")
     write("command_line", "replay", "--seed=1\0--until=60\0--output=out.alog\0c.moos\0in.alog")
+    write("study_args", "settings", "jake.moos\0--seeds=1..3\0--setting=W10\0"
+          "--set=pHazardMgr_archie.swath_width=10\0--set=uFldHazardSensor.max_turn_rate=off\0"
+          "--max-time=900\0--alog=one.alog\0--WARP=1")
+    write("study_args", "field", "jake.moos\0--field=--polygon=-150,-75:-150,-400:400,-400:400,-75 "
+          "--objects=8,hazard --objects=6,benign\0--field-seeds=1..2\0--seeds=4")
 
 
 def message(mtype, dtype, key, sval=b"", dval=-1.0, source=b"fuzz", ident=0, time=1.7e9):
