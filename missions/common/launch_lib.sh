@@ -16,7 +16,7 @@
 #      runs the mission's prepare hook (ml_prepare, optional), starts the MOOSDB (moosdb-lite on
 #      a port the OS chooses, logging every posting to <mission>.alog; or MOOS-IvP's MOOSDB on a
 #      free port, with pLogLite writing the same .alog), and writes targ_<mission>.moos, the
-#      mission file with every $(NAME) filled in;
+#      mission file with its #include lines spliced in and every $(NAME) filled in (as nsplug);
 #   3. with ML_VIEWER set (and pWebViewer built), starts pWebViewer, the browser view, and prints
 #      its URL with the run's token (?token=..., which the page's buttons need; the page is live
 #      while the mission runs);
@@ -108,11 +108,12 @@ ml_make_run_dir() {
   ML_TARG="$ML_RUN_DIR/targ_$ML_MISSION.moos"
 }
 
-# ml_plug TEMPLATE OUT KEY=VALUE...: nsplug's $(KEY) substitution; a $(NAME) left over is an error.
+# ml_plug TEMPLATE OUT KEY=VALUE...: nsplug's #include splicing (ml_expand_includes) and $(KEY)
+# substitution; a $(NAME) left over is an error.
 ml_plug() {
   local template="$1" out="$2"; shift 2
   local text pair key
-  text="$(cat "$template")" || return 1
+  text="$(ml_expand_includes "$template")" || return 1
   for pair in "$@"; do
     key="${pair%%=*}"
     text="${text//\$($key)/${pair#*=}}"

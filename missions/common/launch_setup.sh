@@ -52,11 +52,53 @@ ml_default_bin_text() {
   if [ -n "$ML_INSTALLED" ]; then printf 'the PATH'; else printf 'build/release/src/apps of the source tree'; fi
 }
 
+# ml_expand_includes FILE: the file's text with each `#include FILE` or `#include <FILE>` line
+# replaced by that file's text, recursively (a relative path is taken from the including file's
+# folder), as nsplug writes a targ file and as the programs read a mission file. A file that
+# cannot be read, a cycle or a chain deeper than 10 files is an error naming the file and line.
+ml_expand_includes() {
+  awk -v top="$1" '
+    function folder(path) { if (path !~ /\//) return ""; sub(/[^\/]*$/, "", path); return path }
+    function normal(path,    parts, n, i, out, k, kept) {  # a/./b/../c -> a/c
+      n = split(path, parts, "/"); k = 0
+      for (i = 1; i <= n; i++) {
+        if (parts[i] == "." || (parts[i] == "" && i > 1)) continue
+        if (parts[i] == ".." && k > 0 && kept[k] != ".." && kept[k] != "") { k--; continue }
+        kept[++k] = parts[i]
+      }
+      out = kept[1]; for (i = 2; i <= k; i++) out = out "/" kept[i]
+      return out
+    }
+    function fail(message) { print message > "/dev/stderr"; failed = 1; exit 1 }
+    function expand(file, depth, from,    line, n, target, got, i) {
+      if (depth > 10) fail(from ": #include nested deeper than 10 files")
+      for (i = 1; i < depth; i++) if (stack[i] == file) fail(from ": #include cycle through " file)
+      stack[depth] = file
+      while ((got = (getline line < file)) > 0) {
+        n++
+        if (line !~ /^[ \t]*#include([ \t]|$)/) { print line; continue }
+        target = line
+        sub(/^[ \t]*#include[ \t]*/, "", target)
+        sub(/[ \t]+$/, "", target)
+        if (target ~ /^</) { if (target !~ />$/) fail(file ":" n ": #include <... has no closing >")
+                             target = substr(target, 2, length(target) - 2) }
+        if (target == "" || target ~ /[ \t]/) fail(file ":" n ": #include needs one file name")
+        if (target !~ /^\//) target = normal(folder(file) target)
+        expand(target, depth + 1, file ":" n)
+      }
+      if (got < 0) fail(from ": cannot read " file)
+      close(file)
+    }
+    BEGIN { expand(normal(top), 1, top) }'
+}
+
 # ml_antler_processes FILE: "binary alias" for every `Run = binary @ ... ~ alias` line of the
-# file's `ProcessConfig = ANTLER` block (the alias defaults to the binary), in order, but the
-# processes the launcher starts itself (ML_INFRASTRUCTURE).
+# file's `ProcessConfig = ANTLER` block (included files spliced in; the alias defaults to the
+# binary), in order, but the processes the launcher starts itself (ML_INFRASTRUCTURE).
 ml_antler_processes() {
-  awk -v skip=" ${ML_INFRASTRUCTURE[*]} " '
+  local text
+  text="$(ml_expand_includes "$1")" || return 1
+  printf '%s\n' "$text" | awk -v skip=" ${ML_INFRASTRUCTURE[*]} " '
     { sub(/\/\/.*/, "") }
     /^[ \t]*ProcessConfig[ \t]*=[ \t]*ANTLER[ \t]*$/ { in_block = 1; next }
     in_block && /^[ \t]*}/ { in_block = 0 }
@@ -73,7 +115,7 @@ ml_antler_processes() {
       gsub(/[ \t]/, "", line)
       if (line == "" || index(skip, " " line " ") > 0) next
       print line, (alias == "" ? line : alias)
-    }' "$1"
+    }'
 }
 
 # ML_PROCESSES from the mission file's ANTLER block unless the mission lists them itself.
@@ -81,7 +123,10 @@ ml_read_processes() {
   declare -p ML_PROCESSES >/dev/null 2>&1 && [ "${#ML_PROCESSES[@]}" -gt 0 ] && return 0
   local line
   ML_PROCESSES=()
-  while IFS= read -r line; do ML_PROCESSES+=("$line"); done < <(ml_antler_processes "$ML_TEMPLATE")
+  local processes
+  processes="$(ml_antler_processes "$ML_TEMPLATE")" ||
+    { ml_say "$ML_TEMPLATE: the mission file cannot be read (above)"; exit 2; }
+  while IFS= read -r line; do [ -n "$line" ] && ML_PROCESSES+=("$line"); done <<<"$processes"
   [ "${#ML_PROCESSES[@]}" -gt 0 ] ||
     { ml_say "$ML_TEMPLATE: no process to run (no Run line in its ProcessConfig = ANTLER block)"; exit 2; }
 }

@@ -96,5 +96,47 @@ jake_processes() {
 }
 check "the Jake mission runs six processes besides the launcher's own" 0 jake_processes "$1"
 
+# #include lines are spliced in, as nsplug and the programs read them: a relative path from the
+# including file's folder, `<FILE>` or FILE, nested; a cycle or a missing file is an error.
+mkdir -p "$scratch/plugs"
+cat > "$scratch/with_include.moos" <<'MOOS'
+ServerPort = $(PORT)
+#include plugs/antler.moos
+ProcessConfig = uFldHazardSensor
+{
+  random_seed = $(SEED)
+}
+MOOS
+cat > "$scratch/plugs/antler.moos" <<'MOOS'
+ProcessConfig = ANTLER
+{
+  Run = uFldHazardSensor @ NewConsole = false
+#include <vehicles.moos>
+}
+MOOS
+printf '  Run = pHazardMgr @ NewConsole = false ~ pHazardMgr_abe\n' > "$scratch/plugs/vehicles.moos"
+included_processes() {
+  [ "$(ml_antler_processes "$scratch/with_include.moos")" = "uFldHazardSensor uFldHazardSensor
+pHazardMgr pHazardMgr_abe" ]
+}
+check "Run lines in #included files, nested, relative to the including file" 0 included_processes
+plugged_include() {
+  ml_plug "$scratch/with_include.moos" "$scratch/targ.moos" PORT=9001 SEED=4 &&
+    grep -q '^  Run = pHazardMgr @ NewConsole = false ~ pHazardMgr_abe$' "$scratch/targ.moos" &&
+    grep -q '^ServerPort = 9001$' "$scratch/targ.moos" && ! grep -q '#include' "$scratch/targ.moos"
+}
+check "the targ file has the included text and the values" 0 plugged_include
+printf '#include ../with_cycle.moos\n' > "$scratch/plugs/back.moos"
+printf 'ServerPort = 1\n#include plugs/back.moos\n' > "$scratch/with_cycle.moos"
+cycle_named() { ml_expand_includes "$scratch/with_cycle.moos" 2>&1 >/dev/null | grep -q 'cycle'; }
+check "an #include cycle is an error naming it" 0 cycle_named
+check "an #include cycle fails" 1 ml_expand_includes "$scratch/with_cycle.moos"
+printf 'ServerPort = 1\n#include nowhere.moos\n' > "$scratch/missing.moos"
+missing_named() {
+  ml_expand_includes "$scratch/missing.moos" 2>&1 >/dev/null | grep -q "missing.moos:2: cannot read .*nowhere.moos"
+}
+check "a missing #included file names the including line" 0 missing_named
+check "a missing #included file fails" 1 ml_antler_processes "$scratch/missing.moos"
+
 [ "$failures" -eq 0 ] || { echo "$failures check(s) failed"; exit 1; }
 echo "all checks passed"
