@@ -241,6 +241,8 @@ class Engine {
               bool outcome) const;
 
   EngineConfig config_;
+  /// UHZ_OPTIONS_SUMMARY's text: the options are fixed at construction, so it is written once.
+  std::string options_summary_text_;
   HazardField field_;
   std::vector<std::string> setup_warnings_;
   std::vector<HazardFileStatus> hazard_files_;

@@ -57,6 +57,7 @@
 #include "hazard/messages/detection_report.hpp"
 #include "hazard/messages/hazard_report.hpp"
 #include "mission/belief.hpp"
+#include "mission/cell_index.hpp"
 #include "mission/messages/hazard_handover.hpp"
 #include "mission/messages/hazardset_report.hpp"
 #include "mission/messages/mission_params.hpp"
@@ -206,8 +207,6 @@ class HazardManager {
   double log_odds(const Record& r) const;
   Id find_or_add(std::string_view label, glm::dvec2 position_m);
   std::optional<Id> find(std::string_view label) const;
-  void index(Id id);
-  std::vector<Id> near(glm::dvec2 center_m, double radius_m) const;
   void add_track_sample(const TrackSample& sample);
   void update_passes(const TrackSample& sample);
   void resolve_passes(double now_s, Outputs& out);
@@ -228,11 +227,11 @@ class HazardManager {
   std::vector<TrackSample> track_;            ///< thinned own track (hindsight passes)
   std::optional<TrackSample> last_pose_;      ///< the latest pose, always
   std::vector<std::uint32_t> on_prefix_;      ///< sensor-on samples in track_[0, i)
-  std::unordered_map<std::int64_t, std::vector<std::uint32_t>> track_cells_;  ///< cell -> samples
+  CellIndex track_cells_;                     ///< track_ indices by cell
   double track_max_half_width_m_ = 0.0;
   std::vector<Record> records_;
   std::unordered_map<std::string, Id> by_label_;
-  std::unordered_map<std::int64_t, std::vector<Id>> grid_;  ///< cell key -> ids
+  CellIndex grid_;                            ///< record ids by cell
   std::vector<Id> inside_;      ///< ids whose `inside` is true
   std::vector<Id> unresolved_;  ///< ids with a pass that has ended but is not resolved
   Counters counters_;

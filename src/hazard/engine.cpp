@@ -8,6 +8,7 @@ namespace hazard {
 
 Engine::Engine(EngineSetup setup, SeedChoice seed)
     : config_(std::move(setup.config)),
+      options_summary_text_(format_options_summary(config_.options.summary())),
       field_(std::move(setup.field)),
       setup_warnings_(std::move(setup.config_warnings)),
       hazard_files_(std::move(setup.hazard_files)),

@@ -149,7 +149,7 @@ void Engine::post_options_summary_if_due(double now_s, Outputs& out) {
     return;
   }
   last_summary_s_ = now_s;
-  out.post("UHZ_OPTIONS_SUMMARY", format_options_summary(config_.options.summary()));
+  out.post("UHZ_OPTIONS_SUMMARY", options_summary_text_);
 }
 
 }  // namespace hazard

@@ -2,8 +2,8 @@
 // parameter table is in hazard_manager_params.cpp.
 //
 // Data structures: one Record per known object (ids are indices, names only at the edge); a
-// uniform hash grid of record ids (kCell_m cells) so a pose touches only the objects near its
-// swath; the list of objects currently inside the swath (their exits are checked every pose); the
+// uniform grid of record ids (kCell_m cells, cell_index.hpp) so a pose touches only the objects
+// near its swath; the list of objects currently inside the swath (their exits are checked every pose); the
 // list of ended passes awaiting a late detection; the vehicle's own track, thinned to one sample
 // per `track_sample_spacing_m` (plus every change of sensor state), for hindsight passes.
 // Rejected alternative: resolving a pass the moment it ends. Detections travel through the MOOSDB
@@ -15,7 +15,6 @@
 #include <cassert>
 #include <cmath>
 #include <cstdint>
-#include <functional>
 
 #include "hazard/messages/classify_request.hpp"
 #include "hazard/messages/config_request.hpp"
@@ -29,60 +28,50 @@ namespace mission {
 namespace {
 
 /// Grid cell of the manager's object index and track index (m). A pose looks at the cells of
-/// the square around its footprint's reach (about 25 m for W = 25): 10 m cells keep the square
-/// close to the footprint in dense fields (36 cell look-ups, about 2.5 times the square's area
-/// instead of 16 times with 50 m cells) and cost little in sparse ones.
+/// the axis-aligned box around its footprint (50 m by 5 m for W = 25 on a north-south or east-west
+/// lane, about 37 m square at 45 degrees): 10 m cells keep the box close to the footprint in dense
+/// fields and cost little in sparse ones (cell_index.hpp skips empty cells cheaply).
 constexpr double kCell_m = 10.0;
 
-/// Cell indices are clamped to 32 bits (positions within 2e10 m, far beyond the Earth, keep their
-/// own cells; a farther one, or NaN, shares the edge cell): the conversion to an integer stays
-/// defined whatever a detection report says, and a key holds both indices.
-constexpr double kMaxCellIndex = 2147483647.0;
-std::int64_t cell_of(double v) {
-  const double c = std::floor(v / kCell_m);
-  if (!(c > -kMaxCellIndex)) return -static_cast<std::int64_t>(kMaxCellIndex);
-  if (c > kMaxCellIndex) return static_cast<std::int64_t>(kMaxCellIndex);
-  return static_cast<std::int64_t>(c);
-}
-/// Bits shifted as unsigned: shifting a negative index is undefined behaviour.
-std::int64_t cell_key(std::int64_t cx, std::int64_t cy) {
-  return static_cast<std::int64_t>((static_cast<std::uint64_t>(cx) << 32) ^
-                                   (static_cast<std::uint64_t>(cy) & 0xffffffffULL));
-}
-
-// Calls f(cell key) for every cell of the square of half side `radius_m` around `center_m`.
-template <class F>
-void for_each_cell_around(glm::dvec2 center_m, double radius_m, F&& f) {
-  const std::int64_t cx0 = cell_of(center_m.x - radius_m), cx1 = cell_of(center_m.x + radius_m);
-  const std::int64_t cy0 = cell_of(center_m.y - radius_m), cy1 = cell_of(center_m.y + radius_m);
-  for (std::int64_t cx = cx0; cx <= cx1; ++cx)
-    for (std::int64_t cy = cy0; cy <= cy1; ++cy) f(cell_key(cx, cy));
-}
-
-// The sensor's footprint at one pose, and its core (W - margin to each side), built once per
-// pose: every object near the pose is tested against both. Length and margin are the
-// configuration's (sensor_swath_length, pass_margin).
+// The sensor's footprint at one pose, and its core (W - margin to each side). Length and margin
+// are the configuration's (sensor_swath_length, pass_margin). Most objects tested lie outside the
+// rectangle, so the reach (a hypot) and the core (a sine and cosine) are built on first use.
 class Footprint {
  public:
   Footprint(glm::dvec2 position_m, double heading_deg, double half_width_m,
             const ManagerConfig& config)
       : center_(position_m),
-        reach_m_(std::hypot(half_width_m, 0.5 * config.sensor_swath_length_m)) {
-    const double length_m = config.sensor_swath_length_m;
-    if (half_width_m > 0.0) full_.emplace(position_m, heading_deg, half_width_m, length_m);
-    if (half_width_m - config.pass_margin_m > 0.0)
-      core_.emplace(position_m, heading_deg, half_width_m - config.pass_margin_m, length_m);
+        heading_deg_(heading_deg),
+        half_width_m_(half_width_m),
+        core_half_width_m_(half_width_m - config.pass_margin_m),
+        length_m_(config.sensor_swath_length_m) {
+    if (half_width_m > 0.0) full_.emplace(position_m, heading_deg, half_width_m, length_m_);
   }
-  bool in_full(glm::dvec2 p) const { return full_ && near(p) && full_->contains(p); }
-  bool in_core(glm::dvec2 p) const { return core_ && near(p) && core_->contains(p); }
-  double reach_m() const { return reach_m_; }
+  bool in_full(glm::dvec2 p) const { return full_ && full_->contains(p) && near(p); }
+  bool in_core(glm::dvec2 p) const {
+    if (!(core_half_width_m_ > 0.0)) return false;
+    if (!core_) core_.emplace(center_, heading_deg_, core_half_width_m_, length_m_);
+    return core_->contains(p) && near(p);
+  }
+  /// The box holding every point in_full accepts; nullopt when it accepts none.
+  std::optional<hazard::Box> bounds() const {
+    if (!full_) return std::nullopt;
+    return full_->bounds();
+  }
 
  private:
-  bool near(glm::dvec2 p) const { return glm::length(p - center_) <= reach_m_ + 1e-9; }
+  bool near(glm::dvec2 p) const {
+    if (!reach_m_) reach_m_ = std::hypot(half_width_m_, 0.5 * length_m_);
+    return glm::length(p - center_) <= *reach_m_ + 1e-9;
+  }
   glm::dvec2 center_;
-  double reach_m_;
+  double heading_deg_;
+  double half_width_m_;
+  double core_half_width_m_;
+  double length_m_;
   std::optional<hazard::Swath> full_;
-  std::optional<hazard::Swath> core_;
+  mutable std::optional<hazard::Swath> core_;
+  mutable std::optional<double> reach_m_;
 };
 
 std::string fmt_setting(double width, double pd, double pfa, double pclass) {
@@ -94,7 +83,8 @@ std::string fmt_setting(double width, double pd, double pfa, double pclass) {
 
 // ---- the manager ---------------------------------------------------------------------------
 
-HazardManager::HazardManager(ManagerConfig config) : config_(std::move(config)) {
+HazardManager::HazardManager(ManagerConfig config)
+    : config_(std::move(config)), track_cells_(kCell_m), grid_(kCell_m) {
   assert(validate(config_));
 }
 
@@ -118,22 +108,8 @@ HazardManager::Id HazardManager::find_or_add(std::string_view label, glm::dvec2 
   r.position_m = position_m;
   records_.push_back(std::move(r));
   by_label_.emplace(std::string(label), id);
-  index(id);
+  grid_.add(id, position_m);
   return id;
-}
-
-void HazardManager::index(Id id) {
-  const glm::dvec2 p = records_[id].position_m;
-  grid_[cell_key(cell_of(p.x), cell_of(p.y))].push_back(id);
-}
-
-std::vector<HazardManager::Id> HazardManager::near(glm::dvec2 center_m, double radius_m) const {
-  std::vector<Id> out;
-  for_each_cell_around(center_m, radius_m, [&](std::int64_t key) {
-    const auto it = grid_.find(key);
-    if (it != grid_.end()) out.insert(out.end(), it->second.begin(), it->second.end());
-  });
-  return out;
 }
 
 Outputs HazardManager::tick(double now_s) {
@@ -198,8 +174,7 @@ void HazardManager::add_track_sample(const TrackSample& sample) {
   track_.push_back(sample);
   if (on_prefix_.empty()) on_prefix_.push_back(0);
   on_prefix_.push_back(on_prefix_.back() + (sample.sensor_on ? 1u : 0u));
-  const std::int64_t key = cell_key(cell_of(sample.position_m.x), cell_of(sample.position_m.y));
-  track_cells_[key].push_back(index);
+  track_cells_.add(index, sample.position_m);
   track_max_half_width_m_ = std::max(track_max_half_width_m_, sample.half_width_m);
 }
 
@@ -220,10 +195,12 @@ void HazardManager::update_passes(const TrackSample& s) {
     inside_[i] = inside_.back();
     inside_.pop_back();
   }
-  // Entries.
-  for (Id id : near(s.position_m, foot.reach_m())) {
+  // Entries, in the index's order (cell column, row, then id).
+  const std::optional<hazard::Box> box = foot.bounds();
+  if (!box) return;  // no width acked yet: nothing is inside
+  grid_.for_each_in_box({box->min_x, box->min_y}, {box->max_x, box->max_y}, [&](Id id) {
     Record& r = records_[id];
-    if (r.inside || !foot.in_full(r.position_m)) continue;
+    if (r.inside || !foot.in_full(r.position_m)) return;
     if (r.pass) {
       // A new pass began before the last one's latency ran out: decide the last one now.
       Outputs ignored;
@@ -238,7 +215,7 @@ void HazardManager::update_passes(const TrackSample& s) {
       r.unmatched_detection_s.reset();
     }
     inside_.push_back(id);
-  }
+  });
 }
 
 void HazardManager::resolve_passes(double now_s, Outputs& out) {
@@ -281,11 +258,9 @@ std::vector<std::pair<double, double>> HazardManager::hindsight_misses(const Rec
       track_.begin());
   const double reach_m = std::hypot(track_max_half_width_m_, 0.5 * config_.sensor_swath_length_m);
   std::vector<std::uint32_t> nearby;
-  for_each_cell_around(r.position_m, reach_m, [&](std::int64_t key) {
-    const auto it = track_cells_.find(key);
-    if (it == track_cells_.end()) return;
-    for (std::uint32_t i : it->second)
-      if (i < end) nearby.push_back(i);
+  const glm::dvec2 corner{reach_m, reach_m};
+  track_cells_.for_each_in_box(r.position_m - corner, r.position_m + corner, [&](std::uint32_t i) {
+    if (i < end) nearby.push_back(i);
   });
   std::sort(nearby.begin(), nearby.end());
 

@@ -135,15 +135,33 @@ void HazardMgr::handle(const moos::Message& m, double time_s) {
     if (!report) return warn_parse(report.error);
     publish(manager_->on_classification(*report.value, time_s));
   } else if (m.key == mission::kMissionParamsVar) {
-    auto params = mission::parse_mission_params(text);
-    if (!params) return warn_parse(params.error);
-    publish(manager_->on_mission_params(*params.value));
+    on_mission_params(text);
   } else if (m.key == mail_variable(mission::kHazardHandoverVar)) {
     on_handover(text, time_s);
   } else if (m.key == mail_variable("HAZARDSET_REQUEST")) {
     if (!report_requested_s_) report_requested_s_ = time_s;
     report_event("HAZARDSET_REQUEST received");
   }
+}
+
+// uFldHazardMetric repeats UHZ_MISSION_PARAMS every few seconds, nearly always the same text.
+// Applying the text that was last applied, and produced no output, again changes nothing (only
+// this call sets the penalties, lane width and region), so the repeat is not parsed.
+void HazardMgr::on_mission_params(const std::string& text) {
+  if (applied_mission_params_ && *applied_mission_params_ == text) return;
+  applied_mission_params_.reset();
+  ++mission_params_parsed_;
+  auto params = mission::parse_mission_params(text);
+  if (!params) {
+    report_run_warning(std::string(mission::kMissionParamsVar) + " ignored: " + params.error);
+    return;
+  }
+  const mission::Outputs out = manager_->on_mission_params(*params.value);
+  if (out.postings.empty() && out.events.empty() && out.run_warnings.empty() &&
+      out.config_warnings.empty()) {
+    applied_mission_params_ = text;
+  }
+  publish(out);
 }
 
 void HazardMgr::on_node_report(const std::string& text, double time_s) {

@@ -80,6 +80,8 @@ class HazardMgr final : public mission_app::MissionApp {
   /// Classification requests not answered yet.
   long outstanding_answers() const;
   long reports_posted() const { return reports_posted_; }
+  /// UHZ_MISSION_PARAMS texts parsed (a repeat of the text last applied is not parsed again).
+  long mission_params_parsed() const { return mission_params_parsed_; }
 
   /// The variable this app reads for `base` (UHZ_DETECTION_REPORT -> UHZ_DETECTION_REPORT_ARCHIE
   /// with suffixed mail).
@@ -97,6 +99,7 @@ class HazardMgr final : public mission_app::MissionApp {
   void handle(const moos::Message& m, double time_s);
   void on_node_report(const std::string& text, double time_s);
   void on_handover(const std::string& text, double time_s);
+  void on_mission_params(const std::string& text);
   void post_reacquire_route();
   bool report_ready(double now_s) const;
   void post_report(double now_s);
@@ -111,6 +114,9 @@ class HazardMgr final : public mission_app::MissionApp {
   std::optional<double> report_requested_s_;
   long reports_posted_ = 0;
   long routes_posted_ = 0;
+  long mission_params_parsed_ = 0;
+  /// The UHZ_MISSION_PARAMS text last applied with nothing to report; nullopt after any other.
+  std::optional<std::string> applied_mission_params_;
   double last_mail_time_s_ = 0.0;
   double last_pose_time_s_ = 0.0;
 };

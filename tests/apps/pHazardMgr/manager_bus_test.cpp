@@ -180,6 +180,35 @@ TEST_F(MgrOnBus, MissionParamsSetThePenalties) {
   EXPECT_DOUBLE_EQ(app->manager()->penalties().false_alarm, 3.0);
 }
 
+TEST_F(MgrOnBus, ARepeatOfTheAppliedMissionParamsIsNotParsedAgain) {
+  ASSERT_TRUE(start(kArchie));
+  const char* a = "penalty_missed_hazard=7,penalty_false_alarm=3,max_time=0";
+  const char* b = "penalty_missed_hazard=9,penalty_false_alarm=2,max_time=0";
+  for (int i = 0; i < 5; ++i) {
+    bus.post("UHZ_MISSION_PARAMS", a);
+    app->run_for(1.0);
+  }
+  EXPECT_EQ(app->mission_params_parsed(), 1);
+  bus.post("UHZ_MISSION_PARAMS", b);
+  app->run_for(1.0);
+  EXPECT_DOUBLE_EQ(app->manager()->penalties().missed_hazard, 9.0);
+  bus.post("UHZ_MISSION_PARAMS", a);  // back to a: applied again
+  app->run_for(1.0);
+  EXPECT_EQ(app->mission_params_parsed(), 3);
+  EXPECT_DOUBLE_EQ(app->manager()->penalties().missed_hazard, 7.0);
+  EXPECT_DOUBLE_EQ(app->manager()->penalties().false_alarm, 3.0);
+}
+
+TEST_F(MgrOnBus, RejectedMissionParamsAreParsedAndWarnedEveryTime) {
+  ASSERT_TRUE(start(kArchie));
+  for (int i = 0; i < 3; ++i) {
+    bus.post("UHZ_MISSION_PARAMS", "penalty_missed_hazard=-1,penalty_false_alarm=3");
+    app->run_for(1.0);
+  }
+  EXPECT_EQ(app->mission_params_parsed(), 3);
+  EXPECT_TRUE(any_contains(run_warning_texts(app->appcast()), "negative penalty"));
+}
+
 // ---- the report --------------------------------------------------------------------------
 
 TEST_F(MgrOnBus, ReportWaitsForTheDetectionLatencyAndTheOutstandingAnswers) {
