@@ -119,7 +119,11 @@ class Comms {
   /// without waiting for another fetch, and returned by the next one. TcpClient after
   /// expect_fetch_within(): fetch() reads the socket itself; when its comms thread is using the
   /// socket at that moment, or more than one read's worth waits, that thread reads the rest.
-  virtual std::vector<Message> fetch() = 0;
+  std::vector<Message> fetch();
+  /// fetch() into `mail`, replacing its contents. The client takes the messages `mail` held back
+  /// for their strings' storage (MessagePool) and `mail` keeps its capacity: a caller that passes
+  /// the same vector every cycle (MoosApp) makes a steady-state fetch allocate nothing.
+  virtual void fetch_into(std::vector<Message>& mail) = 0;
   /// Postings between hold_sends() and release_sends() may leave together: an implementation
   /// may wait for the release before it starts sending (TcpClient: one packet per app cycle,
   /// not one for the first posting and one for the rest). Postings are never lost or reordered.

@@ -184,6 +184,12 @@ bool Comms::post(Message notify) {
   return post_and_record(std::move(notify));
 }
 
+std::vector<Message> Comms::fetch() {
+  std::vector<Message> mail;
+  fetch_into(mail);
+  return mail;
+}
+
 void Comms::set_on_connect(std::function<void()> callback) {
   std::lock_guard<std::mutex> lock(book_mutex_);
   on_connect_ = std::move(callback);

@@ -143,7 +143,7 @@ void Database::fan_out(Variable& var, Message&& msg, double now) {
                      now - *sub.last_delivery_moos_s >= sub.interval_s;
     if (!due) continue;
     sub.last_delivery_moos_s = now;
-    if (have_previous) queue_mail(previous, Message(msg));
+    if (have_previous) queue_mail_copy(previous, msg);
     previous = subscriber;
     have_previous = true;
   }
