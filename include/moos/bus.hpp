@@ -98,7 +98,7 @@ class BusClient final : public Comms {
   bool simulate_reconnect();
 
  protected:
-  bool transmit(Message msg) override;
+  bool transmit(Message&& msg) override;
 
  private:
   friend class InProcessBus;

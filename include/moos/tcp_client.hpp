@@ -151,7 +151,7 @@ class TcpClient final : public Comms {
   static constexpr double kAppTimingSlack_real_s = 0.2;
 
  protected:
-  bool transmit(Message msg) override;
+  bool transmit(Message&& msg) override;
 
  private:
   /// Bytes read per recv call, and recv calls per read (1 MiB) before sending gets a turn.

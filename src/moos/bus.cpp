@@ -266,7 +266,7 @@ void BusClient::fetch_into(std::vector<Message>& mail) {
   state_->has_mail = false;
 }
 
-bool BusClient::transmit(Message msg) {
+bool BusClient::transmit(Message&& msg) {
   if (!state_) return false;
   std::vector<std::function<void()>> callbacks;
   std::string refusal;

@@ -168,15 +168,18 @@ std::size_t Database::value_bytes(const Value& value) {
 }
 
 std::string Database::store_refusal(const Message& msg, bool with_value) const {
+  // The most the write could add fits: no need to look the variable up (the usual case).
+  const std::size_t name_bytes = kVariableOverheadBytes + msg.key.size();
+  const std::size_t most_after =
+      name_bytes + (with_value ? msg.sval.size() + msg.source.size() + msg.source_aux.size() +
+                                     msg.community.size()
+                               : 0);
+  if (stored_bytes_ + most_after <= config_.max_stored_bytes) return {};
   // What the variable holds now, and would hold after the write.
   const auto it = var_index_.find(msg.key);
   const Variable* var = it == var_index_.end() ? nullptr : &vars_[it->second];
-  const std::size_t name_bytes = kVariableOverheadBytes + msg.key.size();
   const std::size_t before = var ? name_bytes + (var->value ? value_bytes(*var->value) : 0) : 0;
-  std::size_t after = var ? before : name_bytes;
-  if (with_value)
-    after = name_bytes + msg.sval.size() + msg.source.size() + msg.source_aux.size() +
-            msg.community.size();
+  const std::size_t after = with_value ? most_after : var ? before : name_bytes;
   if (after <= before || stored_bytes_ - before + after <= config_.max_stored_bytes) return {};
   return "the store would hold more than its " + std::to_string(config_.max_stored_bytes) +
          " bytes (" + std::to_string(stored_bytes_) + " held)";

@@ -221,7 +221,7 @@ class PromiseRecorder final : public Comms {
   std::vector<double> promises;
 
  protected:
-  bool transmit(Message) override { return true; }
+  bool transmit(Message&&) override { return true; }
 
  private:
   mutable ManualClock clock_{kT0};

@@ -34,7 +34,7 @@ class HandBackRecorder final : public Comms {
   std::vector<std::vector<std::string>> handed_back;
 
  protected:
-  bool transmit(Message) override { return true; }
+  bool transmit(Message&&) override { return true; }
 
  private:
   mutable ManualClock clock_{kT0};

@@ -53,7 +53,7 @@ class RecordingComms final : public Comms {
   std::vector<Message> sent;
 
  protected:
-  bool transmit(Message msg) override {
+  bool transmit(Message&& msg) override {
     if (!connected) return false;
     sent.push_back(std::move(msg));
     return true;
