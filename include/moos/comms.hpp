@@ -34,8 +34,8 @@
 #include <mutex>
 #include <optional>
 #include <set>
-#include <unordered_set>
 #include <string>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -122,8 +122,8 @@ class Comms {
   /// socket at that moment, or more than one read's worth waits, that thread reads the rest.
   std::vector<Message> fetch();
   /// fetch() into `mail`, replacing its contents. The client takes the messages `mail` held back
-  /// for their strings' storage (MessagePool) and `mail` keeps its capacity: a caller that passes
-  /// the same vector every cycle (MoosApp) makes a steady-state fetch allocate nothing.
+  /// and writes later mail over their strings' storage (moos::Inbox): a caller that passes the
+  /// same vector every cycle (MoosApp) makes steady mail allocate no strings.
   virtual void fetch_into(std::vector<Message>& mail) = 0;
   /// Postings between hold_sends() and release_sends() may leave together: an implementation
   /// may wait for the release before it starts sending (TcpClient: one packet per app cycle,

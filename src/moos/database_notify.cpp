@@ -135,7 +135,8 @@ void Database::store(Variable& var, const Message& msg, double now) {
 void Database::fan_out(Variable& var, Message&& msg, double now) {
   // Steps 5-6: every subscriber whose interval expired, the publisher included; throttled
   // updates are dropped, not delayed. A subscription that never delivered is due. Each due
-  // subscriber but the last gets a copy; the last one gets the message itself.
+  // subscriber but the last gets a copy; the last one gets the message itself (a mail sink
+  // copies each into its own storage).
   ClientId previous = 0;
   bool have_previous = false;
   for (auto& [subscriber, sub] : var.subscribers) {
