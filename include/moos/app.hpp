@@ -288,6 +288,9 @@ class MoosApp {
   bool new_run_warning_ = false;
   bool new_config_warning_ = false;
   std::map<std::string, Request> requests_;  // by requester key
+  /// The cycle's mail, kept between cycles: the next fetch hands its messages back to the comms
+  /// for their storage (Comms::fetch_into).
+  std::vector<Message> mail_;
 };
 
 /// libMOOS's pause after each packet sent, in ms per unit of time warp

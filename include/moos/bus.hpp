@@ -87,7 +87,7 @@ class BusClient final : public Comms {
   Clock& clock() const override;
   double time_warp() const override;
   double skew_s() const override { return 0.0; }
-  std::vector<Message> fetch() override;
+  void fetch_into(std::vector<Message>& mail) override;
 
   /// As if the TCP connection dropped: the bus forgets this client's subscriptions, filters and
   /// undelivered mail; postings wait in the bounded outbox until simulate_reconnect() (comms.hpp).
@@ -98,7 +98,7 @@ class BusClient final : public Comms {
   bool simulate_reconnect();
 
  protected:
-  bool transmit(Message msg) override;
+  bool transmit(Message&& msg) override;
 
  private:
   friend class InProcessBus;

@@ -35,6 +35,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -119,7 +120,11 @@ class Comms {
   /// without waiting for another fetch, and returned by the next one. TcpClient after
   /// expect_fetch_within(): fetch() reads the socket itself; when its comms thread is using the
   /// socket at that moment, or more than one read's worth waits, that thread reads the rest.
-  virtual std::vector<Message> fetch() = 0;
+  std::vector<Message> fetch();
+  /// fetch() into `mail`, replacing its contents. The client takes the messages `mail` held back
+  /// and writes later mail over their strings' storage (moos::Inbox): a caller that passes the
+  /// same vector every cycle (MoosApp) makes steady mail allocate no strings.
+  virtual void fetch_into(std::vector<Message>& mail) = 0;
   /// Postings between hold_sends() and release_sends() may leave together: an implementation
   /// may wait for the release before it starts sending (TcpClient: one packet per app cycle,
   /// not one for the first posting and one for the rest). Postings are never lost or reordered.
@@ -157,8 +162,9 @@ class Comms {
   /// Hands one message to the server: now when connected; a NOTIFY also while disconnected,
   /// queued for the next connection (the delivery contract above). False (nothing sent) when it
   /// was not taken: a registration while disconnected, a closed client, a full outbox (then
-  /// count_posting_dropped() was called). Called with no lock of this base class held.
-  virtual bool transmit(Message msg) = 0;
+  /// count_posting_dropped() was called). Called with no lock of this base class held. `msg` may
+  /// be moved from, taken or not.
+  virtual bool transmit(Message&& msg) = 0;
   /// REGISTER and WILDCARD_REGISTER messages for every remembered subscription, in the order the
   /// subscriptions were first made (the reconnect replay).
   std::vector<Message> replay_messages() const;
@@ -173,7 +179,7 @@ class Comms {
   Message control_message(char type, char data_type, const std::string& key) const;
   Message register_message(const std::string& var, double interval_s) const;
   Message wildcard_message(char type, const WildcardSpec& spec) const;
-  bool post_and_record(Message msg);
+  bool post_and_record(Message&& msg);
 
   const std::string name_;
   mutable std::mutex book_mutex_;
@@ -184,7 +190,8 @@ class Comms {
     WildcardSpec entry;
   };
   std::vector<Subscription> subscriptions_;
-  std::set<std::string> published_;
+  /// Unordered: looked up at every posting; published_names() sorts a copy.
+  std::unordered_set<std::string> published_;
   std::function<void()> on_connect_;
   std::function<void()> on_mail_;
   std::atomic<bool> has_on_mail_{false};

@@ -93,9 +93,10 @@ struct DatabaseConfig {
   /// asynchronous client (a NOTIFY: live update, snapshot or answer) is handed to it as it is
   /// queued, in the order it would have in the client's packets, instead of leaving in a packet
   /// through take_output(); protocol replies (WELCOME, POISON, TIMING echoes) still leave there.
-  /// The max_pending_bytes bound applies per call as without it. The sink must not call back
-  /// into the Database.
-  std::function<void(ClientId, Message&&)> mail_sink;
+  /// The max_pending_bytes bound applies per call as without it. The sink copies what it keeps:
+  /// the message is shared by all of a posting's readers. It must not call back into the
+  /// Database.
+  std::function<void(ClientId, const Message&)> mail_sink;
 };
 
 /// One packet for one client.
@@ -262,6 +263,11 @@ class Database {
   // Mail and replies (database_mail.cpp).
   Message snapshot(const Variable& var) const;
   void queue_mail(ClientId id, Message&& msg);
+  /// queue_mail() of a copy of `msg` (a fan-out's reader but the last); a mail sink copies it.
+  void queue_mail_copy(ClientId id, const Message& msg);
+  /// The mail bound's check and count for `msg` to `id`: the client, or null when it takes no
+  /// more mail.
+  Client* admit_mail(ClientId id, const Message& msg);
   void flush_async_mail();
   /// Moves the client's pending mail behind `reply`: all of it for an asynchronous client,
   /// what fits in config_.max_reply_bytes for a synchronous one.

@@ -71,6 +71,8 @@ struct Message {
   /// Bytes a message occupies with every string empty.
   static constexpr std::size_t kFixedEncodedSize = 54;
 
+  /// Member by member: the strings trade their storage, nothing is allocated or copied.
+  friend void swap(Message& a, Message& b) noexcept;
   friend bool operator==(const Message& a, const Message& b);
   friend bool operator!=(const Message& a, const Message& b) { return !(a == b); }
 };

@@ -53,6 +53,7 @@
 
 #include "moos/codec.hpp"
 #include "moos/comms.hpp"
+#include "moos/inbox.hpp"
 
 namespace moos {
 
@@ -135,7 +136,7 @@ class TcpClient final : public Comms {
   Clock& clock() const override { return clock_; }
   double time_warp() const override { return options_.time_warp; }
   double skew_s() const override { return skew_s_.load(); }
-  std::vector<Message> fetch() override;
+  void fetch_into(std::vector<Message>& mail) override;
   void hold_sends() override;
   void release_sends() override;
   void expect_fetch_within(double real_s) override;
@@ -150,7 +151,7 @@ class TcpClient final : public Comms {
   static constexpr double kAppTimingSlack_real_s = 0.2;
 
  protected:
-  bool transmit(Message msg) override;
+  bool transmit(Message&& msg) override;
 
  private:
   /// Bytes read per recv call, and recv calls per read (1 MiB) before sending gets a turn.
@@ -200,7 +201,8 @@ class TcpClient final : public Comms {
   /// bulk drop keeps the cost of a flood linear.
   void enforce_inbox_bounds();
   bool process_buffered();
-  /// Moves a decoded packet's mail into the inbox (`messages` is left for the next decode).
+  /// Moves a decoded packet's mail into the inbox; `messages` gets the inbox's kept messages in
+  /// its place, for the next decode to overwrite.
   void handle_packet(std::vector<Message>& messages);
   void refine_skew(const Message& timing_echo);
   Message timing_message() const;
@@ -260,7 +262,7 @@ class TcpClient final : public Comms {
   std::vector<Message> outbox_;
   OutboxBound outbox_bound_;
   bool holding_sends_ = false;  ///< hold_sends(): the outbox waits for release_sends()
-  std::vector<Message> inbox_;
+  Inbox inbox_;
   std::size_t inbox_bytes_ = 0;  ///< approximate, see inbox_cost()
   std::int32_t next_id_ = 0;
   std::uint64_t connections_ = 0;

@@ -334,16 +334,16 @@ void MoosApp::cycle() {
     if (comms_->is_connected()) on_connect_to_server();
   }
 
-  std::vector<Message> mail = comms_->fetch();
+  comms_->fetch_into(mail_);
   report_dropped_mail();
   report_dropped_postings();
-  if (!mail.empty()) {
+  if (!mail_.empty()) {
     const auto by_time = [](const Message& a, const Message& b) { return a.time < b.time; };
     // Mail mostly arrives in time order: checking is cheaper than a merge sort's buffer.
-    if (settings_.sort_mail_by_time && !std::is_sorted(mail.begin(), mail.end(), by_time))
-      std::stable_sort(mail.begin(), mail.end(), by_time);
-    handle_framework_mail(mail);
-    if (!mail.empty()) on_new_mail(mail);
+    if (settings_.sort_mail_by_time && !std::is_sorted(mail_.begin(), mail_.end(), by_time))
+      std::stable_sort(mail_.begin(), mail_.end(), by_time);
+    handle_framework_mail(mail_);
+    if (!mail_.empty()) on_new_mail(mail_);
   }
 
   if (!comms_->is_connected()) return;  // libMOOS iterates only while connected (7.1)

@@ -17,6 +17,7 @@
 #include <mutex>
 
 #include "base/text.hpp"
+#include "moos/inbox.hpp"
 
 namespace moos {
 
@@ -30,7 +31,7 @@ struct BusClientState {
   std::atomic<bool> connected{true};
   std::atomic<std::uint64_t> connections{1};
   std::atomic<bool> has_mail{false};  // the inbox is not empty
-  std::vector<Message> inbox;
+  Inbox inbox;  // its mail is copied into the storage of the mail the app read before
   std::vector<Message> outbox;  // postings made while disconnected (comms.hpp)
   OutboxBound outbox_bound;
 };
@@ -49,7 +50,7 @@ struct BusCore {
     config.community = options.community;
     config.db_variables = false;  // no refresh timer on the bus (see bus.hpp)
     // Mail goes straight into the inboxes: no packet per message to build and route.
-    config.mail_sink = [this](ClientId to, Message&& m) { take_mail(to, std::move(m)); };
+    config.mail_sink = [this](ClientId to, const Message& m) { take_mail(to, m); };
     return config;
   }
 
@@ -137,7 +138,7 @@ struct BusCore {
       const auto to = states_by_id.find(packet.to);
       if (to == states_by_id.end()) continue;  // a refused connection's POISON
       for (auto& m : packet.messages)
-        if (m.type == msg_type::kNotify) take_mail(*to->second, std::move(m));
+        if (m.type == msg_type::kNotify) take_mail(*to->second, m);
     }
     output.clear();
     // The server would close these connections; so does the bus.
@@ -149,20 +150,16 @@ struct BusCore {
     }
   }
 
-  void take_mail(ClientId to, Message&& m) {
+  void take_mail(ClientId to, const Message& m) {
     const auto state = states_by_id.find(to);
-    if (state != states_by_id.end()) take_mail(*state->second, std::move(m));
+    if (state != states_by_id.end()) take_mail(*state->second, m);
   }
 
-  void take_mail(ClientState& state, Message&& m) {
-    // An inbox emptied by fetch() starts with room for a cycle's usual mail.
-    if (state.inbox.capacity() == 0) state.inbox.reserve(kInboxStartCapacity);
-    state.inbox.push_back(std::move(m));
+  void take_mail(ClientState& state, const Message& m) {
+    state.inbox.push_copy(m);
     state.has_mail = true;
     if (std::find(woken.begin(), woken.end(), &state) == woken.end()) woken.push_back(&state);
   }
-
-  static constexpr std::size_t kInboxStartCapacity = 8;
 };
 
 // ---- InProcessBus ---------------------------------------------------------------------------
@@ -257,17 +254,19 @@ std::string BusClient::community() const { return core_->options.community; }
 Clock& BusClient::clock() const { return core_->clock; }
 double BusClient::time_warp() const { return core_->options.time_warp; }
 
-std::vector<Message> BusClient::fetch() {
+void BusClient::fetch_into(std::vector<Message>& mail) {
   // Mail that reached the inbox before this call set has_mail before it (under the lock).
-  if (!state_ || !state_->has_mail) return {};
+  if (!state_) {
+    mail.clear();
+    return;
+  }
+  if (!state_->has_mail && mail.empty()) return;
   std::lock_guard<std::mutex> lock(core_->mutex);
-  std::vector<Message> mail;
-  mail.swap(state_->inbox);
+  state_->inbox.hand_over(mail);
   state_->has_mail = false;
-  return mail;
 }
 
-bool BusClient::transmit(Message msg) {
+bool BusClient::transmit(Message&& msg) {
   if (!state_) return false;
   std::vector<std::function<void()>> callbacks;
   std::string refusal;

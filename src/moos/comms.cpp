@@ -134,7 +134,7 @@ std::string Comms::last_post_error() const {
   return last_post_error_;
 }
 
-bool Comms::post_and_record(Message msg) {
+bool Comms::post_and_record(Message&& msg) {
   if (msg.key.empty()) return false;
   if (const std::size_t size = msg.encoded_size(); size > kMaxMessageBytes) {
     count_posting_dropped("NOTIFY " + base::excerpt(msg.key) + " refused: its " +
@@ -182,6 +182,12 @@ bool Comms::post(Message notify) {
   notify.source = name_;
   if (notify.time == kUnsetDouble) notify.time = moos_time();
   return post_and_record(std::move(notify));
+}
+
+std::vector<Message> Comms::fetch() {
+  std::vector<Message> mail;
+  fetch_into(mail);
+  return mail;
 }
 
 void Comms::set_on_connect(std::function<void()> callback) {
@@ -240,7 +246,7 @@ std::set<std::string> Comms::registered_names() const {
 
 std::set<std::string> Comms::published_names() const {
   std::lock_guard<std::mutex> lock(book_mutex_);
-  return published_;
+  return std::set<std::string>(published_.begin(), published_.end());
 }
 
 }  // namespace moos

@@ -149,8 +149,9 @@ void Database::process_messages(ClientId id, Message* first, Message* last, doub
   }
   for (; first != last; ++first) handle_message(id, std::move(*first), now_moos_s);
 
-  // Step 6: the reply. Sync: NULL first, always. Async: echo first, only if non-empty.
-  Client& client = clients_.at(id);
+  // Step 6: the reply. Sync: NULL first, always. Async: echo first, only if non-empty. Handling
+  // erases no client (drops are requests), so `found` is still valid.
+  Client& client = found->second;
   if (client.async && !echo) {
     if (!client.pending.empty()) send_packet(id, std::move(client.pending));
     client.pending.clear();

@@ -31,26 +31,42 @@ Message Database::snapshot(const Variable& var) const {
   return m;
 }
 
-void Database::queue_mail(ClientId id, Message&& msg) {
+Database::Client* Database::admit_mail(ClientId id, const Message& msg) {
   Client& client = clients_.at(id);
-  if (client.overflowed) return;
+  if (client.overflowed) return nullptr;
   const std::size_t size = msg.encoded_size();
   if (client.pending_bytes + size > config_.max_pending_bytes) {
     client.overflowed = true;
     drops_.push_back(DropRequest{
         id, "undelivered mail would exceed " + std::to_string(config_.max_pending_bytes) +
                 " bytes (the client does not collect its mail)"});
-    return;
+    return nullptr;
   }
   client.pending_bytes += size;
-  if (client.async && config_.mail_sink) {
-    config_.mail_sink(id, std::move(msg));  // delivered now: no packet per message
-  } else {
-    client.pending.push_back(std::move(msg));
-  }
   if (client.async && !client.queued_for_flush) {
     client.queued_for_flush = true;
     async_with_mail_.push_back(id);
+  }
+  return &client;
+}
+
+void Database::queue_mail(ClientId id, Message&& msg) {
+  Client* client = admit_mail(id, msg);
+  if (!client) return;
+  if (client->async && config_.mail_sink) {
+    config_.mail_sink(id, msg);  // delivered now: no packet per message
+  } else {
+    client->pending.push_back(std::move(msg));
+  }
+}
+
+void Database::queue_mail_copy(ClientId id, const Message& msg) {
+  Client* client = admit_mail(id, msg);
+  if (!client) return;
+  if (client->async && config_.mail_sink) {
+    config_.mail_sink(id, msg);  // the sink's copy reuses its own storage
+  } else {
+    client->pending.push_back(msg);
   }
 }
 

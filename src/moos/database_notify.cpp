@@ -135,7 +135,8 @@ void Database::store(Variable& var, const Message& msg, double now) {
 void Database::fan_out(Variable& var, Message&& msg, double now) {
   // Steps 5-6: every subscriber whose interval expired, the publisher included; throttled
   // updates are dropped, not delayed. A subscription that never delivered is due. Each due
-  // subscriber but the last gets a copy; the last one gets the message itself.
+  // subscriber but the last gets a copy; the last one gets the message itself (a mail sink
+  // copies each into its own storage).
   ClientId previous = 0;
   bool have_previous = false;
   for (auto& [subscriber, sub] : var.subscribers) {
@@ -143,7 +144,7 @@ void Database::fan_out(Variable& var, Message&& msg, double now) {
                      now - *sub.last_delivery_moos_s >= sub.interval_s;
     if (!due) continue;
     sub.last_delivery_moos_s = now;
-    if (have_previous) queue_mail(previous, Message(msg));
+    if (have_previous) queue_mail_copy(previous, msg);
     previous = subscriber;
     have_previous = true;
   }
@@ -168,15 +169,18 @@ std::size_t Database::value_bytes(const Value& value) {
 }
 
 std::string Database::store_refusal(const Message& msg, bool with_value) const {
+  // The most the write could add fits: no need to look the variable up (the usual case).
+  const std::size_t name_bytes = kVariableOverheadBytes + msg.key.size();
+  const std::size_t most_after =
+      name_bytes + (with_value ? msg.sval.size() + msg.source.size() + msg.source_aux.size() +
+                                     msg.community.size()
+                               : 0);
+  if (stored_bytes_ + most_after <= config_.max_stored_bytes) return {};
   // What the variable holds now, and would hold after the write.
   const auto it = var_index_.find(msg.key);
   const Variable* var = it == var_index_.end() ? nullptr : &vars_[it->second];
-  const std::size_t name_bytes = kVariableOverheadBytes + msg.key.size();
   const std::size_t before = var ? name_bytes + (var->value ? value_bytes(*var->value) : 0) : 0;
-  std::size_t after = var ? before : name_bytes;
-  if (with_value)
-    after = name_bytes + msg.sval.size() + msg.source.size() + msg.source_aux.size() +
-            msg.community.size();
+  const std::size_t after = with_value ? most_after : var ? before : name_bytes;
   if (after <= before || stored_bytes_ - before + after <= config_.max_stored_bytes) return {};
   return "the store would hold more than its " + std::to_string(config_.max_stored_bytes) +
          " bytes (" + std::to_string(stored_bytes_) + " held)";

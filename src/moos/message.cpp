@@ -17,6 +17,21 @@ bool operator==(const Message& a, const Message& b) {
          a.sval == b.sval;
 }
 
+void swap(Message& a, Message& b) noexcept {
+  using std::swap;
+  swap(a.id, b.id);
+  swap(a.type, b.type);
+  swap(a.data_type, b.data_type);
+  a.source.swap(b.source);
+  a.source_aux.swap(b.source_aux);
+  a.community.swap(b.community);
+  a.key.swap(b.key);
+  swap(a.time, b.time);
+  swap(a.dval, b.dval);
+  swap(a.dval2, b.dval2);
+  a.sval.swap(b.sval);
+}
+
 Message make_double_notify(std::string key, double value, std::string source, double time) {
   Message m;
   m.type = msg_type::kNotify;

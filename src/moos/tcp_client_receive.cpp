@@ -27,14 +27,11 @@ constexpr double kSkewMemory = 0.9;
 
 }  // namespace
 
-std::vector<Message> TcpClient::fetch() {
+void TcpClient::fetch_into(std::vector<Message>& mail) {
   read_for_app();
   std::lock_guard<std::mutex> lock(mutex_);
-  std::vector<Message> mail;
-  mail.swap(inbox_);
+  inbox_.hand_over(mail);
   inbox_bytes_ = 0;
-  inbox_.reserve(mail.size());  // the next cycle's mail, in one allocation, not a growth series
-  return mail;
 }
 
 void TcpClient::read_for_app() {
@@ -129,19 +126,12 @@ void TcpClient::handle_packet(std::vector<Message>& messages) {
     return m.type == msg_type::kNull || m.type == msg_type::kTiming;
   };
   std::lock_guard<std::mutex> lock(mutex_);
-  // The usual packet, all mail to an inbox the app has just emptied: the vectors trade places.
-  if (inbox_.empty() && begin == messages.begin() &&
-      std::none_of(messages.begin(), messages.end(), not_mail)) {
-    inbox_.swap(messages);
-    for (const Message& m : inbox_) inbox_bytes_ += inbox_cost(m);
-    new_mail_ = true;
-    enforce_inbox_bounds();
-    return;
-  }
   for (auto it = begin; it != messages.end(); ++it) {
     if (not_mail(*it)) continue;
     inbox_bytes_ += inbox_cost(*it);
-    inbox_.push_back(std::move(*it));
+    // The next packet is decoded into the storage of the kept message traded for this one:
+    // steady mail allocates no strings.
+    inbox_.push_trade(*it);
     new_mail_ = true;
   }
   enforce_inbox_bounds();
@@ -158,7 +148,7 @@ void TcpClient::enforce_inbox_bounds() {
     inbox_bytes_ -= inbox_cost(inbox_[drop]);
     ++drop;
   }
-  inbox_.erase(inbox_.begin(), inbox_.begin() + static_cast<std::ptrdiff_t>(drop));
+  inbox_.drop_oldest(drop);
   count_mail_dropped(drop);
 }
 

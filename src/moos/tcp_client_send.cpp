@@ -16,7 +16,7 @@ namespace {
 constexpr double kMsPerSecond = 1000.0;
 }  // namespace
 
-bool TcpClient::transmit(Message msg) {
+bool TcpClient::transmit(Message&& msg) {
   bool first_of_batch = false;
   std::string refusal;
   {

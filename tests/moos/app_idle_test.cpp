@@ -215,13 +215,13 @@ class PromiseRecorder final : public Comms {
   Clock& clock() const override { return clock_; }
   double time_warp() const override { return kWarp; }
   double skew_s() const override { return 0.0; }
-  std::vector<Message> fetch() override { return {}; }
+  void fetch_into(std::vector<Message>& mail) override { mail.clear(); }
   void expect_fetch_within(double real_s) override { promises.push_back(real_s); }
 
   std::vector<double> promises;
 
  protected:
-  bool transmit(Message) override { return true; }
+  bool transmit(Message&&) override { return true; }
 
  private:
   mutable ManualClock clock_{kT0};

@@ -56,6 +56,34 @@ TEST_F(BusTest, LiveNotifyReachesEverySubscriberIncludingThePublisher_5_3) {
   EXPECT_TRUE(a->fetch().empty());  // fetch empties the inbox
 }
 
+TEST_F(BusTest, FetchIntoCopiesNewMailIntoTheStorageOfTheMailReadBefore) {
+  b->register_variable("REPORT");
+  // Values beyond the small-string buffer: each owns storage.
+  const std::string first(200, 'a');
+  const std::string second(200, 'b');
+  const std::string third(150, 'c');
+  std::vector<Message> mail;
+  a->notify("REPORT", first);
+  b->fetch_into(mail);
+  ASSERT_EQ(mail.size(), 1u);
+  const char* storage = mail[0].sval.data();
+  a->notify("REPORT", second);
+  b->fetch_into(mail);  // hands the first back
+  ASSERT_EQ(mail.size(), 1u);
+  EXPECT_EQ(mail[0].sval, second);
+  // Had the first been freed, this would take its storage.
+  const std::string blocker(200, 'x');
+  a->notify("REPORT", third);
+  b->fetch_into(mail);
+  ASSERT_EQ(mail.size(), 1u);
+  EXPECT_EQ(mail[0].sval, third);
+  EXPECT_EQ(mail[0].source, "pA");
+  EXPECT_EQ(mail[0].sval.data(), storage);  // written over, not allocated
+  EXPECT_NE(blocker.data(), storage);
+  b->fetch_into(mail);
+  EXPECT_TRUE(mail.empty());
+}
+
 TEST_F(BusTest, MailKeepsPostingOrderAcrossVariables) {
   b->register_variable("X");
   b->register_variable("Y");

@@ -46,14 +46,14 @@ class RecordingComms final : public Comms {
   Clock& clock() const override { return clock_; }
   double time_warp() const override { return 1.0; }
   double skew_s() const override { return 0.0; }
-  std::vector<Message> fetch() override { return {}; }
+  void fetch_into(std::vector<Message>& mail) override { mail.clear(); }
   using Comms::replay_messages;
 
   bool connected = true;
   std::vector<Message> sent;
 
  protected:
-  bool transmit(Message msg) override {
+  bool transmit(Message&& msg) override {
     if (!connected) return false;
     sent.push_back(std::move(msg));
     return true;

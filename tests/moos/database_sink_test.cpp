@@ -24,7 +24,7 @@ class DatabaseSinkTest : public ::testing::Test {
   static DatabaseConfig config(std::vector<Sunk>* sink) {
     DatabaseConfig c;
     c.community = "alpha";
-    if (sink) c.mail_sink = [sink](ClientId to, Message&& m) { sink->push_back({to, std::move(m)}); };
+    if (sink) c.mail_sink = [sink](ClientId to, const Message& m) { sink->push_back({to, m}); };
     return c;
   }
 
@@ -110,7 +110,7 @@ TEST(DatabaseSink, TheUndeliveredMailBoundStillAppliesPerCall) {
   std::vector<Sunk> sink;
   DatabaseConfig config;
   config.max_pending_bytes = 1000;
-  config.mail_sink = [&](ClientId to, Message&& m) { sink.push_back({to, std::move(m)}); };
+  config.mail_sink = [&](ClientId to, const Message& m) { sink.push_back({to, m}); };
   Database db(config, kT0, [](const std::string&) {});
   ASSERT_TRUE(db.connect(kA, {identification("reader", true)}, kT0));
   ASSERT_TRUE(db.connect(kB, {identification("pub", true)}, kT0));

@@ -180,6 +180,33 @@ TEST_F(TcpClientTest, LeadingTimingIsConsumedAndRefinesTheSkew_4_4) {
   EXPECT_NEAR(client.skew_s(), 0.3, 1e-6);
 }
 
+TEST_F(TcpClientTest, MailIsDecodedIntoTheStorageOfMailTheAppHasRead) {
+  TcpClient client(options());
+  std::atomic<bool> mail_waiting{false};
+  client.set_on_mail([&] { mail_waiting = true; });
+  ASSERT_NO_FATAL_FAILURE(connect(client));
+  std::vector<Message> mail;
+  // One message at a time, fetched once announced: its value (beyond the small-string buffer)
+  // is the storage the test follows.
+  auto next = [&](char fill) {
+    mail_waiting = false;
+    server.send({make_string_notify("REPORT", std::string(200, fill), "s", kT0)});
+    const double deadline = steady_now_s() + kWait_s;
+    while (!mail_waiting && steady_now_s() < deadline)
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    client.fetch_into(mail);
+    return mail.size() == 1 && mail[0].sval == std::string(200, fill);
+  };
+  ASSERT_TRUE(next('a'));
+  const char* first = mail[0].sval.data();
+  ASSERT_TRUE(next('b'));  // hands the first back, to be traded for the next decoded message
+  const std::string blocker(200, 'x');  // had the first been freed, this would take its storage
+  ASSERT_TRUE(next('c'));  // decoded into new storage, traded for the first's
+  ASSERT_TRUE(next('d'));  // decoded into the first's storage
+  EXPECT_EQ(mail[0].sval.data(), first);
+  EXPECT_NE(blocker.data(), first);
+}
+
 TEST_F(TcpClientTest, NullsAndStrayTimingsAreDroppedNotSetTypesDelivered_4_6) {
   TcpClient client(options());
   ASSERT_NO_FATAL_FAILURE(connect(client));

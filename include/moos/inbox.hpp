@@ -1,0 +1,62 @@
+#pragma once
+// A client's inbox whose messages keep their strings' storage after they are read. New mail is
+// written over a kept message (a copy-assignment, or a trade with a decoded one) instead of
+// being built anew, so a client whose mail is as large as before allocates nothing: the
+// in-process bus and TcpClient hold their mail in one, and Comms::fetch_into() hands the
+// caller's read mail back to it.
+//
+// Bounded: at most kMaxKept messages are kept, and a read message whose strings hold more than
+// kMaxKeptBytes is let go (a rare large value does not stay behind). Not thread-safe: the owner
+// guards it with its inbox lock.
+
+#include <cstddef>
+#include <vector>
+
+#include "moos/message.hpp"
+
+namespace moos {
+
+class Inbox {
+ public:
+  /// Messages kept at most after hand_over(): as many as the mail it handed over or the read
+  /// mail it took back, whichever is more, up to this bound.
+  static constexpr std::size_t kMaxKept = 4096;
+  /// Storage a read message's strings may hold in all to be kept, bytes.
+  static constexpr std::size_t kMaxKeptBytes = 4096;
+
+  bool empty() const { return size_ == 0; }
+  std::size_t size() const { return size_; }
+  const Message& operator[](std::size_t i) const { return slots_[i]; }
+  /// Read messages kept for their storage.
+  std::size_t kept() const { return slots_.size() - size_; }
+
+  /// Appends a copy of `msg`, written over a kept message when there is one.
+  void push_copy(const Message& msg) {
+    if (size_ < slots_.size()) {
+      slots_[size_] = msg;
+    } else {
+      slots_.push_back(msg);
+    }
+    ++size_;
+  }
+  /// Appends `msg`'s contents; `msg` gets a kept message in exchange (empty if none was kept).
+  void push_trade(Message& msg);
+  /// Drops the `n` oldest messages (at most all), keeping their storage.
+  void drop_oldest(std::size_t n);
+  /// Drops every message, keeping their storage.
+  void clear() { size_ = 0; }
+  /// Replaces `mail`'s contents with the inbox's messages, oldest first, and keeps `mail`'s
+  /// old messages (read) for their storage; the inbox is then empty.
+  void hand_over(std::vector<Message>& mail);
+
+  /// The storage the kept messages' strings hold, bytes (a walk over them).
+  std::size_t kept_bytes() const;
+  /// The storage a message's strings hold, bytes (their capacities).
+  static std::size_t storage_bytes(const Message& msg);
+
+ private:
+  std::vector<Message> slots_;  ///< [0, size_): the mail, oldest first; the rest kept
+  std::size_t size_ = 0;
+};
+
+}  // namespace moos
