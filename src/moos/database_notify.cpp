@@ -39,7 +39,9 @@ std::string type_name(char data_type) {
 /// keep its memory.
 void overwrite(std::string& to, const std::string& from) {
   if (to.capacity() > 2 * from.size() + kSlackBytes) {
-    to = std::string(from);
+    // Not `to = std::string(from)`: a short string moved in is copied into to's long buffer,
+    // which stays. The swap hands that buffer to the temporary, which frees it.
+    std::string(from).swap(to);
   } else {
     to.assign(from);
   }

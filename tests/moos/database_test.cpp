@@ -1,6 +1,7 @@
 // Unit tests of moos::Database without sockets: handshake, delivery rules and NOTIFY
 // (docs/protocol.md 1, 5.2, 5.3, 5.6).
 #include <gtest/gtest.h>
+#include <malloc.h>
 
 #include <cmath>
 #include <string>
@@ -355,6 +356,25 @@ TEST_F(DatabaseTest, ObserverSeesEveryAcceptedNotifyOnly) {
   EXPECT_EQ(observed_[0].key, "X");
   EXPECT_EQ(observed_[0].community, "alpha");  // as stored and forwarded
   EXPECT_EQ(observed_[1].sval, "yes");
+}
+
+// A short value that replaces a large one gives the large one's memory back: the store keeps
+// no buffer sized for a value it no longer holds (a short string moved into a long one is
+// copied into the long one's buffer, which then stays).
+std::size_t heap_in_use() {
+  const struct mallinfo2 m = mallinfo2();
+  return m.uordblks + m.hblkhd;  // large blocks are mapped on their own (hblkhd)
+}
+
+TEST_F(DatabaseTest, AShortValueReplacingALargeOneReleasesItsMemory_Hardening) {
+  connect(kA, "writer", true);
+  const std::size_t before = heap_in_use();
+  send(kA, {make_string_notify("BIG", std::string(std::size_t{8} << 20, 'x'), "writer", kT0)});
+  send(kA, {make_string_notify("BIG", "x", "writer", kT0)});
+  observed_.clear();  // the observer's copies are the test's, not the store's
+  observed_.shrink_to_fit();
+  ASSERT_EQ(db_.latest("BIG")->sval, "x");
+  EXPECT_LT(heap_in_use(), before + (std::size_t{1} << 20));
 }
 
 }  // namespace
