@@ -139,6 +139,39 @@ TEST(NumberDifferential, PlainDecimalsOnBothSidesOfTheExactLimitsReadAsStrtodRea
   }
 }
 
+// read_plain_decimal (scanners read a number where it stands): a prefix it takes is read as
+// parse_number reads that prefix alone, bit for bit; what it leaves is not a plain decimal's
+// byte (so the prefix is the whole run of one).
+TEST(NumberDifferential, PlainDecimalPrefixReadsAsParseNumberReadsIt) {
+  std::mt19937_64 rng(54);
+  for (int i = 0; i < 300000; ++i) {
+    std::string text = number_like(rng);
+    if (rng() % 2) text += ",X=1";
+    double got = 0.0;
+    const std::size_t length = read_plain_decimal(text, got);
+    if (length == 0) continue;
+    const auto want = parse_number(text.substr(0, length));
+    ASSERT_TRUE(want) << "'" << text << "'";
+    std::uint64_t a = 0, b = 0;
+    std::memcpy(&a, &got, sizeof a);
+    std::memcpy(&b, &*want, sizeof b);
+    ASSERT_EQ(a, b) << "'" << text << "'";
+    if (length < text.size()) {
+      const char next = text[length];
+      ASSERT_FALSE(next >= '0' && next <= '9') << "'" << text << "'";
+      ASSERT_FALSE(next == '.' && text.substr(0, length).find('.') == std::string::npos)
+          << "'" << text << "'";
+    }
+  }
+  double v = 0.0;
+  EXPECT_EQ(read_plain_decimal("-12.5,X=1", v), 5U);
+  EXPECT_EQ(v, -12.5);
+  EXPECT_EQ(read_plain_decimal("+.5e3", v), 3U);
+  for (const char* refused : {"", "-", "+", ".", "-.", " 1", "e5", "12345678901234567890",
+                              "9007199254740993", "0.00000000000000000000001"})
+    EXPECT_EQ(read_plain_decimal(refused, v), 0U) << "'" << refused << "'";
+}
+
 TEST(NumberDifferential, FixAndFmtWriteWhatPrintfWrites) {
   std::mt19937_64 rng(2026);
   for (int i = 0; i < 300000; ++i) {

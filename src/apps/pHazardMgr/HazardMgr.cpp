@@ -149,7 +149,8 @@ void HazardMgr::handle(const moos::Message& m, double time_s) {
 void HazardMgr::on_node_report(const std::string& text, double time_s) {
   // Every manager on one MOOSDB reads every vehicle's reports; the managers (and sensor) of one
   // process share the parse of a text.
-  const auto report = hazard::NodeReportMemo::this_thread().parse(text, nullptr);
+  // (By reference: valid until the next parse, so everything is read before publish().)
+  const auto& report = hazard::NodeReportMemo::this_thread().parse(text, nullptr);
   if (!report) {
     report_run_warning(app_.node_report_var + " ignored: " + report.error);
     return;
