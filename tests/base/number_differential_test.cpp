@@ -252,6 +252,36 @@ TEST(NumberDifferential, WriteFmtFastWritesFmtsTextOrNothing) {
   EXPECT_EQ(write_fmt_fast(room, 1.5, 10), nullptr);
 }
 
+// The read-back form writes the same text and reports what that text reads as: all of it taken
+// by read_plain_decimal, the number parse_number gives, bit for bit (a writer that keeps its
+// reader's parse relies on it: NodeReportMemo::format).
+TEST(NumberDifferential, WriteFmtFastReadBackIsWhatTheTextReadsAs) {
+  std::mt19937_64 rng(2029);
+  for (int i = 0; i < 300000; ++i) {
+    const double v = value_like(rng);
+    const int decimals = static_cast<int>(rng() % 11);
+    char plain[kFastFmtMaxChars];
+    char room[kFastFmtMaxChars];
+    double read_back = 0.0;
+    const char* const plain_end = write_fmt_fast(plain, v, decimals);
+    const char* const end = write_fmt_fast(room, v, decimals, read_back);
+    ASSERT_EQ(end == nullptr, plain_end == nullptr) << v << " " << decimals;
+    if (!end) continue;
+    const std::string text(static_cast<const char*>(room), end);
+    ASSERT_EQ(text, std::string(static_cast<const char*>(plain), plain_end));
+    double read = 0.0;
+    ASSERT_EQ(read_plain_decimal(text, read), text.size()) << text;
+    const auto parsed = parse_number(text);
+    ASSERT_TRUE(parsed) << text;
+    std::uint64_t a = 0, b = 0, c = 0;
+    std::memcpy(&a, &read_back, sizeof a);
+    std::memcpy(&b, &read, sizeof b);
+    std::memcpy(&c, &*parsed, sizeof c);
+    ASSERT_EQ(a, b) << text;
+    ASSERT_EQ(a, c) << text;
+  }
+}
+
 TEST(NumberDifferential, AppendedFormsEqualTheReturnedOnes) {
   std::string out = "x=";
   append_fix(out, 2.675, 2);
