@@ -28,7 +28,9 @@ struct NodeReportFields {
   NodeReportField name, x, y, spd, speed, hdg, heading, lat, lon, time, type;
 
   NodeReportFields() = default;  ///< none present (a writer fills what it wrote)
-  explicit NodeReportFields(std::string_view text);
+  /// `pose_only`: LAT, LON and TIME are found but not read as numbers (the engine's parse,
+  /// NodeReportKeep::kPose, does not convert them).
+  explicit NodeReportFields(std::string_view text, bool pose_only = false);
 };
 
 }  // namespace hazard

@@ -227,7 +227,7 @@ Parsed<NodeReport> parse_node_report(std::string_view text) {
 
 Parsed<NodeReport> parse_node_report(std::string_view text, const GeoPlacement* placement,
                                      NodeReportKeep keep) {
-  return build_node_report(NodeReportFields(text), placement, keep);
+  return build_node_report(NodeReportFields(text, keep == NodeReportKeep::kPose), placement, keep);
 }
 
 NodeReportMemo& NodeReportMemo::this_thread() {

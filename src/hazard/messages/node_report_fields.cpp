@@ -81,7 +81,7 @@ std::size_t read_number_value(std::string_view all, std::size_t value, NodeRepor
 
 }  // namespace
 
-NodeReportFields::NodeReportFields(std::string_view all) {
+NodeReportFields::NodeReportFields(std::string_view all, bool pose_only) {
   const char* const text = all.data();
   const std::size_t n = all.size();
   std::size_t i = 0;
@@ -100,7 +100,9 @@ NodeReportFields::NodeReportFields(std::string_view all) {
     }
     NodeReportField* const slot = slot_for(*this, base::trim(all.substr(start, i - start)));
     const std::size_t value = i + 1;
-    if (slot && slot != &name && slot != &type) {
+    const bool number = slot && slot != &name && slot != &type &&
+                        !(pose_only && (slot == &lat || slot == &lon || slot == &time));
+    if (number) {
       if (const std::size_t end = read_number_value(all, value, *slot)) {
         i = end + 1;
         continue;

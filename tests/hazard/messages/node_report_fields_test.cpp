@@ -42,8 +42,8 @@ std::uint64_t bits(double v) {
   return b;
 }
 
-void expect_fields_as_the_rule_finds_them(const std::string& text) {
-  const NodeReportFields fields(text);
+void expect_fields_as_the_rule_finds_them(const std::string& text, bool pose_only) {
+  const NodeReportFields fields(text, pose_only);
   for (const Slot& slot : kSlots) {
     const NodeReportField& got = fields.*slot.field;
     const auto want = reference_value(text, slot.key);
@@ -52,11 +52,21 @@ void expect_fields_as_the_rule_finds_them(const std::string& text) {
     // The same view: the same bytes at the same place.
     ASSERT_EQ(got.text.data(), want->data()) << slot.key << " in '" << text << "'";
     ASSERT_EQ(got.text.size(), want->size()) << slot.key << " in '" << text << "'";
+    if (pose_only && (slot.field == &NodeReportFields::lat || slot.field == &NodeReportFields::lon ||
+                      slot.field == &NodeReportFields::time)) {
+      ASSERT_FALSE(got.has_number) << slot.key << " in '" << text << "'";
+    }
     if (!got.has_number) continue;
     const auto number = base::parse_number(got.text);
     ASSERT_TRUE(number) << slot.key << " in '" << text << "'";
     ASSERT_EQ(bits(got.number), bits(*number)) << slot.key << " in '" << text << "'";
   }
+}
+
+// Both forms of the scan: every number read, and the pose's only.
+void expect_fields_as_the_rule_finds_them(const std::string& text) {
+  expect_fields_as_the_rule_finds_them(text, /*pose_only=*/false);
+  expect_fields_as_the_rule_finds_them(text, /*pose_only=*/true);
 }
 
 std::string pick(std::mt19937_64& rng, const std::vector<std::string>& from) {
