@@ -62,6 +62,11 @@ std::vector<KeyValue> split_key_values(std::string_view text, char separator = '
 
 /// A finite decimal number (grammar above) that uses all of `text` after trimming.
 std::optional<double> parse_number(std::string_view text);
+/// The plain decimal [+-]digits[.digits] (a digit at least) at the start of `text`, read as
+/// parse_number reads it: its length, with its value in `out`, when its digits make an integer
+/// up to 2^53 and it has at most 22 decimals; 0 otherwise (parse_number covers the rest). For
+/// scanners that read a number where it stands (NODE_REPORT).
+std::size_t read_plain_decimal(std::string_view text, double& out);
 /// A whole number in [0, 2^64 - 1], decimal digits only (an optional leading '+').
 std::optional<std::uint64_t> parse_unsigned(std::string_view text);
 /// A whole decimal number in [min, max] that uses all of `text` after trimming.
@@ -87,6 +92,9 @@ inline constexpr std::size_t kFastFmtMaxChars = 24;
 /// covers it (|v| * 10^d below 2^53, at most 9 decimals): the end of the text, else nullptr and
 /// nothing written (append_fmt covers every value). For writers that fill a buffer.
 char* write_fmt_fast(char* dest, double value, int decimals);
+/// The same, and in `read_back` the number the text reads as (read_plain_decimal takes all of
+/// it, and parse_number gives the same): for a writer that knows what its reader will find.
+char* write_fmt_fast(char* dest, double value, int decimals, double& read_back);
 /// FMT(v, d): FIX(v, d), then (only if the text has a '.') trailing '0's and then a trailing '.'
 /// removed, and finally "-0" mapped to "0". FMT(0.6561, 3) == "0.656".
 std::string fmt(double value, int decimals = 5);

@@ -46,11 +46,25 @@ class TextAppender {
     flush();  // the rare value outside the fast path
     append_fmt(out_, value, decimals);
   }
+  /// FMT(v, d), and in `read_back` the number it reads as (write_fmt_fast); false, with the text
+  /// written all the same, for a value outside the fast path.
+  bool put_fmt(double value, int decimals, double& read_back) {
+    make_room(kFastFmtMaxChars);
+    if (char* const after = write_fmt_fast(end_, value, decimals, read_back)) {
+      end_ = after;
+      return true;
+    }
+    flush();
+    append_fmt(out_, value, decimals);
+    return false;
+  }
   /// `key` (such as ",x=") and FMT(value, decimals) after it: a field of a posting.
   void put_field(std::string_view key, double value, int decimals) {
     put(key);
     put_fmt(value, decimals);
   }
+  /// The length of the text so far (the string's and the buffer's).
+  std::size_t size() const { return out_.size() + static_cast<std::size_t>(end_ - buffer_); }
   /// Everything put so far is in the string (also done at destruction).
   void flush() {
     out_.append(buffer_, static_cast<std::size_t>(end_ - buffer_));

@@ -49,6 +49,19 @@ struct FixedText {
   std::size_t length = 0;
 };
 
+// Powers of ten a double holds exactly (10^22 is the largest).
+constexpr double kExactPowersOfTen[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                        1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
+                                        1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+
+// A plain decimal's value from its digits as one integer and its count of decimals, both exact
+// (at most 2^53 and 22): one correctly rounded division. The one definition read_plain_decimal
+// and the writer's read-back share.
+double plain_decimal_value(std::uint64_t mantissa, std::size_t decimals, bool negative) {
+  const double v = static_cast<double>(mantissa) / kExactPowersOfTen[decimals];
+  return negative ? -v : v;
+}
+
 // 10^0 .. 10^16: every power a value below 2^53 (16 digits) is compared with or scaled by.
 constexpr std::uint64_t kPow10Int[17] = {1,
                                          10,
@@ -202,6 +215,18 @@ char* write_fmt_fast(char* dest, double value, int decimals) {
   return dest + t->length;
 }
 
+char* write_fmt_fast(char* dest, double value, int decimals, double& read_back) {
+  const std::optional<FixedText> t =
+      fixed_fast_text(value, std::clamp(decimals, 0, kMaxDecimals), /*fmt=*/true);
+  if (!t) return nullptr;
+  write_fixed_text(*t, dest + t->length);
+  // The text's digits as one integer over 10^shown: what read_plain_decimal computes from it
+  // (the fast path keeps that integer at most 2^53, with at most 9 decimals).
+  read_back = plain_decimal_value(t->whole * kPow10Int[t->shown] + t->fraction,
+                                  static_cast<std::size_t>(t->shown), t->negative);
+  return dest + t->length;
+}
+
 std::string joined(std::initializer_list<std::string_view> pieces) {
   std::size_t size = 0;
   for (const std::string_view piece : pieces) size += piece.size();
@@ -291,40 +316,43 @@ std::vector<std::string_view> split(std::string_view text, char separator) {
 
 namespace {
 
-// Powers of ten a double holds exactly (10^22 is the largest).
-constexpr double kExactPowersOfTen[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
-                                        1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
-                                        1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
 constexpr std::uint64_t kMaxExactInteger = std::uint64_t{1} << 53;
-constexpr int kMaxPlainDigits = 19;  // below 2^64 whatever they are
+constexpr std::size_t kMaxPlainDigits = 19;  // below 2^64 whatever they are
 
-// The usual number of mail, digits with at most one point ("-470.50" without its sign), when
-// its digits make an integer below 2^53 and it has at most 22 decimals: that integer and the
-// power of ten are exact, so one division rounds correctly and gives what from_chars gives
-// (Clinger's fast path), at a fraction of its cost. False for anything else.
-bool plain_decimal(const char* first, const char* last, double& out) {
-  std::uint64_t mantissa = 0;
-  int digits = 0;
-  int decimals = 0;
-  bool point = false;
-  for (const char* p = first; p != last; ++p) {
-    const char c = *p;
-    if (c >= '0' && c <= '9') {
-      if (++digits > kMaxPlainDigits) return false;
-      mantissa = mantissa * 10 + static_cast<std::uint64_t>(c - '0');
-      decimals += point ? 1 : 0;
-    } else if (c == '.' && !point) {
-      point = true;
-    } else {
-      return false;
-    }
-  }
-  if (digits == 0 || mantissa > kMaxExactInteger ||
-      decimals >= static_cast<int>(std::size(kExactPowersOfTen)))
-    return false;
-  out = static_cast<double>(mantissa) / kExactPowersOfTen[decimals];
-  return true;
+// Reads the digits from `i` into `mantissa`; the end of the run.
+std::size_t read_digits(std::string_view text, std::size_t i, std::uint64_t& mantissa) {
+  for (; i < text.size() && is_digit(text[i]); ++i)
+    mantissa = mantissa * 10 + static_cast<std::uint64_t>(text[i] - '0');
+  return i;
 }
+
+}  // namespace
+
+// The usual number of mail ("-470.50"), when its digits make an integer up to 2^53 and it has
+// at most 22 decimals: that integer and the power of ten are exact, so one division rounds
+// correctly and gives what from_chars gives (Clinger's fast path), at a fraction of its cost.
+std::size_t read_plain_decimal(std::string_view text, double& out) {
+  const bool negative = !text.empty() && text[0] == '-';
+  const std::size_t first = !text.empty() && (negative || text[0] == '+') ? 1 : 0;
+  std::uint64_t mantissa = 0;
+  std::size_t end = read_digits(text, first, mantissa);
+  std::size_t digits = end - first;
+  std::size_t decimals = 0;
+  if (end < text.size() && text[end] == '.') {
+    const std::size_t fraction = end + 1;
+    end = read_digits(text, fraction, mantissa);
+    decimals = end - fraction;
+    digits += decimals;
+  }
+  // (More than 19 digits may have wrapped the mantissa: refused before it is looked at.)
+  if (digits == 0 || digits > kMaxPlainDigits || mantissa > kMaxExactInteger ||
+      decimals >= std::size(kExactPowersOfTen))
+    return 0;
+  out = plain_decimal_value(mantissa, decimals, negative);
+  return end;
+}
+
+namespace {
 
 // A text that std::from_chars took whole but reported out of range: the grammar reads an
 // overflow (1e999) as no number and an underflow (1e-400) as the 0 (or subnormal) strtod gives.
@@ -345,12 +373,13 @@ std::optional<double> convert_out_of_range(std::string_view text) {
 // be used (tests/base/number_differential_test.cpp holds it to a regular expression and strtod).
 std::optional<double> parse_number(std::string_view text) {
   text = trim(text);
+  double v = 0.0;
+  const std::size_t plain = read_plain_decimal(text, v);
+  if (plain != 0 && plain == text.size()) return v;
   const std::size_t sign = !text.empty() && (text[0] == '+' || text[0] == '-') ? 1 : 0;
   if (sign >= text.size() || !(is_digit(text[sign]) || text[sign] == '.')) return std::nullopt;
   const char* const first = text.data() + (text[0] == '+' ? 1 : 0);
   const char* const last = text.data() + text.size();
-  double v = 0.0;
-  if (plain_decimal(text.data() + sign, last, v)) return text[0] == '-' ? -v : v;
   const auto [ptr, ec] = std::from_chars(first, last, v);
   if (ptr != last) return std::nullopt;
   if (ec == std::errc()) return v;

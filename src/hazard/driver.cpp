@@ -72,7 +72,7 @@ void Driver::dispatch(std::string_view variable, std::string_view value, double 
   // Each message: its module's parser, then its handler; a parse failure is one warning.
   // (The parser and handler by reference: a closure passed by value went through memory.)
   auto route = [&](const auto& parse, const auto& handle) {
-    const auto parsed = parse(value);
+    const auto& parsed = parse(value);  // (a shared parse is handed out by reference)
     if (parsed) {
       handle(*parsed.value);
     } else {
@@ -81,14 +81,18 @@ void Driver::dispatch(std::string_view variable, std::string_view value, double 
     }
   };
   if (variable == kNodeReport) {
-    // The engine reads the name and the pose only (NodeReportKeep::kPose).
-    route([&](std::string_view text) {
-            return share_node_report_parses_
-                       ? NodeReportMemo::this_thread().parse(text, &engine_.placement(),
-                                                             NodeReportKeep::kPose)
-                       : parse_node_report(text, &engine_.placement(), NodeReportKeep::kPose);
-          },
-          [&](const NodeReport& r) { engine_.handle_node_report(r, now_s, out); });
+    const auto handle = [&](const NodeReport& r) { engine_.handle_node_report(r, now_s, out); };
+    if (share_node_report_parses_) {
+      route([&](std::string_view text) -> const Parsed<NodeReport>& {
+              return NodeReportMemo::this_thread().parse(text, &engine_.placement());
+            },
+            handle);
+    } else {  // the engine reads the name and the pose only
+      route([&](std::string_view text) {
+              return parse_node_report(text, &engine_.placement(), NodeReportKeep::kPose);
+            },
+            handle);
+    }
   } else if (variable == kSensorRequest) {
     route(parse_sensor_request,
           [&](const SensorRequest& r) { engine_.handle_sensor_request(r, now_s, out); });

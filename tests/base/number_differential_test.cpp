@@ -139,6 +139,39 @@ TEST(NumberDifferential, PlainDecimalsOnBothSidesOfTheExactLimitsReadAsStrtodRea
   }
 }
 
+// read_plain_decimal (scanners read a number where it stands): a prefix it takes is read as
+// parse_number reads that prefix alone, bit for bit; what it leaves is not a plain decimal's
+// byte (so the prefix is the whole run of one).
+TEST(NumberDifferential, PlainDecimalPrefixReadsAsParseNumberReadsIt) {
+  std::mt19937_64 rng(54);
+  for (int i = 0; i < 300000; ++i) {
+    std::string text = number_like(rng);
+    if (rng() % 2) text += ",X=1";
+    double got = 0.0;
+    const std::size_t length = read_plain_decimal(text, got);
+    if (length == 0) continue;
+    const auto want = parse_number(text.substr(0, length));
+    ASSERT_TRUE(want) << "'" << text << "'";
+    std::uint64_t a = 0, b = 0;
+    std::memcpy(&a, &got, sizeof a);
+    std::memcpy(&b, &*want, sizeof b);
+    ASSERT_EQ(a, b) << "'" << text << "'";
+    if (length < text.size()) {
+      const char next = text[length];
+      ASSERT_FALSE(next >= '0' && next <= '9') << "'" << text << "'";
+      ASSERT_FALSE(next == '.' && text.substr(0, length).find('.') == std::string::npos)
+          << "'" << text << "'";
+    }
+  }
+  double v = 0.0;
+  EXPECT_EQ(read_plain_decimal("-12.5,X=1", v), 5U);
+  EXPECT_EQ(v, -12.5);
+  EXPECT_EQ(read_plain_decimal("+.5e3", v), 3U);
+  for (const char* refused : {"", "-", "+", ".", "-.", " 1", "e5", "12345678901234567890",
+                              "9007199254740993", "0.00000000000000000000001"})
+    EXPECT_EQ(read_plain_decimal(refused, v), 0U) << "'" << refused << "'";
+}
+
 TEST(NumberDifferential, FixAndFmtWriteWhatPrintfWrites) {
   std::mt19937_64 rng(2026);
   for (int i = 0; i < 300000; ++i) {
@@ -217,6 +250,36 @@ TEST(NumberDifferential, WriteFmtFastWritesFmtsTextOrNothing) {
   for (const double refused : {1e300, std::nan(""), HUGE_VAL, -HUGE_VAL})
     EXPECT_EQ(write_fmt_fast(room, refused, 2), nullptr) << refused;
   EXPECT_EQ(write_fmt_fast(room, 1.5, 10), nullptr);
+}
+
+// The read-back form writes the same text and reports what that text reads as: all of it taken
+// by read_plain_decimal, the number parse_number gives, bit for bit (a writer that keeps its
+// reader's parse relies on it: NodeReportMemo::format).
+TEST(NumberDifferential, WriteFmtFastReadBackIsWhatTheTextReadsAs) {
+  std::mt19937_64 rng(2029);
+  for (int i = 0; i < 300000; ++i) {
+    const double v = value_like(rng);
+    const int decimals = static_cast<int>(rng() % 11);
+    char plain[kFastFmtMaxChars];
+    char room[kFastFmtMaxChars];
+    double read_back = 0.0;
+    const char* const plain_end = write_fmt_fast(plain, v, decimals);
+    const char* const end = write_fmt_fast(room, v, decimals, read_back);
+    ASSERT_EQ(end == nullptr, plain_end == nullptr) << v << " " << decimals;
+    if (!end) continue;
+    const std::string text(static_cast<const char*>(room), end);
+    ASSERT_EQ(text, std::string(static_cast<const char*>(plain), plain_end));
+    double read = 0.0;
+    ASSERT_EQ(read_plain_decimal(text, read), text.size()) << text;
+    const auto parsed = parse_number(text);
+    ASSERT_TRUE(parsed) << text;
+    std::uint64_t a = 0, b = 0, c = 0;
+    std::memcpy(&a, &read_back, sizeof a);
+    std::memcpy(&b, &read, sizeof b);
+    std::memcpy(&c, &*parsed, sizeof c);
+    ASSERT_EQ(a, b) << text;
+    ASSERT_EQ(a, c) << text;
+  }
 }
 
 TEST(NumberDifferential, AppendedFormsEqualTheReturnedOnes) {

@@ -90,10 +90,23 @@ TEST(TextAppender, EqualsPlainAppendsForRandomPieces) {
           default: {
             const double v = rng() % 50 == 0 ? 1e200 : coordinate(rng);
             const int decimals = static_cast<int>(rng() % 12);
-            text.put_fmt(v, decimals);
+            if (rng() % 2) {
+              text.put_fmt(v, decimals);
+              append_fmt(want, v, decimals);
+              break;
+            }
+            // The read-back form: the same text, and the number it reads as when it knows it.
+            const std::size_t at = want.size();
+            double read_back = 0.0;
+            const bool known = text.put_fmt(v, decimals, read_back);
             append_fmt(want, v, decimals);
+            ASSERT_EQ(known, decimals <= 9 && v != 1e200) << v << " " << decimals;
+            if (known) {
+              ASSERT_EQ(parse_number(want.substr(at)), read_back) << want.substr(at);
+            }
           }
         }
+        ASSERT_EQ(text.size(), want.size()) << "run " << run;  // buffered bytes counted
       }
     }
     ASSERT_EQ(got, want) << "run " << run;

@@ -12,10 +12,11 @@
 // LatOrigin/LongOrigin and the `geodesy` mode), LAT in [-90, 90] and LON in [-180, 360]; without
 // a projection it is rejected with the placement's reason (the original rejected it, T9).
 
+#include <array>
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <string_view>
-#include <vector>
 
 #include "hazard/geodesy.hpp"
 #include "hazard/messages/parsed.hpp"
@@ -53,26 +54,35 @@ Parsed<NodeReport> parse_node_report(std::string_view text, const GeoPlacement* 
                                      NodeReportKeep keep = NodeReportKeep::kAll);
 /// The parses of one thread's last few node report texts, for several readers of the same texts
 /// in one thread (hazard_study hosts the sensor and every manager: each report is read three
-/// times). parse() gives what parse_node_report(text, placement, keep) gives; only a report
-/// placed from its X and Y, which no placement changes, is kept (anything else is parsed anew).
+/// times). parse() gives what parse_node_report(text, placement) gives, every field kept, by
+/// reference: valid until the next parse() on this memo, so a reader takes what it needs
+/// before it posts anything that may reach another reader. Only a report placed from its X and
+/// Y, which no placement changes, is kept (anything else is parsed anew).
 class NodeReportMemo {
  public:
   static NodeReportMemo& this_thread();
 
-  Parsed<NodeReport> parse(std::string_view text, const GeoPlacement* placement,
-                           NodeReportKeep keep = NodeReportKeep::kAll);
+  const Parsed<NodeReport>& parse(std::string_view text, const GeoPlacement* placement);
+  /// format_node_report(report), its parse kept for this thread's readers: the parse is known
+  /// from the writing (a vehicle posting in the same thread as the readers, hazard_study).
+  std::string format(const NodeReport& report);
+  /// The texts parse() has read itself (not found kept): what the memo saved, for tests.
+  std::size_t texts_read() const { return texts_read_; }
 
  private:
+  const Parsed<NodeReport>& keep(std::string_view text, Parsed<NodeReport>&& parsed);
+
   static constexpr std::size_t kKept = 4;  // the latest reports of a few vehicles
   struct Entry {
     std::string text;
-    NodeReport report;  // kAll
+    Parsed<NodeReport> parsed;
   };
-  /// The kept report of `text`, parsed and kept now if new; nullptr if it cannot be kept.
-  const NodeReport* find_or_keep(std::string_view text);
 
-  std::vector<Entry> entries_;
-  std::size_t next_ = 0;  // the entry replaced next, once all are in use
+  std::array<Entry, kKept> entries_;
+  std::size_t used_ = 0;   // entries in use
+  std::size_t next_ = 0;   // the entry replaced next
+  Parsed<NodeReport> unkept_;  // the last parse that is not kept
+  std::size_t texts_read_ = 0;
 };
 
 /// NAME=..,X=FMT(x,2),Y=FMT(y,2),SPD=FMT(s,2),HDG=FMT(h,2)

@@ -45,7 +45,9 @@ std::unique_ptr<moos::MoosApp> make_app(const std::string& program, bool logged,
     return std::make_unique<ufld_hazard_metric::HazardMetricApp>(std::move(source));
   }
   if (base::iequals(program, "pHazardMgr")) return std::make_unique<phazard_mgr::HazardMgr>();
-  return std::make_unique<usim_survey_vehicle::SimSurveyVehicle>();  // the plan checked the name
+  auto vehicle = std::make_unique<usim_survey_vehicle::SimSurveyVehicle>();  // (plan checked)
+  vehicle->share_node_report_parses(true);  // the sensor and managers read its reports here
+  return vehicle;
 }
 
 /// What the runner learns from the mail it observes (every posting, by a wildcard).

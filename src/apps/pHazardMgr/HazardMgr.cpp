@@ -167,7 +167,8 @@ void HazardMgr::on_mission_params(const std::string& text) {
 void HazardMgr::on_node_report(const std::string& text, double time_s) {
   // Every manager on one MOOSDB reads every vehicle's reports; the managers (and sensor) of one
   // process share the parse of a text.
-  const auto report = hazard::NodeReportMemo::this_thread().parse(text, nullptr);
+  // (By reference: valid until the next parse, so everything is read before publish().)
+  const auto& report = hazard::NodeReportMemo::this_thread().parse(text, nullptr);
   if (!report) {
     report_run_warning(app_.node_report_var + " ignored: " + report.error);
     return;

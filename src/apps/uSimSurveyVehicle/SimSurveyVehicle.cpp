@@ -171,7 +171,9 @@ void SimSurveyVehicle::post_node_report(const mission::Pose& pose) {
   }
   r.time_s = pose.time_s;
   r.type = vehicle_type_;
-  notify(node_report_var_, hazard::format_node_report(r));  // the text moves on, uncopied
+  std::string text = share_node_report_parses_ ? hazard::NodeReportMemo::this_thread().format(r)
+                                               : hazard::format_node_report(r);
+  notify(node_report_var_, std::move(text));  // the text moves on, uncopied
   ++node_reports_posted_;
 }
 

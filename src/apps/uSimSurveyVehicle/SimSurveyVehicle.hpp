@@ -64,6 +64,10 @@ class SimSurveyVehicle final : public mission_app::MissionApp {
   /// nullptr until start-up has run.
   const mission::SurveyVehicle* vehicle() const { return vehicle_ ? &*vehicle_ : nullptr; }
   long node_reports_posted() const { return node_reports_posted_; }
+  /// Node reports written through hazard::NodeReportMemo::this_thread().format(), which keeps
+  /// their parse for the readers of this thread (hazard_study hosts the sensor and managers;
+  /// the same results). Off by default: a vehicle's own process has no readers.
+  void share_node_report_parses(bool share) { share_node_report_parses_ = share; }
 
  protected:
   bool on_start_up() override;
@@ -94,6 +98,7 @@ class SimSurveyVehicle final : public mission_app::MissionApp {
   std::optional<double> last_report_s_;
   mission::Pose last_pose_;
   long node_reports_posted_ = 0;
+  bool share_node_report_parses_ = false;
   long routes_received_ = 0;
 };
 

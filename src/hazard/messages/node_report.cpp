@@ -1,10 +1,11 @@
 #include "hazard/messages/node_report.hpp"
 
+#include <algorithm>
 #include <cmath>
 
-#include "base/key_value_reader.hpp"
 #include "base/text_appender.hpp"
 #include "fields.hpp"
+#include "hazard/messages/node_report_fields.hpp"
 #include "hazard/ranges.hpp"
 
 namespace hazard {
@@ -17,69 +18,36 @@ namespace {
 // A coordinate given as LAT/LON keeps its precision (about 1 mm at 8 decimals).
 constexpr int kLatLonDecimals = 8;
 
-using Field = std::optional<std::string_view>;
+using Field = NodeReportField;
 
-// The keys a node report is read for, found in one pass over the text without a list of pieces
-// (a node report arrives ten times a second per vehicle). As detail::Fields: keys compare
-// case-insensitively, a piece without '=' is no value, a repeated key: the last one wins.
-struct NodeFields {
-  Field name, x, y, spd, speed, hdg, heading, lat, lon, time, type;
+std::optional<std::string_view> text_of(const Field& f) {
+  return f.present ? std::optional<std::string_view>(f.text) : std::nullopt;
+}
 
-  explicit NodeFields(std::string_view text) {
-    base::KeyValueReader reader(text, ',', /*respect_braces=*/true);
-    for (base::KeyValue kv; reader.next(kv);) {
-      if (!kv.has_equals) continue;
-      if (Field* slot = slot_for(kv.key)) *slot = kv.value;
-    }
-  }
-
- private:
-  // The slot of a key, or nullptr: a switch on the length and the first letter leaves at most
-  // one candidate, compared case-insensitively (no lowered copy of the key is built).
-  Field* slot_for(std::string_view key) {
-    const auto is = [&](std::string_view spelled, Field& slot) {
-      return base::iequals(spelled, key) ? &slot : nullptr;
-    };
-    const char first = base::detail::lower_ascii(key.empty() ? '\0' : key.front());
-    switch (key.size()) {
-      case 1:
-        return first == 'x' ? &x : first == 'y' ? &y : nullptr;
-      case 3:
-        if (first == 's') return is("SPD", spd);
-        if (first == 'h') return is("HDG", hdg);
-        if (first == 'l') return is("LAT", lat) ? &lat : is("LON", lon);
-        return nullptr;
-      case 4:
-        if (first == 'n') return is("NAME", name);
-        if (first == 't') return is("TIME", time) ? &time : is("TYPE", type);
-        return nullptr;
-      case 5:
-        return is("SPEED", speed);
-      case 7:
-        return is("HEADING", heading);
-      default:
-        return nullptr;
-    }
-  }
-};
-
-std::optional<double> optional_number(Field text) {
-  return text ? base::parse_number(*text) : std::nullopt;
+// A number read during the scan, else through the grammar (base::parse_number: the same
+// number either way).
+std::optional<double> optional_number(const Field& f) {
+  if (!f.present) return std::nullopt;
+  return f.has_number ? std::optional<double>(f.number) : base::parse_number(f.text);
 }
 
 // A required number's text read into a plain double: ten reports a second per vehicle, and a
 // std::optional<double> built in memory and then copied whole costs a stalled load each.
 enum class NumberText { kAbsent, kNumber, kNotANumber };
-NumberText read_number(Field text, double& out) {
-  if (!text) return NumberText::kAbsent;
-  const std::optional<double> v = base::parse_number(*text);
+NumberText read_number(const Field& f, double& out) {
+  if (!f.present) return NumberText::kAbsent;
+  if (f.has_number) {
+    out = f.number;
+    return NumberText::kNumber;
+  }
+  const std::optional<double> v = base::parse_number(f.text);
   if (!v) return NumberText::kNotANumber;
   out = *v;
   return NumberText::kNumber;
 }
 
 // A LAT/LON-only position through the placement, or the reason it cannot be placed.
-std::optional<glm::dvec2> place_lat_lon(const NodeFields& f, const GeoPlacement* placement,
+std::optional<glm::dvec2> place_lat_lon(const NodeReportFields& f, const GeoPlacement* placement,
                                         std::string& error) {
   const GeoPlacement none;
   if (!placement) placement = &none;
@@ -87,15 +55,15 @@ std::optional<glm::dvec2> place_lat_lon(const NodeFields& f, const GeoPlacement*
     error = "LAT/LON without X/Y cannot be placed (" + placement->unavailable + ")";
     return std::nullopt;
   }
-  const auto lat = number_field("LAT", f.lat, error);
-  const auto lon = number_field("LON", f.lon, error);
+  const auto lat = number_field("LAT", text_of(f.lat), error);
+  const auto lon = number_field("LON", text_of(f.lon), error);
   if (!error.empty()) return std::nullopt;
   if (!valid_latitude(*lat)) {
-    error = detail::field_value("LAT", *f.lat) + " is outside [-90, 90]";
+    error = detail::field_value("LAT", f.lat.text) + " is outside [-90, 90]";
     return std::nullopt;
   }
   if (!valid_longitude(*lon)) {
-    error = detail::field_value("LON", *f.lon) + " is outside [-180, 360]";
+    error = detail::field_value("LON", f.lon.text) + " is outside [-180, 360]";
     return std::nullopt;
   }
   return placement->projection->to_local(*lat, *lon);
@@ -103,12 +71,13 @@ std::optional<glm::dvec2> place_lat_lon(const NodeFields& f, const GeoPlacement*
 
 // Physically meaningful ranges (ranges.hpp): a position beyond kMaxNodeCoordinate_m, or a
 // speed that is negative or beyond kMaxNodeSpeed_mps, is refused; empty when in range.
-std::string out_of_range(const NodeFields& f, glm::dvec2 position, double spd,
+std::string out_of_range(const NodeReportFields& f, glm::dvec2 position, double spd,
                          std::string_view spd_text) {
   if (std::fabs(position.x) > kMaxNodeCoordinate_m ||
       std::fabs(position.y) > kMaxNodeCoordinate_m) {
-    const std::string given = f.x && f.y ? detail::field_value("X", *f.x) + ", " +
-                                               detail::field_value("Y", *f.y)
+    const std::string given = f.x.present && f.y.present
+                                  ? detail::field_value("X", f.x.text) + ", " +
+                                        detail::field_value("Y", f.y.text)
                                          : "the position placed from LAT/LON";
     return given + ": beyond " + base::fmt(kMaxNodeCoordinate_m, 0) +
            " m from the origin (kMaxNodeCoordinate_m)";
@@ -120,39 +89,35 @@ std::string out_of_range(const NodeFields& f, glm::dvec2 position, double spd,
   return {};
 }
 
-}  // namespace
-
-Parsed<NodeReport> parse_node_report(std::string_view text) {
-  return parse_node_report(text, nullptr);
-}
-
-// The report is built in its place in the result (ten a second per vehicle: not moved out).
-Parsed<NodeReport> parse_node_report(std::string_view text, const GeoPlacement* placement,
+// The report of a text's fields (found by the scan, or known from the writing), checked. Built
+// in its place in the result (ten a second per vehicle: not moved out).
+Parsed<NodeReport> build_node_report(const NodeReportFields& f, const GeoPlacement* placement,
                                      NodeReportKeep keep) {
-  const NodeFields f(text);
   Parsed<NodeReport> result;
   NodeReport& r = result.value.emplace();
   std::string error;
   const auto fail = [](std::string why) { return Parsed<NodeReport>::fail(std::move(why)); };
-  if (!detail::valid_vehicle_name("NAME", f.name, error)) return fail(error);
-  r.name.assign(f.name->data(), f.name->size());
+  if (!detail::valid_vehicle_name("NAME", text_of(f.name), error)) return fail(error);
+  r.name.assign(f.name.text.data(), f.name.text.size());
 
   double x = 0.0, y = 0.0, spd = 0.0, hdg = 0.0;
   const NumberText x_read = read_number(f.x, x);
   const NumberText y_read = read_number(f.y, y);
-  const Field spd_text = f.spd ? f.spd : f.speed;
-  const Field hdg_text = f.hdg ? f.hdg : f.heading;
-  const NumberText spd_read = read_number(spd_text, spd);
-  const NumberText hdg_read = read_number(hdg_text, hdg);
+  const Field& spd_field = f.spd.present ? f.spd : f.speed;
+  const Field& hdg_field = f.hdg.present ? f.hdg : f.heading;
+  const NumberText spd_read = read_number(spd_field, spd);
+  const NumberText hdg_read = read_number(hdg_field, hdg);
   // The first field at fault names the error: X, Y, SPD, HDG, then what is missing.
-  if (x_read == NumberText::kNotANumber) return fail(detail::not_a_number("X", *f.x));
-  if (y_read == NumberText::kNotANumber) return fail(detail::not_a_number("Y", *f.y));
-  if (spd_read == NumberText::kNotANumber) return fail(detail::not_a_number("SPD", *spd_text));
-  if (hdg_read == NumberText::kNotANumber) return fail(detail::not_a_number("HDG", *hdg_text));
+  if (x_read == NumberText::kNotANumber) return fail(detail::not_a_number("X", f.x.text));
+  if (y_read == NumberText::kNotANumber) return fail(detail::not_a_number("Y", f.y.text));
+  if (spd_read == NumberText::kNotANumber)
+    return fail(detail::not_a_number("SPD", spd_field.text));
+  if (hdg_read == NumberText::kNotANumber)
+    return fail(detail::not_a_number("HDG", hdg_field.text));
   if (x_read == NumberText::kNumber && y_read == NumberText::kNumber) {
     r.x_m = x;
     r.y_m = y;
-  } else if (f.lat && f.lon) {
+  } else if (f.lat.present && f.lon.present) {
     const std::optional<glm::dvec2> placed = place_lat_lon(f, placement, error);
     if (!placed) return fail(error);
     r.x_m = placed->x;
@@ -165,14 +130,104 @@ Parsed<NodeReport> parse_node_report(std::string_view text, const GeoPlacement* 
   if (hdg_read == NumberText::kAbsent) return fail(missing_field("HDG"));
   r.speed_mps = spd;
   r.heading_deg = base::norm360(hdg);
-  const std::string why = out_of_range(f, {r.x_m, r.y_m}, r.speed_mps, spd_text.value_or(""));
+  const std::string why = out_of_range(f, {r.x_m, r.y_m}, r.speed_mps, spd_field.text);
   if (!why.empty()) return fail(why);
   if (keep == NodeReportKeep::kPose) return result;  // nothing below can reject the report
   r.lat_deg = optional_number(f.lat);
   r.lon_deg = optional_number(f.lon);
   r.time_s = optional_number(f.time);
-  if (f.type && !f.type->empty()) r.type.emplace(f.type->data(), f.type->size());
+  if (f.type.present && !f.type.text.empty()) r.type.emplace(f.type.text.data(), f.type.text.size());
   return result;
+}
+
+// Where a field's text lies in a written report (an offset: the string moves while it grows)
+// and, for a number, what it reads as.
+struct WrittenField {
+  std::size_t at = 0;
+  std::size_t size = 0;
+  bool present = false;
+  bool has_number = false;
+  double number = 0.0;
+};
+
+struct WrittenFields {
+  WrittenField name, x, y, spd, hdg, lat, lon, time, type;
+  bool numbers_known = true;  // false: a number outside write_fmt_fast's fast path
+};
+
+// Built through a stack buffer, numbers written in place (a vehicle posts one every iteration);
+// the text is the same as appending each field with detail::append_field. With `written`, where
+// each field went and what each number reads as.
+void write_node_report(const NodeReport& r, std::string& out, WrittenFields* written) {
+  base::TextAppender a(out);
+  WrittenFields unused;
+  WrittenFields& w = written ? *written : unused;
+  const auto text = [&](std::string_view key, std::string_view value, WrittenField& f) {
+    a.put(key);
+    if (written) f = WrittenField{a.size(), value.size(), true, false, 0.0};
+    a.put(value);
+  };
+  const auto number = [&](std::string_view key, double value, int decimals, WrittenField& f) {
+    if (!written) return a.put_field(key, value, decimals);
+    a.put(key);
+    f.at = a.size();
+    f.present = true;
+    f.has_number = a.put_fmt(value, decimals, f.number);
+    w.numbers_known = w.numbers_known && f.has_number;
+    f.size = a.size() - f.at;
+  };
+  text("NAME=", r.name, w.name);
+  number(",X=", r.x_m, 2, w.x);
+  number(",Y=", r.y_m, 2, w.y);
+  number(",SPD=", r.speed_mps, 2, w.spd);
+  number(",HDG=", r.heading_deg, 2, w.hdg);
+  if (r.lat_deg) number(",LAT=", *r.lat_deg, kLatLonDecimals, w.lat);
+  if (r.lon_deg) number(",LON=", *r.lon_deg, kLatLonDecimals, w.lon);
+  if (r.time_s) number(",TIME=", *r.time_s, 3, w.time);
+  if (r.type) text(",TYPE=", *r.type, w.type);
+}
+
+// A text field the scan finds byte for byte as written: nothing that ends its piece (',') or
+// holds it open ('{'), no blank at either end for the trim to take.
+bool scans_as_written(std::string_view value) {
+  for (const char c : value)  // (find_first_of looks each byte up in the set by a call)
+    if (c == ',' || c == '{') return false;
+  return base::trim(value).size() == value.size();
+}
+
+// What NodeReportFields(text) finds in a text written with `w`, when the writing tells it: every
+// number read back by the writer, and names and types the scan takes as they are. Each field
+// is once in the text, with the key the scan looks for.
+bool fields_as_written(std::string_view text, const WrittenFields& w, NodeReportFields& fields) {
+  if (!w.numbers_known) return false;
+  const std::string_view name = text.substr(w.name.at, w.name.size);
+  const std::string_view type = text.substr(w.type.at, w.type.size);
+  if (!scans_as_written(name) || (w.type.present && !scans_as_written(type))) return false;
+  const auto field = [&](const WrittenField& f) {
+    if (!f.present) return NodeReportField{};
+    return NodeReportField{text.substr(f.at, f.size), true, f.has_number, f.number};
+  };
+  fields.name = field(w.name);
+  fields.x = field(w.x);
+  fields.y = field(w.y);
+  fields.spd = field(w.spd);
+  fields.hdg = field(w.hdg);
+  fields.lat = field(w.lat);
+  fields.lon = field(w.lon);
+  fields.time = field(w.time);
+  fields.type = field(w.type);
+  return true;
+}
+
+}  // namespace
+
+Parsed<NodeReport> parse_node_report(std::string_view text) {
+  return parse_node_report(text, nullptr);
+}
+
+Parsed<NodeReport> parse_node_report(std::string_view text, const GeoPlacement* placement,
+                                     NodeReportKeep keep) {
+  return build_node_report(NodeReportFields(text, keep == NodeReportKeep::kPose), placement, keep);
 }
 
 NodeReportMemo& NodeReportMemo::this_thread() {
@@ -180,58 +235,46 @@ NodeReportMemo& NodeReportMemo::this_thread() {
   return memo;
 }
 
-const NodeReport* NodeReportMemo::find_or_keep(std::string_view text) {
-  for (const Entry& e : entries_)
-    if (e.text == text) return &e.report;
-  Parsed<NodeReport> parsed = parse_node_report(text, nullptr, NodeReportKeep::kAll);
-  // A failure may be a LAT/LON-only report that the caller's placement would place.
-  if (!parsed || parsed.value->placed_from_lat_lon) return nullptr;
-  if (entries_.size() < kKept) {
-    entries_.push_back(Entry{std::string(text), std::move(*parsed.value)});
-    return &entries_.back().report;
+const Parsed<NodeReport>& NodeReportMemo::parse(std::string_view text,
+                                                const GeoPlacement* placement) {
+  for (std::size_t i = 0; i < used_; ++i)
+    if (entries_[i].text == text) return entries_[i].parsed;
+  ++texts_read_;
+  Parsed<NodeReport> parsed = parse_node_report(text);
+  // Kept: a report placed from its X and Y, which no placement changes. A failure may be a
+  // LAT/LON-only report that the caller's placement would place, or fail for another reason.
+  if (!parsed || parsed.value->placed_from_lat_lon) {
+    unkept_ = placement ? parse_node_report(text, placement) : std::move(parsed);
+    return unkept_;
   }
+  return keep(text, std::move(parsed));
+}
+
+const Parsed<NodeReport>& NodeReportMemo::keep(std::string_view text, Parsed<NodeReport>&& parsed) {
   Entry& e = entries_[next_];
   next_ = (next_ + 1) % kKept;
+  used_ = std::max(used_, next_ == 0 ? kKept : next_);
   e.text.assign(text.data(), text.size());
-  e.report = std::move(*parsed.value);
-  return &e.report;
+  e.parsed = std::move(parsed);
+  return e.parsed;
 }
 
-Parsed<NodeReport> NodeReportMemo::parse(std::string_view text, const GeoPlacement* placement,
-                                         NodeReportKeep keep) {
-  const NodeReport* kept = find_or_keep(text);
-  if (!kept) return parse_node_report(text, placement, keep);
-  Parsed<NodeReport> result;
-  NodeReport& r = result.value.emplace(*kept);
-  if (keep == NodeReportKeep::kPose) {  // as parse_node_report leaves them
-    r.lat_deg.reset();
-    r.lon_deg.reset();
-    r.time_s.reset();
-    r.type.reset();
-  }
-  return result;
+// The parse is built from what was written, without reading the text back: the same fields the
+// scan would find (fields_as_written), through the same checks.
+std::string NodeReportMemo::format(const NodeReport& report) {
+  std::string text;
+  WrittenFields written;
+  write_node_report(report, text, &written);
+  NodeReportFields fields;
+  if (!fields_as_written(text, written, fields)) return text;  // read when it arrives
+  Parsed<NodeReport> parsed = build_node_report(fields, nullptr, NodeReportKeep::kAll);
+  if (parsed && !parsed.value->placed_from_lat_lon) keep(text, std::move(parsed));
+  return text;
 }
 
-// Built through a stack buffer, numbers written in place (a vehicle posts one every iteration);
-// the text is the same as appending each field with detail::append_field.
 std::string format_node_report(const NodeReport& r) {
   std::string out;
-  {
-    base::TextAppender a(out);
-    a.put("NAME=");
-    a.put(r.name);
-    a.put_field(",X=", r.x_m, 2);
-    a.put_field(",Y=", r.y_m, 2);
-    a.put_field(",SPD=", r.speed_mps, 2);
-    a.put_field(",HDG=", r.heading_deg, 2);
-    if (r.lat_deg) a.put_field(",LAT=", *r.lat_deg, kLatLonDecimals);
-    if (r.lon_deg) a.put_field(",LON=", *r.lon_deg, kLatLonDecimals);
-    if (r.time_s) a.put_field(",TIME=", *r.time_s, 3);
-    if (r.type) {
-      a.put(",TYPE=");
-      a.put(*r.type);
-    }
-  }
+  write_node_report(r, out, nullptr);
   return out;
 }
 

@@ -1,0 +1,134 @@
+// NodeReportMemo::format keeps the parse of the text it writes, built from the writing instead
+// of read back: the text must be format_node_report's, and the kept parse must be what
+// parse_node_report gives for that text, bit for bit, on reports near and off the usual ones.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <optional>
+#include <random>
+#include <string>
+
+#include "hazard/messages/node_report.hpp"
+
+namespace hazard {
+namespace {
+
+std::uint64_t bits(double v) {
+  std::uint64_t b = 0;
+  std::memcpy(&b, &v, sizeof b);
+  return b;
+}
+
+std::optional<std::uint64_t> bits(std::optional<double> v) {
+  if (!v) return std::nullopt;
+  return bits(*v);
+}
+
+void expect_same_parse(const Parsed<NodeReport>& got, const Parsed<NodeReport>& want,
+                       const std::string& text) {
+  ASSERT_EQ(got.error, want.error) << text;
+  ASSERT_EQ(got.value.has_value(), want.value.has_value()) << text;
+  if (!want.value) return;
+  const NodeReport& g = *got.value;
+  const NodeReport& w = *want.value;
+  EXPECT_EQ(g.name, w.name) << text;
+  EXPECT_EQ(bits(g.x_m), bits(w.x_m)) << text;
+  EXPECT_EQ(bits(g.y_m), bits(w.y_m)) << text;
+  EXPECT_EQ(bits(g.speed_mps), bits(w.speed_mps)) << text;
+  EXPECT_EQ(bits(g.heading_deg), bits(w.heading_deg)) << text;
+  EXPECT_EQ(bits(g.lat_deg), bits(w.lat_deg)) << text;
+  EXPECT_EQ(bits(g.lon_deg), bits(w.lon_deg)) << text;
+  EXPECT_EQ(bits(g.time_s), bits(w.time_s)) << text;
+  EXPECT_EQ(g.type, w.type) << text;
+  EXPECT_EQ(g.placed_from_lat_lon, w.placed_from_lat_lon) << text;
+}
+
+double number(std::mt19937_64& rng) {
+  switch (rng() % 10) {
+    case 0:
+      return std::ldexp(static_cast<double>(rng() % 1000) - 500, static_cast<int>(rng() % 120) - 60);
+    case 1: {  // on and near the 2 and 8 decimals the text has, ties included
+      const double steps[] = {0.005, 0.125, 0.5, 0.00000001, 0.000000005};
+      return static_cast<double>(static_cast<std::int64_t>(rng() % 200001) - 100000) *
+             steps[rng() % 5];
+    }
+    case 2: {
+      const double odd[] = {0.0, -0.0, 1e15, -9e15, 1e300, 5e-324, -1e-3,
+                            std::numeric_limits<double>::infinity(),
+                            std::numeric_limits<double>::quiet_NaN(), 1e8, 100000000.5};
+      return odd[rng() % 11];
+    }
+    default: {
+      std::uniform_real_distribution<double> d(-20000.0, 20000.0);
+      return d(rng);
+    }
+  }
+}
+
+std::string text_value(std::mt19937_64& rng) {
+  const char* values[] = {"archie", "betty", "", " b", "b ", "a,b", "{a}", "a}", "a=b",
+                          "x\ty", "UUV", "kayak", "\x7f", "X=1", "1.5", "long-name_2"};
+  return values[rng() % 16];
+}
+
+NodeReport generated_report(std::mt19937_64& rng) {
+  NodeReport r;
+  r.name = rng() % 4 == 0 ? text_value(rng) : "archie";
+  r.x_m = number(rng);
+  r.y_m = number(rng);
+  r.speed_mps = rng() % 3 == 0 ? number(rng) : std::fabs(number(rng)) / 1000.0;
+  r.heading_deg = number(rng);
+  if (rng() % 4 != 0) r.lat_deg = number(rng) / 1000.0;
+  if (rng() % 4 != 0) r.lon_deg = number(rng) / 1000.0;
+  if (rng() % 4 != 0) r.time_s = rng() % 2 ? 1700000000.0 + number(rng) : number(rng);
+  if (rng() % 3 != 0) r.type = text_value(rng);
+  return r;
+}
+
+TEST(NodeReportMemoFormat, KeepsWhatTheParseOfItsTextGives) {
+  std::mt19937_64 rng(20261128);
+  NodeReportMemo memo;
+  int kept = 0;
+  for (int i = 0; i < 100000; ++i) {
+    const NodeReport r = generated_report(rng);
+    const std::string text = memo.format(r);
+    ASSERT_EQ(text, format_node_report(r));
+    const std::size_t read_before = memo.texts_read();
+    expect_same_parse(memo.parse(text, nullptr), parse_node_report(text), text);
+    if (HasFailure()) return;
+    kept += memo.texts_read() == read_before ? 1 : 0;
+  }
+  EXPECT_GT(kept, 10000);  // most reports are kept from the writing, not read back
+}
+
+TEST(NodeReportMemoFormat, AUsualReportIsKeptFromTheWritingAndAnOddOneIsRead) {
+  NodeReportMemo memo;
+  NodeReport r;
+  r.name = "archie";
+  r.x_m = -145.0;
+  r.y_m = -388.53;
+  r.speed_mps = 1.5;
+  r.heading_deg = 180.0;
+  r.lat_deg = 43.82180313;
+  r.lon_deg = -70.33220245;
+  r.time_s = 1700000250.0;
+  r.type = "UUV";
+  const std::string text = memo.format(r);
+  EXPECT_EQ(text,
+            "NAME=archie,X=-145,Y=-388.53,SPD=1.5,HDG=180,LAT=43.82180313,LON=-70.33220245,"
+            "TIME=1700000250,TYPE=UUV");
+  const Parsed<NodeReport>& kept = memo.parse(text, nullptr);
+  EXPECT_EQ(memo.texts_read(), 0U);
+  expect_same_parse(kept, parse_node_report(text), text);
+  // A name the scan would cut at its ',' is read back as it arrives.
+  r.name = "a,b";
+  const std::string odd = memo.format(r);
+  expect_same_parse(memo.parse(odd, nullptr), parse_node_report(odd), odd);
+  EXPECT_EQ(memo.texts_read(), 1U);
+}
+
+}  // namespace
+}  // namespace hazard
