@@ -47,6 +47,8 @@ std::unique_ptr<moos::MoosApp> make_app(const std::string& program, bool logged,
   if (base::iequals(program, "pHazardMgr")) return std::make_unique<phazard_mgr::HazardMgr>();
   auto vehicle = std::make_unique<usim_survey_vehicle::SimSurveyVehicle>();  // (plan checked)
   vehicle->share_node_report_parses(true);  // the sensor and managers read its reports here
+  // They read X and Y, which every report carries: LAT and LON are for the log alone.
+  vehicle->report_lat_lon(logged);
   return vehicle;
 }
 

@@ -164,7 +164,7 @@ void SimSurveyVehicle::post_node_report(const mission::Pose& pose) {
   r.y_m = pose.position_m.y;
   r.speed_mps = pose.speed_mps;
   r.heading_deg = pose.heading_deg;
-  if (geodesy_) {
+  if (geodesy_ && report_lat_lon_) {
     const mission::GeoPoint geo = geodesy_->to_geo(pose.position_m);
     r.lat_deg = geo.lat_deg;
     r.lon_deg = geo.lon_deg;

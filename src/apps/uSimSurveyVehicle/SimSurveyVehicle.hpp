@@ -68,6 +68,9 @@ class SimSurveyVehicle final : public mission_app::MissionApp {
   /// their parse for the readers of this thread (hazard_study hosts the sensor and managers;
   /// the same results). Off by default: a vehicle's own process has no readers.
   void share_node_report_parses(bool share) { share_node_report_parses_ = share; }
+  /// Whether node reports carry LAT and LON (with a LatOrigin/LongOrigin; on by default).
+  /// hazard_study turns it off when it keeps no log: every reader it hosts reads X and Y.
+  void report_lat_lon(bool report) { report_lat_lon_ = report; }
 
  protected:
   bool on_start_up() override;
@@ -99,6 +102,7 @@ class SimSurveyVehicle final : public mission_app::MissionApp {
   mission::Pose last_pose_;
   long node_reports_posted_ = 0;
   bool share_node_report_parses_ = false;
+  bool report_lat_lon_ = true;
   long routes_received_ = 0;
 };
 

@@ -75,6 +75,20 @@ TEST(StudyDeterminism, TheSameMissionTwiceGivesTheSameLineAndTheSameLogByteForBy
   EXPECT_EQ(json_line(run_mission(plan, options.settings[0], 3, {})), json_line(a));
 }
 
+// Without a log nothing is built that only a log would read (visuals, statuses, the node
+// reports' LAT and LON): each mission's line is the same as with the log.
+TEST(StudyDeterminism, WithoutALogEveryMissionEndsAsWithOne) {
+  const Options options = jake_options();
+  const MissionPlan plan = jake_plan(options);
+  for (std::uint64_t seed : {1, 2, 5}) {
+    std::string log;
+    const MissionResult logged = run_mission(plan, options.settings[0], seed, {}, &log);
+    EXPECT_NE(log.find(",LAT=43.8"), std::string::npos) << "the log's node reports have LAT";
+    EXPECT_EQ(json_line(run_mission(plan, options.settings[0], seed, {})), json_line(logged))
+        << "seed " << seed;
+  }
+}
+
 TEST(StudyDeterminism, AStudyOverSeedsAndSettingsTwiceIsByteIdentical) {
   const std::vector<std::string> args = {kJake, "--seeds=1..2", "--max-time=2000",
                                          "--setting=w25", "--setting=w20",

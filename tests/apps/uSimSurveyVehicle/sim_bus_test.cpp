@@ -137,6 +137,18 @@ TEST_F(SimOnBus, WithoutAnOriginTheReportHasNoLatLon) {
   EXPECT_FALSE(r.lon_deg.has_value());
 }
 
+// hazard_study without a log: its readers read X and Y, so the origin's LAT/LON are left out.
+TEST_F(SimOnBus, WithReportLatLonOffTheReportHasNoLatLonDespiteAnOrigin) {
+  app.emplace();
+  app->report_lat_lon(false);
+  ASSERT_TRUE(bus.start(*app, kAlias, mission_text(kAlias, kArchie)));
+  app->run_for(1.0);
+  const auto r = reports().back();
+  EXPECT_FALSE(r.lat_deg.has_value());
+  EXPECT_FALSE(r.lon_deg.has_value());
+  EXPECT_TRUE(r.time_s.has_value());
+}
+
 TEST_F(SimOnBus, NodeReportVariableIsConfigurable) {
   ASSERT_TRUE(start(kArchie + "  node_report_var = NODE_REPORT_LOCAL\n"));
   app->run_for(2.0);
