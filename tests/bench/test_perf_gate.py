@@ -63,7 +63,9 @@ class GateGates(unittest.TestCase):
         self.assertEqual(result.returncode, 1, result.stdout + result.stderr)
         row = next(l for l in result.stdout.splitlines() if l.startswith(WORKLOAD))
         self.assertIn("FAIL", row)
-        self.assertIn("+5.0", row)
+        # About +5 %: mimalloc moves a count by a few thousandths of a percent run to run.
+        change = float(row.split("%")[0].split()[-1])
+        self.assertAlmostEqual(change, 5.0, delta=0.05, msg=row)
         self.assertIn("instruction-count gate: FAILED", result.stdout)
 
     def test_growth_within_the_tolerance_passes(self):
