@@ -240,10 +240,11 @@ const Parsed<NodeReport>& NodeReportMemo::parse(std::string_view text,
   for (std::size_t i = 0; i < used_; ++i)
     if (entries_[i].text == text) return entries_[i].parsed;
   ++texts_read_;
+  // Without a placement only X and Y place a report, and no placement changes that: what this
+  // parse accepts is kept for every reader. A failure may be a LAT/LON-only report that the
+  // caller's placement would place, or fail for another reason.
   Parsed<NodeReport> parsed = parse_node_report(text);
-  // Kept: a report placed from its X and Y, which no placement changes. A failure may be a
-  // LAT/LON-only report that the caller's placement would place, or fail for another reason.
-  if (!parsed || parsed.value->placed_from_lat_lon) {
+  if (!parsed) {
     unkept_ = placement ? parse_node_report(text, placement) : std::move(parsed);
     return unkept_;
   }
@@ -267,8 +268,9 @@ std::string NodeReportMemo::format(const NodeReport& report) {
   write_node_report(report, text, &written);
   NodeReportFields fields;
   if (!fields_as_written(text, written, fields)) return text;  // read when it arrives
+  // Without a placement, as parse() keeps it: a written report always has X and Y.
   Parsed<NodeReport> parsed = build_node_report(fields, nullptr, NodeReportKeep::kAll);
-  if (parsed && !parsed.value->placed_from_lat_lon) keep(text, std::move(parsed));
+  if (parsed) keep(text, std::move(parsed));
   return text;
 }
 
