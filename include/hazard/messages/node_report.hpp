@@ -70,13 +70,15 @@ class NodeReportMemo {
   std::size_t texts_read() const { return texts_read_; }
 
  private:
-  const Parsed<NodeReport>& keep(std::string_view text, Parsed<NodeReport>&& parsed);
-
   static constexpr std::size_t kKept = 4;  // the latest reports of a few vehicles
   struct Entry {
     std::string text;
     Parsed<NodeReport> parsed;
   };
+
+  const Parsed<NodeReport>& keep(std::string_view text, Parsed<NodeReport>&& parsed);
+  /// The entry replaced next, now holding `text` (its parse is the caller's to set).
+  Entry& next_entry(std::string_view text);
 
   std::array<Entry, kKept> entries_;
   std::size_t used_ = 0;   // entries in use

@@ -195,28 +195,43 @@ bool scans_as_written(std::string_view value) {
   return base::trim(value).size() == value.size();
 }
 
-// What NodeReportFields(text) finds in a text written with `w`, when the writing tells it: every
-// number read back by the writer, and names and types the scan takes as they are. Each field
-// is once in the text, with the key the scan looks for.
-bool fields_as_written(std::string_view text, const WrittenFields& w, NodeReportFields& fields) {
+// Whether NodeReportFields(text) finds what was written with `w` (every number read back by
+// the writer, names and types taken as they are: each field is once in the text, with the key
+// the scan looks for) and build_node_report accepts those fields without a placement: the name
+// valid_vehicle_name's, the position and speed within out_of_range's limits.
+bool accepted_as_written(std::string_view text, const WrittenFields& w) {
   if (!w.numbers_known) return false;
   const std::string_view name = text.substr(w.name.at, w.name.size);
-  const std::string_view type = text.substr(w.type.at, w.type.size);
-  if (!scans_as_written(name) || (w.type.present && !scans_as_written(type))) return false;
-  const auto field = [&](const WrittenField& f) {
-    if (!f.present) return NodeReportField{};
-    return NodeReportField{text.substr(f.at, f.size), true, f.has_number, f.number};
+  if (!scans_as_written(name) || name.empty() || name.size() > kMaxVehicleNameBytes ||
+      detail::has_control_byte(name))
+    return false;
+  if (w.type.present && !scans_as_written(text.substr(w.type.at, w.type.size))) return false;
+  const double spd = w.spd.number;
+  return std::fabs(w.x.number) <= kMaxNodeCoordinate_m &&
+         std::fabs(w.y.number) <= kMaxNodeCoordinate_m && spd >= 0.0 && spd <= kMaxNodeSpeed_mps;
+}
+
+// What build_node_report makes of an accepted text's fields (kAll, no placement), written over
+// `r`: an entry's report, whose strings keep their capacity from one report to the next.
+void assign_as_written(std::string_view text, const WrittenFields& w, NodeReport& r) {
+  const auto number = [](const WrittenField& f) {
+    return f.present ? std::optional<double>(f.number) : std::nullopt;
   };
-  fields.name = field(w.name);
-  fields.x = field(w.x);
-  fields.y = field(w.y);
-  fields.spd = field(w.spd);
-  fields.hdg = field(w.hdg);
-  fields.lat = field(w.lat);
-  fields.lon = field(w.lon);
-  fields.time = field(w.time);
-  fields.type = field(w.type);
-  return true;
+  r.name.assign(text.data() + w.name.at, w.name.size);
+  r.x_m = w.x.number;
+  r.y_m = w.y.number;
+  r.speed_mps = w.spd.number;
+  r.heading_deg = base::norm360(w.hdg.number);
+  r.lat_deg = number(w.lat);
+  r.lon_deg = number(w.lon);
+  r.time_s = number(w.time);
+  if (w.type.present && w.type.size > 0) {
+    if (!r.type) r.type.emplace();
+    r.type->assign(text.data() + w.type.at, w.type.size);
+  } else {
+    r.type.reset();
+  }
+  r.placed_from_lat_lon = false;
 }
 
 }  // namespace
@@ -252,25 +267,33 @@ const Parsed<NodeReport>& NodeReportMemo::parse(std::string_view text,
 }
 
 const Parsed<NodeReport>& NodeReportMemo::keep(std::string_view text, Parsed<NodeReport>&& parsed) {
-  Entry& e = entries_[next_];
-  next_ = (next_ + 1) % kKept;
-  used_ = std::max(used_, next_ == 0 ? kKept : next_);
-  e.text.assign(text.data(), text.size());
+  Entry& e = next_entry(text);
   e.parsed = std::move(parsed);
   return e.parsed;
 }
 
-// The parse is built from what was written, without reading the text back: the same fields the
-// scan would find (fields_as_written), through the same checks.
+NodeReportMemo::Entry& NodeReportMemo::next_entry(std::string_view text) {
+  Entry& e = entries_[next_];
+  next_ = (next_ + 1) % kKept;
+  used_ = std::max(used_, next_ == 0 ? kKept : next_);
+  e.text.assign(text.data(), text.size());
+  return e;
+}
+
+// The parse is known from what was written, without reading the text back: what the scan and
+// build_node_report would give (accepted_as_written, assign_as_written), written into the
+// entry in place.
 std::string NodeReportMemo::format(const NodeReport& report) {
   std::string text;
   WrittenFields written;
   write_node_report(report, text, &written);
-  NodeReportFields fields;
-  if (!fields_as_written(text, written, fields)) return text;  // read when it arrives
-  // Without a placement, as parse() keeps it: a written report always has X and Y.
-  Parsed<NodeReport> parsed = build_node_report(fields, nullptr, NodeReportKeep::kAll);
-  if (parsed) keep(text, std::move(parsed));
+  // Without a placement, as parse() keeps it: a written report always has X and Y. A text
+  // the writing cannot vouch for is read when it arrives.
+  if (!accepted_as_written(text, written)) return text;
+  Entry& e = next_entry(text);
+  e.parsed.error.clear();  // (a kept entry has none; a fresh one is empty)
+  if (!e.parsed.value) e.parsed.value.emplace();
+  assign_as_written(text, written, *e.parsed.value);
   return text;
 }
 
