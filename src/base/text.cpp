@@ -89,13 +89,16 @@ int decimal_digits(std::uint64_t v) {
   return guess + ((v | 1) >= kPow10Int[guess] ? 1 : 0);  // 0 has one digit too
 }
 
-std::optional<FixedText> fixed_fast_text(double value, int decimals, bool fmt) {
+// Filled in `t`, false outside the fast path. Inlined into each writer (every number of every
+// posting): a returned std::optional<FixedText> went through memory, a call each way.
+[[gnu::always_inline]] inline bool fixed_fast_text(double value, int decimals, bool fmt,
+                                                   FixedText& t) {
   static constexpr double kPow10[kMaxFastDecimals + 1] = {1e0, 1e1, 1e2, 1e3, 1e4,
                                                          1e5, 1e6, 1e7, 1e8, 1e9};
-  if (decimals > kMaxFastDecimals) return std::nullopt;
+  if (decimals > kMaxFastDecimals) return false;
   const double magnitude = std::fabs(value);
   const double scaled = magnitude * kPow10[decimals];
-  if (!(scaled < 0x1p53)) return std::nullopt;  // also NaN and infinities
+  if (!(scaled < 0x1p53)) return false;  // also NaN and infinities
   // Truncation is floor here (0 <= scaled < 2^53), without a library call.
   const auto whole_units = static_cast<std::uint64_t>(scaled);
   const auto whole = static_cast<double>(whole_units);
@@ -113,7 +116,6 @@ std::optional<FixedText> fixed_fast_text(double value, int decimals, bool fmt) {
   const std::uint64_t units = whole_units + (round_up ? 1 : 0);
   // The whole part without a division: floor(|value|) * 10^decimals <= units (both sides
   // round monotonically), and rounding up carries at most once into the whole part.
-  FixedText t;
   const std::uint64_t scale = kPow10Int[decimals];
   t.whole = static_cast<std::uint64_t>(magnitude);
   t.fraction = units - t.whole * scale;
@@ -130,12 +132,12 @@ std::optional<FixedText> fixed_fast_text(double value, int decimals, bool fmt) {
   const int length = (t.negative ? 1 : 0) + decimal_digits(t.whole) +
                      (t.shown > 0 ? 1 + t.shown : 0);
   t.length = static_cast<std::size_t>(length);
-  return t;
+  return true;
 }
 
 // Writes the text so that it ends at `end` (t.length bytes before it), from the right, two
 // digits per division.
-void write_fixed_text(const FixedText& t, char* end) {
+[[gnu::always_inline]] inline void write_fixed_text(const FixedText& t, char* end) {
   static constexpr char kPairs[] =
       "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
       "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
@@ -164,11 +166,11 @@ void write_fixed_text(const FixedText& t, char* end) {
 
 // The fast path's text appended to `out` in place; false outside the fast path.
 bool append_fixed_fast(std::string& out, double value, int decimals, bool fmt) {
-  const std::optional<FixedText> t = fixed_fast_text(value, decimals, fmt);
-  if (!t) return false;
+  FixedText t;
+  if (!fixed_fast_text(value, decimals, fmt, t)) return false;
   const std::size_t at = out.size();
-  out.resize(at + t->length);
-  write_fixed_text(*t, out.data() + at + t->length);
+  out.resize(at + t.length);
+  write_fixed_text(t, out.data() + at + t.length);
   return true;
 }
 
@@ -208,23 +210,21 @@ void append_fmt(std::string& out, double value, int decimals) {
 }
 
 char* write_fmt_fast(char* dest, double value, int decimals) {
-  const std::optional<FixedText> t =
-      fixed_fast_text(value, std::clamp(decimals, 0, kMaxDecimals), /*fmt=*/true);
-  if (!t) return nullptr;
-  write_fixed_text(*t, dest + t->length);
-  return dest + t->length;
+  FixedText t;
+  if (!fixed_fast_text(value, std::max(decimals, 0), /*fmt=*/true, t)) return nullptr;
+  write_fixed_text(t, dest + t.length);
+  return dest + t.length;
 }
 
 char* write_fmt_fast(char* dest, double value, int decimals, double& read_back) {
-  const std::optional<FixedText> t =
-      fixed_fast_text(value, std::clamp(decimals, 0, kMaxDecimals), /*fmt=*/true);
-  if (!t) return nullptr;
-  write_fixed_text(*t, dest + t->length);
+  FixedText t;
+  if (!fixed_fast_text(value, std::max(decimals, 0), /*fmt=*/true, t)) return nullptr;
+  write_fixed_text(t, dest + t.length);
   // The text's digits as one integer over 10^shown: what read_plain_decimal computes from it
   // (the fast path keeps that integer at most 2^53, with at most 9 decimals).
-  read_back = plain_decimal_value(t->whole * kPow10Int[t->shown] + t->fraction,
-                                  static_cast<std::size_t>(t->shown), t->negative);
-  return dest + t->length;
+  read_back = plain_decimal_value(t.whole * kPow10Int[t.shown] + t.fraction,
+                                  static_cast<std::size_t>(t.shown), t.negative);
+  return dest + t.length;
 }
 
 std::string joined(std::initializer_list<std::string_view> pieces) {
