@@ -141,46 +141,66 @@ Parsed<NodeReport> build_node_report(const NodeReportFields& f, const GeoPlaceme
 }
 
 // Where a field's text lies in a written report (an offset: the string moves while it grows)
-// and, for a number, what it reads as.
+// and, for a number, what it reads as. No member initialisers: the writer sets every field,
+// and zeroing the whole set first was a tenth of the writing.
 struct WrittenField {
-  std::size_t at = 0;
-  std::size_t size = 0;
-  bool present = false;
-  bool has_number = false;
-  double number = 0.0;
+  std::size_t at;
+  std::size_t size;
+  bool present;
+  bool has_number;
+  double number;
 };
 
 struct WrittenFields {
+  WrittenFields() {}  // NOLINT(modernize-use-equals-default): no zeroing (see WrittenField)
   WrittenField name, x, y, spd, hdg, lat, lon, time, type;
-  bool numbers_known = true;  // false: a number outside write_fmt_fast's fast path
+  bool numbers_known;  // false: a number outside write_fmt_fast's fast path
 };
 
 // Built through a stack buffer, numbers written in place (a vehicle posts one every iteration);
-// the text is the same as appending each field with detail::append_field. With `written`, where
-// each field went and what each number reads as.
-void write_node_report(const NodeReport& r, std::string& out, WrittenFields* written) {
+// the text is the same as appending each field with detail::append_field.
+void write_node_report(const NodeReport& r, std::string& out) {
   base::TextAppender a(out);
-  WrittenFields unused;
-  WrittenFields& w = written ? *written : unused;
+  a.put("NAME=");
+  a.put(r.name);
+  a.put_field(",X=", r.x_m, 2);
+  a.put_field(",Y=", r.y_m, 2);
+  a.put_field(",SPD=", r.speed_mps, 2);
+  a.put_field(",HDG=", r.heading_deg, 2);
+  if (r.lat_deg) a.put_field(",LAT=", *r.lat_deg, kLatLonDecimals);
+  if (r.lon_deg) a.put_field(",LON=", *r.lon_deg, kLatLonDecimals);
+  if (r.time_s) a.put_field(",TIME=", *r.time_s, 3);
+  if (r.type) {
+    a.put(",TYPE=");
+    a.put(*r.type);
+  }
+}
+
+// The same text (NodeReportMemoFormat holds the two to each other), and in `w` where each field
+// went and what each number reads as.
+void write_node_report(const NodeReport& r, std::string& out, WrittenFields& w) {
+  base::TextAppender a(out);
+  w.numbers_known = true;
   const auto text = [&](std::string_view key, std::string_view value, WrittenField& f) {
     a.put(key);
-    if (written) f = WrittenField{a.size(), value.size(), true, false, 0.0};
+    f = WrittenField{a.size(), value.size(), true, false, 0.0};
     a.put(value);
   };
   const auto number = [&](std::string_view key, double value, int decimals, WrittenField& f) {
-    if (!written) return a.put_field(key, value, decimals);
     a.put(key);
-    f.at = a.size();
-    f.present = true;
-    f.has_number = a.put_fmt(value, decimals, f.number);
-    w.numbers_known = w.numbers_known && f.has_number;
-    f.size = a.size() - f.at;
+    const std::size_t at = a.size();
+    double read_back = 0.0;
+    const bool known = a.put_fmt(value, decimals, read_back);
+    f = WrittenField{at, a.size() - at, true, known, read_back};
+    w.numbers_known = w.numbers_known && known;
   };
+  constexpr WrittenField kAbsent{0, 0, false, false, 0.0};
   text("NAME=", r.name, w.name);
   number(",X=", r.x_m, 2, w.x);
   number(",Y=", r.y_m, 2, w.y);
   number(",SPD=", r.speed_mps, 2, w.spd);
   number(",HDG=", r.heading_deg, 2, w.hdg);
+  w.lat = w.lon = w.time = w.type = kAbsent;
   if (r.lat_deg) number(",LAT=", *r.lat_deg, kLatLonDecimals, w.lat);
   if (r.lon_deg) number(",LON=", *r.lon_deg, kLatLonDecimals, w.lon);
   if (r.time_s) number(",TIME=", *r.time_s, 3, w.time);
@@ -192,7 +212,20 @@ void write_node_report(const NodeReport& r, std::string& out, WrittenFields* wri
 bool scans_as_written(std::string_view value) {
   for (const char c : value)  // (find_first_of looks each byte up in the set by a call)
     if (c == ',' || c == '{') return false;
-  return base::trim(value).size() == value.size();
+  return value.empty() ||
+         (!base::detail::is_trimmed(value.front()) && !base::detail::is_trimmed(value.back()));
+}
+
+// A name that scans as written and that valid_vehicle_name accepts (non-empty, at most
+// kMaxVehicleNameBytes, no control byte), in one pass: a control byte is also every blank the
+// trim takes but ' '.
+bool plain_vehicle_name(std::string_view name) {
+  if (name.empty() || name.size() > kMaxVehicleNameBytes) return false;
+  for (const char c : name) {
+    const auto b = static_cast<unsigned char>(c);
+    if (b < 0x20 || b == 0x7F || c == ',' || c == '{') return false;
+  }
+  return name.front() != ' ' && name.back() != ' ';
 }
 
 // Whether NodeReportFields(text) finds what was written with `w` (every number read back by
@@ -201,10 +234,7 @@ bool scans_as_written(std::string_view value) {
 // valid_vehicle_name's, the position and speed within out_of_range's limits.
 bool accepted_as_written(std::string_view text, const WrittenFields& w) {
   if (!w.numbers_known) return false;
-  const std::string_view name = text.substr(w.name.at, w.name.size);
-  if (!scans_as_written(name) || name.empty() || name.size() > kMaxVehicleNameBytes ||
-      detail::has_control_byte(name))
-    return false;
+  if (!plain_vehicle_name(text.substr(w.name.at, w.name.size))) return false;
   if (w.type.present && !scans_as_written(text.substr(w.type.at, w.type.size))) return false;
   const double spd = w.spd.number;
   return std::fabs(w.x.number) <= kMaxNodeCoordinate_m &&
@@ -286,7 +316,7 @@ NodeReportMemo::Entry& NodeReportMemo::next_entry(std::string_view text) {
 std::string NodeReportMemo::format(const NodeReport& report) {
   std::string text;
   WrittenFields written;
-  write_node_report(report, text, &written);
+  write_node_report(report, text, written);
   // Without a placement, as parse() keeps it: a written report always has X and Y. A text
   // the writing cannot vouch for is read when it arrives.
   if (!accepted_as_written(text, written)) return text;
@@ -299,7 +329,7 @@ std::string NodeReportMemo::format(const NodeReport& report) {
 
 std::string format_node_report(const NodeReport& r) {
   std::string out;
-  write_node_report(r, out, nullptr);
+  write_node_report(r, out);
   return out;
 }
 
