@@ -158,19 +158,21 @@ void SimSurveyVehicle::on_iterate() {
 }
 
 void SimSurveyVehicle::post_node_report(const mission::Pose& pose) {
-  hazard::NodeReport r;
-  r.name = vname_;
+  hazard::NodeReport& r = report_;
+  if (r.name != vname_) r.name = vname_;
   r.x_m = pose.position_m.x;
   r.y_m = pose.position_m.y;
   r.speed_mps = pose.speed_mps;
   r.heading_deg = pose.heading_deg;
+  r.lat_deg.reset();
+  r.lon_deg.reset();
   if (geodesy_ && report_lat_lon_) {
     const mission::GeoPoint geo = geodesy_->to_geo(pose.position_m);
     r.lat_deg = geo.lat_deg;
     r.lon_deg = geo.lon_deg;
   }
   r.time_s = pose.time_s;
-  r.type = vehicle_type_;
+  if (!r.type || *r.type != vehicle_type_) r.type = vehicle_type_;
   std::string text = share_node_report_parses_ ? hazard::NodeReportMemo::this_thread().format(r)
                                                : hazard::format_node_report(r);
   notify(node_report_var_, std::move(text));  // the text moves on, uncopied

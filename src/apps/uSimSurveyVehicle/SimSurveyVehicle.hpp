@@ -28,6 +28,7 @@
 #include <string>
 #include <vector>
 
+#include "hazard/messages/node_report.hpp"
 #include "mission/geodesy.hpp"
 #include "mission/params.hpp"
 #include "mission/vehicle.hpp"
@@ -104,6 +105,9 @@ class SimSurveyVehicle final : public mission_app::MissionApp {
   bool share_node_report_parses_ = false;
   bool report_lat_lon_ = true;
   long routes_received_ = 0;
+  /// The report written each iteration, kept so that its name and type are copied once, not
+  /// ten times a second.
+  hazard::NodeReport report_;
 };
 
 }  // namespace usim_survey_vehicle
