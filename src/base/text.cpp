@@ -58,7 +58,9 @@ constexpr double kExactPowersOfTen[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,
 // (at most 2^53 and 22): one correctly rounded division. The one definition read_plain_decimal
 // and the writer's read-back share.
 double plain_decimal_value(std::uint64_t mantissa, std::size_t decimals, bool negative) {
-  const double v = static_cast<double>(mantissa) / kExactPowersOfTen[decimals];
+  // (through int64: one instruction; the mantissa is below 2^63)
+  const double v = static_cast<double>(static_cast<std::int64_t>(mantissa)) /
+                   kExactPowersOfTen[decimals];
   return negative ? -v : v;
 }
 
@@ -99,9 +101,11 @@ int decimal_digits(std::uint64_t v) {
   const double magnitude = std::fabs(value);
   const double scaled = magnitude * kPow10[decimals];
   if (!(scaled < 0x1p53)) return false;  // also NaN and infinities
-  // Truncation is floor here (0 <= scaled < 2^53), without a library call.
-  const auto whole_units = static_cast<std::uint64_t>(scaled);
-  const auto whole = static_cast<double>(whole_units);
+  // Truncation is floor here (0 <= scaled < 2^53), without a library call; through int64,
+  // which converts in one instruction each way (uint64 needs a branch for 2^63 and above).
+  const auto whole_units_signed = static_cast<std::int64_t>(scaled);
+  const auto whole_units = static_cast<std::uint64_t>(whole_units_signed);
+  const auto whole = static_cast<double>(whole_units_signed);
   const double fraction = scaled - whole;  // exact below 2^53
   bool round_up = fraction > 0.5;
   if (std::fabs(fraction - 0.5) <= scaled * 0x1p-50) {
@@ -117,7 +121,7 @@ int decimal_digits(std::uint64_t v) {
   // The whole part without a division: floor(|value|) * 10^decimals <= units (both sides
   // round monotonically), and rounding up carries at most once into the whole part.
   const std::uint64_t scale = kPow10Int[decimals];
-  t.whole = static_cast<std::uint64_t>(magnitude);
+  t.whole = static_cast<std::uint64_t>(static_cast<std::int64_t>(magnitude));
   t.fraction = units - t.whole * scale;
   if (t.fraction >= scale) {
     ++t.whole;
