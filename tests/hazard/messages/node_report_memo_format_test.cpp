@@ -68,10 +68,17 @@ double number(std::mt19937_64& rng) {
   }
 }
 
+// Names and types on and off the rules the writing checks itself: blanks the trim takes at
+// either end, control bytes, the bytes that end or hold open a piece, names at and past
+// kMaxVehicleNameBytes (128).
 std::string text_value(std::mt19937_64& rng) {
   const char* values[] = {"archie", "betty", "", " b", "b ", "a,b", "{a}", "a}", "a=b",
-                          "x\ty", "UUV", "kayak", "\x7f", "X=1", "1.5", "long-name_2"};
-  return values[rng() % 16];
+                          "x\ty", "UUV", "kayak", "\x7f", "X=1", "1.5", "long-name_2",
+                          "\tb", "b\r", "\nb", "b\x1f"};
+  const std::size_t pick = rng() % 22;
+  if (pick == 20) return std::string(128, 'n');
+  if (pick == 21) return std::string(129, 'n');
+  return values[pick];
 }
 
 NodeReport generated_report(std::mt19937_64& rng) {
