@@ -256,6 +256,10 @@ class MoosApp {
   /// A cycle this close to its due time (as a fraction of the period) counts as on time; MOOS
   /// times near 1e12 (epoch x warp 400) carry only ~1e-4 s of resolution.
   static constexpr double kScheduleToleranceFraction = 1e-3;
+  /// A cycle that starts less than this many periods after its slot keeps the AppTick grid:
+  /// the slot it overran runs at once after it. Later than that, the missed slots are skipped,
+  /// so an app that cannot keep up is never more than this far behind.
+  static constexpr double kMaxCatchUpPeriods = 2.0;
   /// Longest plain sleep of the real main loop, so that `external_stop` is seen promptly (an
   /// idle sleep is woken by mail and by request_stop() instead).
   static constexpr double kMaxLoopSleep_real_s = 0.1;

@@ -270,12 +270,16 @@ bool MoosApp::start(Comms& comms, AppSettings settings) {
 void MoosApp::schedule_next(double cycle_start) {
   const double period = 1.0 / settings_.app_tick_hz;
   const double tolerance = period * kScheduleToleranceFraction;
-  if (cycle_start + tolerance < next_due_moos_s_) {
+  const double due = due_moos_s();  // the slot this cycle had, IdleAppTick's skipping included
+  const double late = cycle_start - due;
+  if (late + tolerance < 0) {
     next_due_moos_s_ = cycle_start + period;  // an early (manual) cycle restarts the schedule
-  } else if (cycle_start - next_due_moos_s_ < period) {
-    next_due_moos_s_ += period;  // on time: keep the grid, no drift
+  } else if (late < kMaxCatchUpPeriods * period) {
+    // On time, or woken late by a loaded machine: keep the grid. A slot already past runs at
+    // once, so a late wake-up costs no cycle.
+    next_due_moos_s_ = due + period;
   } else {
-    next_due_moos_s_ = cycle_start + period;  // late by more than a period: skip missed slots
+    next_due_moos_s_ = cycle_start + period;  // far behind: skip the missed slots
   }
 }
 

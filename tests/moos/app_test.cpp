@@ -289,6 +289,33 @@ TEST_F(AppOnBus, CycleIfDueFollowsTheSchedule_7_1) {
   EXPECT_EQ(app.iterations, 2);
 }
 
+TEST_F(AppOnBus, ALateCycleKeepsTheGridAndRunsTheSlotItOverranAtOnce) {
+  start(settings_for("pEcho", 4.0));  // slots at 0, 0.25, 0.5, ...
+  EXPECT_TRUE(app.cycle_if_due());
+  clock.advance_real_s(0.55);  // the slot at 0.25 wakes 0.3 s (1.2 periods) late
+  EXPECT_TRUE(app.cycle_if_due());
+  EXPECT_TRUE(app.cycle_if_due());   // the slot at 0.5, already past, runs at once
+  EXPECT_FALSE(app.cycle_if_due());  // then the grid again: next at 0.75
+  clock.advance_real_s(0.19);
+  EXPECT_FALSE(app.cycle_if_due());
+  clock.advance_real_s(0.01);
+  EXPECT_TRUE(app.cycle_if_due());
+  EXPECT_EQ(app.iterations, 4);
+}
+
+TEST_F(AppOnBus, ACycleTwoPeriodsLateSkipsTheMissedSlots) {
+  start(settings_for("pEcho", 4.0));
+  EXPECT_TRUE(app.cycle_if_due());
+  clock.advance_real_s(0.8);  // the slot at 0.25 wakes 0.55 s (2.2 periods) late
+  EXPECT_TRUE(app.cycle_if_due());
+  EXPECT_FALSE(app.cycle_if_due());  // the slots at 0.5 and 0.75 are gone; next at 1.05
+  clock.advance_real_s(0.24);
+  EXPECT_FALSE(app.cycle_if_due());
+  clock.advance_real_s(0.01);
+  EXPECT_TRUE(app.cycle_if_due());
+  EXPECT_EQ(app.iterations, 3);
+}
+
 TEST_F(AppOnBus, MailIsSortedByTimeAndFrameworkMailRemoved_7_1) {
   start();
   tester->notify("IN", 3.0, kT0 + 3);
