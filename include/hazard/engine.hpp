@@ -226,7 +226,15 @@ class Engine {
   void release_classifications(double now_s, Outputs& out);
 
   bool active(const VehicleState& v, double now_s) const;
-  double degradation(const HazardObject& o, double heading_deg) const;
+  double degradation(const HazardField::Aspect& a, double heading_deg) const;
+  /// UHZ_DETECTION_REPORT, then UHZ_DETECTION_REPORT_<V>.
+  static void post_detection_report(const VehicleState& v, glm::dvec2 position,
+                                    std::string_view label, const HazardField::Aspect* aspect,
+                                    Outputs& out);
+  /// UHZ_HAZARD_REPORT_<V>, then UHZ_HAZARD_REPORT.
+  static void post_hazard_report(const VehicleState& v, glm::dvec2 position,
+                                 std::string_view label, ObjectType reported,
+                                 const HazardField::Aspect* aspect, Outputs& out);
   /// The id of the vehicle `name`, recorded (in name order) when first seen, its last mail time
   /// set to `now_s`; nullopt (with a warning and a counted drop) when the table is full.
   std::optional<VehicleId> vehicle_id(std::string_view name, double now_s, Outputs& out);
