@@ -67,7 +67,8 @@ void Engine::handle_classify_request(const ClassifyRequest& r, double now_s, Out
   v.last_mail_s = now_s;
   ++v.counters.classify_requests;
   if (v.queue.size() >= kMaxClassifyQueue) return refuse_queue_full(v, r.label, out);
-  const auto object = field_.find(r.label);
+  const std::uint64_t label_hash = hash_name(r.label);
+  const auto object = find_object(r.label, label_hash);
   if (!object) {
     out.run_warnings.push_back(v.name + " classify request for unknown label: " +
                                base::log_excerpt(r.label));
@@ -103,7 +104,7 @@ void Engine::handle_classify_request(const ClassifyRequest& r, double now_s, Out
                                               degradation(*aspect, credit.heading_deg))
           : pc_resemblance;
   const std::string_view label = field_.label(*object);
-  const double die = dice_.classification_v(v.name_hash, hash_name(label), credit.pass);
+  const double die = dice_.classification_v(v.name_hash, label_hash, credit.pass);
   const bool correct = classification_correct(die, pc_aspect);
   notify(v, *object, credit.pass, DiePurpose::kClassification, correct);
   PendingAnswer answer;
@@ -115,6 +116,16 @@ void Engine::handle_classify_request(const ClassifyRequest& r, double now_s, Out
   v.queue.push(answer, r.priority.value_or(kDefaultClassifyPriority), top);
   if (top) v.last_top_s = now_s;
   out.events.push_back(queued_event(v.name, label, credit.pass, pc_aspect, die));
+}
+
+std::optional<ObjectId> Engine::find_object(std::string_view label, std::uint64_t hash) const {
+  const ObjectId recent = recent_objects_[mix64(hash) & (kRecentObjectSlots - 1)];
+  if (recent < field_.size() && field_.label(recent) == label) return recent;
+  return field_.find(label);
+}
+
+void Engine::remember_object(ObjectId id, std::uint64_t hash) {
+  recent_objects_[mix64(hash) & (kRecentObjectSlots - 1)] = id;
 }
 
 // The queue is bounded (kMaxClassifyQueue): the request is refused before its credit is used.

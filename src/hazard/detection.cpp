@@ -42,12 +42,14 @@ void Engine::roll_detection(VehicleState& v, ObjectId id, double heading_deg, do
     }
   }
   const std::string_view label = field_.label(id);
-  const double u = dice_.detection_u(v.name_hash, hash_name(label), pass);
+  const std::uint64_t label_hash = hash_name(label);
+  const double u = dice_.detection_u(v.name_hash, label_hash, pass);
   const bool detected = detection_succeeds(u, degraded_p);
   notify(v, id, pass, DiePurpose::kDetection, detected);
   if (!detected) return;
 
   ++v.counters.detections;
+  remember_object(id, label_hash);  // its classify request follows
   ++(hazard ? v.counters.hazard_reports : v.counters.benign_reports);
   grant_credit(v, id, record, Credit{pass, heading_deg}, out);
   const glm::dvec2 position = field_.position(id);
