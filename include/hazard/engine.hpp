@@ -285,6 +285,7 @@ class Engine {
   /// The next object whose visuals are due; field_.size() when none are (nothing scheduled).
   std::size_t visuals_cursor_ = 0;
   std::vector<ObjectId> scratch_inside_;          ///< reused by update_entries and sense_track
+  std::vector<ObjectId> scratch_entering_;        ///< reused by update_entries
   std::vector<ObjectId> scratch_candidates_;      ///< reused by sense_track
   std::vector<std::uint32_t> scratch_event_pieces_;  ///< reused by sense_track
   std::function<void(const Decision&)> observer_;
