@@ -4,7 +4,6 @@
 
 #include "moos/codec.hpp"
 
-#include <algorithm>
 #include <cstring>
 #include <limits>
 #include <stdexcept>
@@ -17,10 +16,6 @@ namespace {
 
 constexpr std::size_t kInt32Size = 4;
 constexpr std::size_t kDoubleSize = 8;
-// Messages are decoded into slots reused packet after packet, whatever their variable: a string
-// that must grow grows to at least this, so a slot that held a short value (a request) does not
-// reallocate again at the next longer one (a node report).
-constexpr std::size_t kMinGrownCapacity = 64;
 /// write_packet keeps its buffer's capacity between packets up to this much.
 constexpr std::size_t kKeptPacketCapacity = std::size_t{1} << 20;
 
@@ -120,9 +115,7 @@ class FieldReader {
     if (n < 0) return fail(at, std::string("negative length for ") + field, error);
     if (static_cast<std::size_t>(n) > bytes_.size() - pos_)
       return fail(at, std::string("string ") + field + " runs past the end of the message", error);
-    const auto size = static_cast<std::size_t>(n);
-    if (size > v.capacity()) v.reserve(std::max(size, kMinGrownCapacity));
-    v.assign(bytes_.data() + pos_, size);
+    v.assign(bytes_.data() + pos_, static_cast<std::size_t>(n));
     pos_ += static_cast<std::size_t>(n);
     return true;
   }
