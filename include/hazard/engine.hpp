@@ -119,6 +119,12 @@ struct Decision {
   bool outcome = false;
 };
 
+/// Slots of the engine's cache in front of the field's label lookup, filled by detections (the
+/// slot of a label: mix64(hash_name(label)) modulo this): a classify request names an object
+/// detected moments before, and in a field of a million objects the label table's lookup is a
+/// cache miss or two. A hit is checked against the label, so a collision is only a miss.
+inline constexpr std::size_t kRecentObjectSlots = 4096;
+
 class Engine {
  public:
   Engine(EngineSetup setup, SeedChoice seed);
@@ -226,7 +232,15 @@ class Engine {
   void release_classifications(double now_s, Outputs& out);
 
   bool active(const VehicleState& v, double now_s) const;
-  double degradation(const HazardObject& o, double heading_deg) const;
+  double degradation(const HazardField::Aspect& a, double heading_deg) const;
+  /// UHZ_DETECTION_REPORT, then UHZ_DETECTION_REPORT_<V>.
+  static void post_detection_report(const VehicleState& v, glm::dvec2 position,
+                                    std::string_view label, const HazardField::Aspect* aspect,
+                                    Outputs& out);
+  /// UHZ_HAZARD_REPORT_<V>, then UHZ_HAZARD_REPORT.
+  static void post_hazard_report(const VehicleState& v, glm::dvec2 position,
+                                 std::string_view label, ObjectType reported,
+                                 const HazardField::Aspect* aspect, Outputs& out);
   /// The id of the vehicle `name`, recorded (in name order) when first seen, its last mail time
   /// set to `now_s`; nullopt (with a warning and a counted drop) when the table is full.
   std::optional<VehicleId> vehicle_id(std::string_view name, double now_s, Outputs& out);
@@ -235,6 +249,10 @@ class Engine {
   std::optional<VehicleId> free_vehicle_slot(std::string_view name, double now_s, Outputs& out);
   /// Where `name` is or belongs in by_name_.
   std::vector<VehicleId>::const_iterator name_position(std::string_view name) const;
+  /// The object labelled `label` (hash_name(label) is `hash`): recent_objects_, else the field.
+  std::optional<ObjectId> find_object(std::string_view label, std::uint64_t hash) const;
+  /// Remembers a detected object in recent_objects_.
+  void remember_object(ObjectId id, std::uint64_t hash);
   /// The vehicle `name` from recent_ids_ when its slot still holds it; nullopt otherwise.
   std::optional<VehicleId> recent_vehicle(std::string_view name, std::size_t slot) const;
   void notify(const VehicleState& v, ObjectId id, std::uint32_t pass, DiePurpose purpose,
@@ -258,6 +276,8 @@ class Engine {
   /// vehicle's name, so a stale slot (a forgotten vehicle, a collision) is only a miss.
   static constexpr std::size_t kRecentIdSlots = 1024;
   std::array<VehicleId, kRecentIdSlots> recent_ids_{};
+  /// The same in front of the field's label lookup (kRecentObjectSlots).
+  std::array<ObjectId, kRecentObjectSlots> recent_objects_{};
   std::optional<double> start_time_s_;
   std::optional<double> last_summary_s_;
   BoundDrops drops_;
@@ -265,6 +285,7 @@ class Engine {
   /// The next object whose visuals are due; field_.size() when none are (nothing scheduled).
   std::size_t visuals_cursor_ = 0;
   std::vector<ObjectId> scratch_inside_;          ///< reused by update_entries and sense_track
+  std::vector<ObjectId> scratch_entering_;        ///< reused by update_entries
   std::vector<ObjectId> scratch_candidates_;      ///< reused by sense_track
   std::vector<std::uint32_t> scratch_event_pieces_;  ///< reused by sense_track
   std::function<void(const Decision&)> observer_;

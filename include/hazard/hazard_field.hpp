@@ -35,6 +35,13 @@ using ObjectId = std::uint32_t;
 /// (about 370 bytes per object, most of it optional strings and map nodes).
 class HazardField {
  public:
+  /// An object's aspect fields (manual 7), present when any of the three is.
+  struct Aspect {
+    std::optional<double> aspect_deg, aspect_min_deg, aspect_max_deg;
+    /// All three present: the object is aspect-sensitive.
+    bool triple() const { return aspect_deg && aspect_min_deg && aspect_max_deg; }
+  };
+
   /// Adds an object; false (and nothing changes) if its label is already present or the label
   /// table would pass 4 GiB.
   bool add(const HazardObject& object);
@@ -45,14 +52,19 @@ class HazardField {
   void build_index();
 
   std::size_t size() const { return types_.size(); }
-  /// The object as loaded, rebuilt from the tables (for output and tests; sensing uses the
-  /// accessors below).
+  /// The object as loaded, rebuilt from the tables (for output and tests; sensing and
+  /// classification use the accessors below, which copy nothing and touch only the tables they
+  /// read: in a field of a million objects each table read is a cache miss).
   HazardObject object(ObjectId id) const;
   glm::dvec2 position(ObjectId id) const { return positions_[id]; }
   ObjectType type(ObjectId id) const { return static_cast<ObjectType>(types_[id]); }
   bool is_hazard(ObjectId id) const { return type(id) == ObjectType::kHazard; }
   std::optional<double> resemblance(ObjectId id) const;
   bool has_aspect_triple(ObjectId id) const;
+  /// The aspect fields; nullptr when the object has none.
+  const Aspect* aspect(ObjectId id) const {
+    return aspect_index_[id] == kNone ? nullptr : &aspects_[aspect_index_[id]];
+  }
   std::string_view label(ObjectId id) const;
   /// Stable 64-bit hash of the label (dice key; see dice.hpp).
   std::uint64_t label_hash(ObjectId id) const;
@@ -67,9 +79,6 @@ class HazardField {
 
  private:
   static constexpr std::uint32_t kNone = UINT32_MAX;
-  struct Aspect {
-    std::optional<double> aspect_deg, aspect_min_deg, aspect_max_deg;
-  };
   struct Style {
     std::optional<std::string> color, shape, source;
     std::optional<double> marker_width_m;

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "hazard/engine.hpp"
+#include "hazard/messages/detection_report.hpp"
 #include "hazard/messages/hazard_report.hpp"
 #include "hazard/sensor_model.hpp"
 #include "base/text.hpp"
@@ -35,7 +36,7 @@ std::optional<Credit> take_oldest_credit(VehicleState& v, ObjectId object) {
 
 // "Classify request queued for NAME: label L, pass N, pc FIX(pc, 5), die FIX(die, 4)", in
 // one string (a request follows every detection).
-std::string queued_event(const std::string& vname, const std::string& label, std::uint32_t pass,
+std::string queued_event(std::string_view vname, std::string_view label, std::uint32_t pass,
                          double pc, double die) {
   std::string text;
   text.reserve(96 + vname.size() + label.size());
@@ -66,7 +67,8 @@ void Engine::handle_classify_request(const ClassifyRequest& r, double now_s, Out
   v.last_mail_s = now_s;
   ++v.counters.classify_requests;
   if (v.queue.size() >= kMaxClassifyQueue) return refuse_queue_full(v, r.label, out);
-  const auto object = field_.find(r.label);
+  const std::uint64_t label_hash = hash_name(r.label);
+  const auto object = find_object(r.label, label_hash);
   if (!object) {
     out.run_warnings.push_back(v.name + " classify request for unknown label: " +
                                base::log_excerpt(r.label));
@@ -86,29 +88,44 @@ void Engine::handle_classify_request(const ClassifyRequest& r, double now_s, Out
   }
   const Credit credit = *taken;
 
-  // Decided now, with the settings in force now (differences.md "Credits").
-  const HazardObject& o = field_.object(*object);
+  // Decided now, with the settings in force now (differences.md "Credits"). The field is read
+  // through its accessors, each table only when needed (roll_detection says why).
+  const ObjectType type = field_.type(*object);
+  const HazardField::Aspect* aspect = field_.aspect(*object);
   const double pc = v.setting->pclass;
-  const double pc_resemblance = (effects_.resemblance && !o.is_hazard() && o.resemblance)
-                                    ? resemblance_classification_probability(pc, *o.resemblance)
-                                    : pc;
+  const std::optional<double> resemblance =
+      (effects_.resemblance && type != ObjectType::kHazard) ? field_.resemblance(*object)
+                                                            : std::nullopt;
+  const double pc_resemblance =
+      resemblance ? resemblance_classification_probability(pc, *resemblance) : pc;
   const double pc_aspect =
-      (effects_.aspect && o.has_aspect_triple())
+      (effects_.aspect && aspect && aspect->triple())
           ? aspect_classification_probability(pc_resemblance,
-                                              degradation(o, credit.heading_deg))
+                                              degradation(*aspect, credit.heading_deg))
           : pc_resemblance;
-  const double die = dice_.classification_v(v.name_hash, field_.label_hash(*object), credit.pass);
+  const std::string_view label = field_.label(*object);
+  const double die = dice_.classification_v(v.name_hash, label_hash, credit.pass);
   const bool correct = classification_correct(die, pc_aspect);
   notify(v, *object, credit.pass, DiePurpose::kClassification, correct);
   PendingAnswer answer;
   answer.object = *object;
-  answer.reported = correct ? o.type : flipped(o.type);
+  answer.reported = correct ? type : flipped(type);
   answer.aspect_affected = !correct && classification_correct(die, pc_resemblance);
   answer.credit = credit;
   const bool top = r.action == ClassifyAction::kTop;
   v.queue.push(answer, r.priority.value_or(kDefaultClassifyPriority), top);
   if (top) v.last_top_s = now_s;
-  out.events.push_back(queued_event(v.name, o.label, credit.pass, pc_aspect, die));
+  out.events.push_back(queued_event(v.name, label, credit.pass, pc_aspect, die));
+}
+
+std::optional<ObjectId> Engine::find_object(std::string_view label, std::uint64_t hash) const {
+  const ObjectId recent = recent_objects_[mix64(hash) & (kRecentObjectSlots - 1)];
+  if (recent < field_.size() && field_.label(recent) == label) return recent;
+  return field_.find(label);
+}
+
+void Engine::remember_object(ObjectId id, std::uint64_t hash) {
+  recent_objects_[mix64(hash) & (kRecentObjectSlots - 1)] = id;
 }
 
 // The queue is bounded (kMaxClassifyQueue): the request is refused before its credit is used.
@@ -152,19 +169,34 @@ void Engine::release_classifications(double now_s, Outputs& out) {
     if (v.queue.size() < kMaxClassifyQueue) v.warned_queue_full = false;
     v.last_release_s = now_s;
     ++v.counters.answers;
-    const HazardObject& o = field_.object(answer.object);
-    HazardReport report{std::nullopt, o.x_m, o.y_m, o.label, answer.reported,
-                        o.aspect_deg, o.aspect_min_deg, o.aspect_max_deg};
-    out.post("UHZ_HAZARD_REPORT" + v.variable_suffix, format_hazard_report(report));
-    report.vname = v.name;
-    out.post("UHZ_HAZARD_REPORT", format_hazard_report(report));
+    const glm::dvec2 position = field_.position(answer.object);
+    const std::string_view label = field_.label(answer.object);
+    post_hazard_report(v, position, label, answer.reported, field_.aspect(answer.object), out);
     out.events.push_back(
-        base::joined({"Hazard report sent to vehicle: ", v.name, " (label ", o.label, ")"}));
+        base::joined({"Hazard report sent to vehicle: ", v.name, " (label ", label, ")"}));
     if (!effects_.detection_visuals) continue;
     const ViewCircle c =
-        classification_circle(o, now_s, answer.reported, answer.aspect_affected);
+        classification_circle(position, now_s, answer.reported, answer.aspect_affected);
     out.post("VIEW_CIRCLE", format_view_circle(c));
   }
+}
+
+// UHZ_HAZARD_REPORT_<V>, then UHZ_HAZARD_REPORT: one text, the general variant with
+// "vname=NAME," in front (as in post_detection_report).
+void Engine::post_hazard_report(const VehicleState& v, glm::dvec2 position,
+                                std::string_view label, ObjectType reported,
+                                const HazardField::Aspect* aspect, Outputs& out) {
+  HazardReport report{std::nullopt, position.x, position.y, std::string(label), reported,
+                      std::nullopt, std::nullopt, std::nullopt};
+  if (aspect) {
+    report.aspect_deg = aspect->aspect_deg;
+    report.aspect_min_deg = aspect->aspect_min_deg;
+    report.aspect_max_deg = aspect->aspect_max_deg;
+  }
+  std::string for_vehicle = format_hazard_report(report);
+  std::string general = with_vname(v.name, for_vehicle);
+  out.post("UHZ_HAZARD_REPORT" + v.variable_suffix, std::move(for_vehicle));
+  out.post("UHZ_HAZARD_REPORT", std::move(general));
 }
 
 }  // namespace hazard

@@ -103,12 +103,13 @@ void Engine::update_entries(VehicleState& v, const Swath& swath, double now_s, O
     if (swath.contains(position)) scratch_inside_.push_back(id);
   });
   std::sort(scratch_inside_.begin(), scratch_inside_.end());
-  // A sensor event is an object inside now that was not inside before.
-  std::vector<ObjectId> entering;
+  // A sensor event is an object inside now that was not inside before (into a reused vector:
+  // every active vehicle, every iteration).
+  scratch_entering_.clear();
   std::set_difference(scratch_inside_.begin(), scratch_inside_.end(), v.inside.begin(),
-                      v.inside.end(), std::back_inserter(entering));
+                      v.inside.end(), std::back_inserter(scratch_entering_));
   v.inside.swap(scratch_inside_);
-  for (ObjectId id : entering) roll_detection(v, id, v.pose->heading_deg, now_s, out);
+  for (ObjectId id : scratch_entering_) roll_detection(v, id, v.pose->heading_deg, now_s, out);
 }
 
 // Each node report joins the track with the gates as they stand after it (sensing_track.hpp).

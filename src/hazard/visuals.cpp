@@ -30,10 +30,10 @@ constexpr double kSeglistWindowLength_m = 25.0;
 constexpr double kQuarterTurnDeg = 90.0;
 
 
-ViewCircle circle_at(const HazardObject& o, int vertices, double now_s) {
+ViewCircle circle_at(glm::dvec2 position, int vertices, double now_s) {
   ViewCircle c;
-  c.x_m = o.x_m;
-  c.y_m = o.y_m;
+  c.x_m = position.x;
+  c.y_m = position.y;
   c.radius_m = kCircleRadius_m;
   c.vertices = vertices;
   c.time_s = now_s;
@@ -49,18 +49,18 @@ glm::dvec2 project(glm::dvec2 from, double heading_deg, double distance_m) {
 
 }  // namespace
 
-ViewCircle detection_circle(const HazardObject& o, double now_s, std::optional<double> duration_s,
+ViewCircle detection_circle(glm::dvec2 position, double now_s, std::optional<double> duration_s,
                             bool changed_by_aspect) {
-  ViewCircle c = circle_at(o, kDetectionCircleVertices, now_s);
+  ViewCircle c = circle_at(position, kDetectionCircleVertices, now_s);
   c.duration_s = duration_s;
   // Pink when only the degraded ROC produced the detection (manual 7.3, D5).
   c.edge_color = c.fill_color = changed_by_aspect ? "pink" : "white";
   return c;
 }
 
-ViewCircle classification_circle(const HazardObject& o, double now_s, ObjectType reported,
+ViewCircle classification_circle(glm::dvec2 position, double now_s, ObjectType reported,
                                  bool aspect_affected) {
-  ViewCircle c = circle_at(o, kClassificationCircleVertices, now_s);
+  ViewCircle c = circle_at(position, kClassificationCircleVertices, now_s);
   c.edge_color = c.fill_color = reported == ObjectType::kHazard ? "yellow" : "green";
   if (aspect_affected) {
     c.fill_color = "pink";

@@ -3,6 +3,8 @@
 // "Release timing", T7, T6).
 #include <gtest/gtest.h>
 
+#include "hazard/dice.hpp"
+#include "hazard/engine.hpp"
 #include "hazard/sensor_model.hpp"
 #include "scenario.hpp"
 
@@ -120,6 +122,32 @@ TEST(EngineClassify, CreditsArePerVehicleAndObject_D7) {
   EXPECT_TRUE(d.mail("UHZ_CLASSIFY_REQUEST", "vname=w,label=far").run_warnings.empty());
   EXPECT_EQ(d.vehicle("v").counters.classify_requests, 4);
   EXPECT_FALSE(credits_of(d.vehicle("v"), 2).empty());  // C unused
+}
+
+// A label whose slot in the engine's recent-object cache is the slot of `label` (the first one
+// after "x<from>").
+std::string label_in_slot_of(std::string_view label, int from = 0) {
+  const auto slot = [](std::string_view l) { return mix64(hash_name(l)) % kRecentObjectSlots; };
+  for (int i = from;; ++i) {
+    std::string candidate = "x" + std::to_string(i);
+    if (slot(candidate) == slot(label)) return candidate;
+  }
+}
+
+// The cache in front of the label lookup holds A after its detection; a request for another
+// label in A's slot is that label's, never A's.
+TEST(EngineClassify, RecentObjectCacheNeverAnswersForAnotherLabel) {
+  const std::string twin = label_in_slot_of("A");
+  Driver d(quiet_block("min_classify_interval = 0\n"
+                       "hazard = x=0,y=0,label=A,type=hazard\n"
+                       "hazard = x=300,y=0,label=" + twin + ",type=hazard\n"));
+  pass_over(d);
+  EXPECT_TRUE(contains(d.mail("UHZ_CLASSIFY_REQUEST", "vname=v,label=" + twin).run_warnings,
+                       "No detection credit for v and label " + twin));
+  const std::string unknown = label_in_slot_of("A", std::stoi(twin.substr(1)) + 1);
+  EXPECT_TRUE(contains(d.mail("UHZ_CLASSIFY_REQUEST", "vname=v,label=" + unknown).run_warnings,
+                       "v classify request for unknown label: " + unknown));
+  EXPECT_TRUE(d.mail("UHZ_CLASSIFY_REQUEST", "vname=v,label=A").run_warnings.empty());
 }
 
 TEST(EngineClassify, CreditsSurviveInactivityAndWidthChanges_Rulings) {

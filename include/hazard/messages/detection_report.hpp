@@ -31,4 +31,9 @@ struct DetectionReport {
 Parsed<DetectionReport> parse_detection_report(std::string_view text);
 std::string format_detection_report(const DetectionReport& report);
 
+/// The general variant from the vehicle's text (a detection or hazard report formatted without
+/// vname): "vname=NAME," in front, exactly what the format functions write with vname set. The
+/// engine posts both variants and formats the numbers once.
+std::string with_vname(std::string_view vname, std::string_view vehicle_report);
+
 }  // namespace hazard

@@ -19,4 +19,12 @@ std::string format_detection_report(const DetectionReport& r) {
                                      {});
 }
 
+std::string with_vname(std::string_view vname, std::string_view vehicle_report) {
+  constexpr std::string_view kKey = "vname=";
+  std::string out;
+  out.reserve(kKey.size() + vname.size() + 1 + vehicle_report.size());
+  out.append(kKey).append(vname).append(1, ',').append(vehicle_report);
+  return out;
+}
+
 }  // namespace hazard

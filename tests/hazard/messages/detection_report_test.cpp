@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "hazard/messages/detection_report.hpp"
+#include "hazard/messages/hazard_report.hpp"
 
 namespace hazard {
 namespace {
@@ -24,6 +25,19 @@ TEST(ReportMessages, DetectionReportVariants_D24) {
   EXPECT_EQ(format_detection_report(*back.value), "vname=archie," + text);
   EXPECT_FALSE(parse_detection_report("x=1,y=2"));
   EXPECT_FALSE(parse_detection_report("x=1,label=2"));
+}
+
+// The engine formats a report once and derives the general variant with with_vname: it must be
+// exactly what the format functions write with vname set, for both report kinds.
+TEST(ReportMessages, WithVnameIsTheGeneralVariant) {
+  DetectionReport d{std::nullopt, -293.60001, 12.5, "obj_17", 57.0, 20.0, 45.0};
+  const std::string vehicle = format_detection_report(d);
+  d.vname = "archie";
+  EXPECT_EQ(with_vname("archie", vehicle), format_detection_report(d));
+  HazardReport h{std::nullopt, 1.0, -2.0, "75", ObjectType::kHazard, {}, {}, {}};
+  const std::string for_vehicle = format_hazard_report(h);
+  h.vname = "a_long_vehicle_name_past_small_strings";
+  EXPECT_EQ(with_vname(*h.vname, for_vehicle), format_hazard_report(h));
 }
 
 }  // namespace
