@@ -27,6 +27,7 @@
 // - Every public function is thread-safe. Callbacks run on the implementation's own thread
 //   (TcpClient: its comms thread) with no lock held; they may call any function of this object.
 
+#include <array>
 #include <atomic>
 #include <cstdint>
 #include <functional>
@@ -89,7 +90,9 @@ class Comms {
   /// MOOS time minus local time, seconds (0 until a server says otherwise, protocol.md 1.8, 4.4).
   virtual double skew_s() const = 0;
   double local_time() const { return clock().unix_now_s() * time_warp(); }
-  double moos_time() const { return local_time() + skew_s(); }
+  /// local_time() + skew_s(). Virtual only so that an implementation can answer with fewer
+  /// calls (an app asks several times per cycle); the value is the same.
+  virtual double moos_time() const { return local_time() + skew_s(); }
 
   /// REGISTER `var`; updates of it arrive at most once per `interval_s` MOOS seconds (0 = every
   /// update; throttled updates are dropped by the server, protocol.md 5.3).
@@ -180,6 +183,9 @@ class Comms {
   Message register_message(const std::string& var, double interval_s) const;
   Message wildcard_message(char type, const WildcardSpec& spec) const;
   bool post_and_record(Message&& msg);
+  bool published_recently(const std::string& key) const;
+  /// Lists `name`, an element of published_, among recent_published_; book_mutex_ held.
+  void remember_published(const std::string& name);
 
   const std::string name_;
   mutable std::mutex book_mutex_;
@@ -190,8 +196,15 @@ class Comms {
     WildcardSpec entry;
   };
   std::vector<Subscription> subscriptions_;
-  /// Unordered: looked up at every posting; published_names() sorts a copy.
+  /// Unordered: looked up at every posting; published_names() sorts a copy. Names are never
+  /// erased.
   std::unordered_set<std::string> published_;
+  /// Elements of published_ posted lately (null: none yet): a posting of one of them needs no
+  /// lock and no hashing. Their strings stay put (elements of an unordered_set do not move) and
+  /// are never changed. Written under book_mutex_, in turn.
+  static constexpr std::size_t kRecentPublished = 4;
+  std::array<std::atomic<const std::string*>, kRecentPublished> recent_published_{};
+  std::size_t recent_published_next_ = 0;  ///< under book_mutex_
   std::function<void()> on_connect_;
   std::function<void()> on_mail_;
   std::atomic<bool> has_on_mail_{false};

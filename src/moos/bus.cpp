@@ -36,7 +36,7 @@ struct BusClientState {
   OutboxBound outbox_bound;
 };
 
-struct BusCore {
+struct BusCore final : MailSink {
   using ClientState = BusClientState;
 
   BusCore(Clock& c, InProcessBus::Options o)
@@ -50,7 +50,7 @@ struct BusCore {
     config.community = options.community;
     config.db_variables = false;  // no refresh timer on the bus (see bus.hpp)
     // Mail goes straight into the inboxes: no packet per message to build and route.
-    config.mail_sink = [this](ClientId to, const Message& m) { take_mail(to, m); };
+    config.mail_sink = this;
     return config;
   }
 
@@ -138,7 +138,7 @@ struct BusCore {
       const auto to = states_by_id.find(packet.to);
       if (to == states_by_id.end()) continue;  // a refused connection's POISON
       for (auto& m : packet.messages)
-        if (m.type == msg_type::kNotify) take_mail(*to->second, m);
+        if (m.type == msg_type::kNotify) take_mail(*to->second, m);  // the packet's to give
     }
     output.clear();
     // The server would close these connections; so does the bus.
@@ -150,13 +150,26 @@ struct BusCore {
     }
   }
 
-  void take_mail(ClientId to, const Message& m) {
+  // The Database's mail (MailSink): a copy into storage the reader's read mail left, or the
+  // message itself traded for that storage.
+  void copy_mail(ClientId to, const Message& m) override {
+    const auto state = states_by_id.find(to);
+    if (state == states_by_id.end()) return;
+    state->second->inbox.push_copy(m);
+    woke(*state->second);
+  }
+
+  void take_mail(ClientId to, Message& m) override {
     const auto state = states_by_id.find(to);
     if (state != states_by_id.end()) take_mail(*state->second, m);
   }
 
-  void take_mail(ClientState& state, const Message& m) {
-    state.inbox.push_copy(m);
+  void take_mail(ClientState& state, Message& m) {
+    state.inbox.push_moved(m);
+    woke(state);
+  }
+
+  void woke(ClientState& state) {
     state.has_mail = true;
     if (std::find(woken.begin(), woken.end(), &state) == woken.end()) woken.push_back(&state);
   }
@@ -253,6 +266,9 @@ std::uint64_t BusClient::connection_count() const { return state_ ? state_->conn
 std::string BusClient::community() const { return core_->options.community; }
 Clock& BusClient::clock() const { return core_->clock; }
 double BusClient::time_warp() const { return core_->options.time_warp; }
+// Comms::moos_time() in one call: local time + the skew, 0 (added, as there, so that the
+// value is the same to the bit).
+double BusClient::moos_time() const { return core_->now() + skew_s(); }
 
 void BusClient::fetch_into(std::vector<Message>& mail) {
   // Mail that reached the inbox before this call set has_mail before it (under the lock).

@@ -18,6 +18,7 @@
 
 #include "moos/database.hpp"
 
+#include <algorithm>
 #include <cassert>
 #include <utility>
 
@@ -85,6 +86,7 @@ bool Database::connect(ClientId id, const std::vector<Message>& identification,
 
   const Message* ident = &identification.front();
   Client client;
+  client.id = id;
   client.name = ident->sval;
   client.async = base::iequals(ident->key, kAsynchronousKey);
   client_by_name_[client.name] = id;
@@ -110,6 +112,8 @@ void Database::disconnect(ClientId id, double now_moos_s) {
   if (it == clients_.end()) return;
   Client& client = it->second;
   for (const VarId var : client.subscribed) vars_[var].subscribers.erase(id);
+  if (client.queued_for_flush)  // not left listed: the list points at clients
+    async_with_mail_.erase(std::find(async_with_mail_.begin(), async_with_mail_.end(), &client));
   if (client.refusals > kLoggedRefusalsPerClient)
     log_(describe(id) + ": " + std::to_string(client.refusals) +
          " messages refused in total");
@@ -136,22 +140,22 @@ void Database::process_message(ClientId id, Message&& msg, double now_moos_s) {
 void Database::process_messages(ClientId id, Message* first, Message* last, double now_moos_s) {
   const auto found = clients_.find(id);
   if (found == clients_.end()) return;
+  Client& client = found->second;
   // Step 2: a leading TIMING is echoed to asynchronous clients; synchronous clients never
   // receive TIMING (protocol.md 5.6), so theirs is dropped. TIMING elsewhere is ignored.
   std::optional<Message> echo;
   if (first != last && first->type == mt::kTiming) {
-    if (found->second.async) {
+    if (client.async) {
       echo = *first;
       echo->dval = now_moos_s;  // server local warped time; the DB's skew is 0
       echo->dval2 = 0.0;        // outgoing delay for this client, seconds (none)
     }
     ++first;
   }
-  for (; first != last; ++first) handle_message(id, std::move(*first), now_moos_s);
+  for (; first != last; ++first) handle_message(client, std::move(*first), now_moos_s);
 
   // Step 6: the reply. Sync: NULL first, always. Async: echo first, only if non-empty. Handling
-  // erases no client (drops are requests), so `found` is still valid.
-  Client& client = found->second;
+  // erases no client (drops are requests), so `client` is still valid.
   if (client.async && !echo) {
     if (!client.pending.empty()) send_packet(id, std::move(client.pending));
     client.pending.clear();
@@ -170,9 +174,10 @@ void Database::process_messages(ClientId id, Message* first, Message* last, doub
   flush_async_mail();
 }
 
-void Database::handle_message(ClientId id, Message&& msg, double now) {
+void Database::handle_message(Client& client, Message&& msg, double now) {
+  const ClientId id = client.id;
   switch (msg.type) {
-    case mt::kNotify: handle_notify(id, std::move(msg), now); break;
+    case mt::kNotify: handle_notify(client, std::move(msg), now); break;
     case mt::kRegister: handle_register(id, msg, now); break;
     case mt::kUnregister: handle_unregister(id, msg); break;
     case mt::kWildcardRegister: handle_wildcard_register(id, msg, now); break;

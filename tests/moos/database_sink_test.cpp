@@ -15,16 +15,31 @@ namespace {
 struct Sunk {
   ClientId to;
   Message message;
+  bool taken = false;  ///< handed over by take_mail, not copy_mail
+};
+
+/// Records every mail it is given; a taken message is emptied, as a sink that trades may leave it.
+class RecordingSink final : public MailSink {
+ public:
+  explicit RecordingSink(std::vector<Sunk>* out) : out_(out) {}
+  void copy_mail(ClientId to, const Message& msg) override { out_->push_back({to, msg, false}); }
+  void take_mail(ClientId to, Message& msg) override {
+    out_->push_back({to, msg, true});
+    msg = Message{};
+  }
+
+ private:
+  std::vector<Sunk>* out_;
 };
 
 /// Two DBs fed the same traffic: `plain` sends every mail in packets, `sunk` hands the
 /// asynchronous clients' mail to its sink.
 class DatabaseSinkTest : public ::testing::Test {
  protected:
-  static DatabaseConfig config(std::vector<Sunk>* sink) {
+  static DatabaseConfig config(MailSink* sink) {
     DatabaseConfig c;
     c.community = "alpha";
-    if (sink) c.mail_sink = [sink](ClientId to, const Message& m) { sink->push_back({to, m}); };
+    c.mail_sink = sink;
     return c;
   }
 
@@ -56,8 +71,9 @@ class DatabaseSinkTest : public ::testing::Test {
   }
 
   std::vector<Sunk> sink_;
+  RecordingSink recorder_{&sink_};
   Database plain_{config(nullptr), kT0, [](const std::string&) {}};
-  Database sunk_{config(&sink_), kT0, [](const std::string&) {}};
+  Database sunk_{config(&recorder_), kT0, [](const std::string&) {}};
 };
 
 TEST_F(DatabaseSinkTest, TheSinkGetsAnAsynchronousClientsMailAsItsPacketsWouldCarryIt) {
@@ -106,11 +122,30 @@ TEST_F(DatabaseSinkTest, ATimingEchoStillLeavesInAPacket) {
   EXPECT_EQ(out[0].messages[0].dval, kT0 + 2);
 }
 
+TEST_F(DatabaseSinkTest, APostingsLastReaderGetsTheMessageItselfTheOthersACopy) {
+  connect(kA, "first", true);
+  connect(kB, "second", true);
+  connect(kC, "pub", true);
+  send(kA, {registration("X", 0, "first")});
+  send(kB, {registration("X", 0, "second")});
+  sink_.clear();
+  send(kC, {notify_double("X", 1, "pub"), notify_double("X", 2, "pub")});
+  ASSERT_EQ(sink_.size(), 4u);  // the readers in connection order, posting by posting
+  const std::vector<ClientId> to = {sink_[0].to, sink_[1].to, sink_[2].to, sink_[3].to};
+  EXPECT_EQ(to, (std::vector<ClientId>{kA, kB, kA, kB}));
+  EXPECT_FALSE(sink_[0].taken);
+  EXPECT_TRUE(sink_[1].taken);
+  EXPECT_EQ(sink_[0].message, sink_[1].message);  // taken after the copy: the copy is whole
+  EXPECT_EQ(sink_[3].message.dval, 2);
+  EXPECT_EQ(sunk_.latest("X")->dval, 2);  // stored before the message was given away
+}
+
 TEST(DatabaseSink, TheUndeliveredMailBoundStillAppliesPerCall) {
   std::vector<Sunk> sink;
+  RecordingSink recorder(&sink);
   DatabaseConfig config;
   config.max_pending_bytes = 1000;
-  config.mail_sink = [&](ClientId to, const Message& m) { sink.push_back({to, m}); };
+  config.mail_sink = &recorder;
   Database db(config, kT0, [](const std::string&) {});
   ASSERT_TRUE(db.connect(kA, {identification("reader", true)}, kT0));
   ASSERT_TRUE(db.connect(kB, {identification("pub", true)}, kT0));
