@@ -137,6 +137,9 @@ class Comms {
   /// promise, e.g. before a long sleep that mail must end). An implementation may then leave
   /// reading to fetch() and save its own wake-ups (TcpClient); the promise of fetch() holds.
   virtual void expect_fetch_within(double /*real_s*/) {}
+  /// False when expect_fetch_within() ignores its promise (BusClient): a caller may skip
+  /// working out its argument.
+  bool takes_fetch_promises() const { return takes_fetch_promises_; }
   /// Mail dropped unread since the start because the inbox was full (never decreases).
   std::uint64_t mail_dropped() const { return mail_dropped_.load(); }
   /// Postings refused since the start because the outbox was full or the message too large
@@ -160,7 +163,8 @@ class Comms {
   std::set<std::string> published_names() const;
 
  protected:
-  explicit Comms(std::string name) : name_(std::move(name)) {}
+  explicit Comms(std::string name, bool takes_fetch_promises = true)
+      : name_(std::move(name)), takes_fetch_promises_(takes_fetch_promises) {}
 
   /// Hands one message to the server: now when connected; a NOTIFY also while disconnected,
   /// queued for the next connection (the delivery contract above). False (nothing sent) when it
@@ -188,6 +192,7 @@ class Comms {
   void remember_published(const std::string& name);
 
   const std::string name_;
+  const bool takes_fetch_promises_;
   mutable std::mutex book_mutex_;
   /// Subscriptions in first-made order: a plain variable (var_pattern is the name, app_pattern
   /// unset) or a wildcard pair.

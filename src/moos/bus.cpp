@@ -248,7 +248,7 @@ std::vector<std::string> InProcessBus::diagnostics() const {
 // ---- BusClient ------------------------------------------------------------------------------
 
 BusClient::BusClient(std::shared_ptr<BusCore> core, std::string name)
-    : Comms(std::move(name)), core_(std::move(core)) {}
+    : Comms(std::move(name), /*takes_fetch_promises=*/false), core_(std::move(core)) {}
 
 BusClient::~BusClient() {
   if (!state_) return;  // refused at connect

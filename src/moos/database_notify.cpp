@@ -142,9 +142,10 @@ void Database::store(Variable& var, const Message& msg, double now) {
   }
   value.time_moos_s = msg.time;
   value.db_write_moos_s = now;
-  overwrite(value.writer, msg.source);
-  overwrite(value.writer_aux, msg.source_aux);
-  overwrite(value.community, msg.community);
+  // Mostly what the last write stored: comparing costs less than assigning.
+  if (value.writer != msg.source) overwrite(value.writer, msg.source);
+  if (value.writer_aux != msg.source_aux) overwrite(value.writer_aux, msg.source_aux);
+  if (value.community != msg.community) overwrite(value.community, msg.community);
   stored_bytes_ += value_bytes(value);
 
   WriteFrequency& f = var.frequency;

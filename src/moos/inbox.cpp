@@ -27,6 +27,12 @@ void copy_string(std::string& to, const std::string& from) {
   }
 }
 
+/// copy_string() unless `to` holds `from` already: a key, a source name or a community is
+/// mostly what the kept message held, and comparing costs less than assigning.
+void copy_if_changed(std::string& to, const std::string& from) {
+  if (to != from) copy_string(to, from);
+}
+
 void move_string(std::string& to, std::string& from) {
   if (from.empty()) {
     to.clear();
@@ -51,11 +57,11 @@ void copy_scalars(Message& to, const Message& from) {
 
 void Inbox::assign_copy(Message& to, const Message& from) {
   copy_scalars(to, from);
-  copy_string(to.source, from.source);
+  copy_if_changed(to.source, from.source);
   copy_string(to.source_aux, from.source_aux);
-  copy_string(to.community, from.community);
-  copy_string(to.key, from.key);
-  copy_string(to.sval, from.sval);
+  copy_if_changed(to.community, from.community);
+  copy_if_changed(to.key, from.key);
+  copy_string(to.sval, from.sval);  // a value mostly changes
 }
 
 void Inbox::assign_moved(Message& to, Message& from) {
