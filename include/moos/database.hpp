@@ -80,16 +80,16 @@ inline constexpr int kLoggedRefusalsPerClient = 20;
 inline constexpr std::size_t kDefaultMaxStoredBytes = 1024u * 1024u * 1024u;
 inline constexpr std::size_t kVariableOverheadBytes = 256;
 
-/// Where a connection layer in the same process takes its asynchronous clients' mail
-/// (DatabaseConfig::mail_sink).
+/// Where a connection layer in the same process (moos::InProcessBus) takes one asynchronous
+/// client's mail instead of packets (Database::connect).
 class MailSink {
  public:
   virtual ~MailSink() = default;
-  /// Mail for `to`; `msg` is shared with the posting's other readers: copy what you keep.
-  virtual void copy_mail(ClientId to, const Message& msg) = 0;
-  /// Mail for `to` that the Database is done with (a posting's last reader): take its contents
-  /// (a swap saves the copy); `msg` may be left holding anything.
-  virtual void take_mail(ClientId to, Message& msg) = 0;
+  /// Mail; `msg` is shared with the posting's other readers: copy what you keep.
+  virtual void copy_mail(const Message& msg) = 0;
+  /// Mail the Database is done with (a posting's last reader): take its contents (a move
+  /// saves the copy); `msg` may be left holding anything.
+  virtual void take_mail(Message& msg) = 0;
 };
 
 struct DatabaseConfig {
@@ -101,13 +101,6 @@ struct DatabaseConfig {
   std::size_t max_reply_bytes = kDefaultMaxPacketBytes;
   std::size_t max_stored_bytes = kDefaultMaxStoredBytes;
   bool db_variables = true;  ///< publish the DB_* variables of protocol.md 5.7
-  /// For a connection layer in the same process (moos::InProcessBus): when set, each mail of an
-  /// asynchronous client (a NOTIFY: live update, snapshot or answer) is handed to it as it is
-  /// queued, in the order it would have in the client's packets, instead of leaving in a packet
-  /// through take_output(); protocol replies (WELCOME, POISON, TIMING echoes) still leave there.
-  /// The max_pending_bytes bound applies per call as without it. Not owned: it must outlive the
-  /// Database and must not call back into it.
-  MailSink* mail_sink = nullptr;
 };
 
 /// One packet for one client.
@@ -146,7 +139,14 @@ class Database {
   /// Handshake (protocol.md 1.5-1.6): `identification` is the decoded identification packet.
   /// Queues WELCOME (returns true; the client is now connected, DB_EVENT and DB_CLIENTS are
   /// published) or POISON (returns false; the caller closes the connection after sending).
-  bool connect(ClientId id, const std::vector<Message>& identification, double now_moos_s);
+  /// With a `mail_sink` (a connection layer in the same process, moos::InProcessBus), each mail
+  /// of an asynchronous client (a NOTIFY: live update, snapshot or answer) is handed to it as it
+  /// is queued, in the order it would have in the client's packets, instead of leaving in a
+  /// packet through take_output(); protocol replies (WELCOME, POISON, TIMING echoes) still leave
+  /// there, and the max_pending_bytes bound applies per call as without it. Not owned: it must
+  /// last as long as the connection and must not call back into the Database.
+  bool connect(ClientId id, const std::vector<Message>& identification, double now_moos_s,
+               MailSink* mail_sink = nullptr);
   /// Why connect() would refuse `identification` now (the POISON's text), or nullopt.
   std::optional<std::string> handshake_refusal(const std::vector<Message>& identification) const;
 
@@ -170,6 +170,8 @@ class Database {
   void take_output(std::vector<OutPacket>& out);
   /// Clients to disconnect because their undelivered mail overflowed; the list is emptied.
   std::vector<DropRequest> take_drop_requests();
+  /// Whether take_output() or take_drop_requests() has anything to hand over.
+  bool has_output() const { return !output_.empty() || !drops_.empty(); }
 
   bool is_connected(ClientId id) const { return clients_.count(id) != 0; }
   std::optional<std::string> client_name(ClientId id) const;
@@ -195,6 +197,7 @@ class Database {
     ClientId id = 0;
     std::string name;
     bool async = false;
+    MailSink* sink = nullptr;  ///< see connect()
     std::vector<Message> pending;  ///< undelivered mail, in order
     std::size_t pending_bytes = 0;
     bool queued_for_flush = false;  ///< already listed in async_with_mail_

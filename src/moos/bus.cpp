@@ -10,7 +10,6 @@
 
 #include "moos/bus.hpp"
 
-#include <algorithm>
 #include <atomic>
 #include <functional>
 #include <map>
@@ -21,9 +20,10 @@
 
 namespace moos {
 
-/// One client name's connection to the bus.
-struct BusClientState {
-  explicit BusClientState(std::string n) : name(std::move(n)) {}
+/// One client name's connection to the bus, and the sink of its Database mail.
+struct BusClientState final : MailSink {
+  BusClientState(std::string n, std::vector<BusClientState*>* woken_list)
+      : name(std::move(n)), woken(woken_list) {}
   const std::string name;
   BusClient* handle = nullptr;  // for on-mail callbacks
   ClientId id = 0;              // the current Database connection
@@ -34,9 +34,30 @@ struct BusClientState {
   Inbox inbox;  // its mail is copied into the storage of the mail the app read before
   std::vector<Message> outbox;  // postings made while disconnected (comms.hpp)
   OutboxBound outbox_bound;
+  // The clients that got mail in the current bus call, in order (the bus's list), and whether
+  // this one is listed there.
+  std::vector<BusClientState*>* const woken;
+  bool listed_as_woken = false;
+
+  // The Database's mail, under the bus mutex: a copy into the storage the app's read mail left,
+  // or the message itself moved in.
+  void copy_mail(const Message& m) override {
+    inbox.push_copy(m);
+    got_mail();
+  }
+  void take_mail(Message& m) override {
+    inbox.push_moved(m);
+    got_mail();
+  }
+  void got_mail() {
+    has_mail = true;
+    if (listed_as_woken) return;
+    listed_as_woken = true;
+    woken->push_back(this);
+  }
 };
 
-struct BusCore final : MailSink {
+struct BusCore {
   using ClientState = BusClientState;
 
   BusCore(Clock& c, InProcessBus::Options o)
@@ -49,8 +70,6 @@ struct BusCore final : MailSink {
     DatabaseConfig config;
     config.community = options.community;
     config.db_variables = false;  // no refresh timer on the bus (see bus.hpp)
-    // Mail goes straight into the inboxes: no packet per message to build and route.
-    config.mail_sink = this;
     return config;
   }
 
@@ -86,7 +105,8 @@ struct BusCore final : MailSink {
     ident.time = now();
     const ClientId id = next_id++;
     states_by_id[id] = &state;  // before the handshake: mail may follow the WELCOME at once
-    const bool welcomed = db.connect(id, {ident}, now());
+    // Mail goes straight into the inbox: no packet per message to build and route.
+    const bool welcomed = db.connect(id, {ident}, now(), &state);
     if (welcomed) {
       state.id = id;
     } else {
@@ -128,17 +148,19 @@ struct BusCore final : MailSink {
         if (auto cb = client->handle->on_mail_callback()) callbacks->push_back(std::move(cb));
       }
     }
+    for (ClientState* client : woken) client->listed_as_woken = false;
     woken.clear();
   }
 
   /// The Database's packets: protocol replies, which are not mail. Then the clients it drops.
   void route_output() {
+    if (!db.has_output()) return;  // the usual call: all its mail went to the sinks
     db.take_output(output);
     for (auto& packet : output) {
       const auto to = states_by_id.find(packet.to);
       if (to == states_by_id.end()) continue;  // a refused connection's POISON
       for (auto& m : packet.messages)
-        if (m.type == msg_type::kNotify) take_mail(*to->second, m);  // the packet's to give
+        if (m.type == msg_type::kNotify) to->second->take_mail(m);  // the packet's to give
     }
     output.clear();
     // The server would close these connections; so does the bus.
@@ -150,29 +172,6 @@ struct BusCore final : MailSink {
     }
   }
 
-  // The Database's mail (MailSink): a copy into storage the reader's read mail left, or the
-  // message itself traded for that storage.
-  void copy_mail(ClientId to, const Message& m) override {
-    const auto state = states_by_id.find(to);
-    if (state == states_by_id.end()) return;
-    state->second->inbox.push_copy(m);
-    woke(*state->second);
-  }
-
-  void take_mail(ClientId to, Message& m) override {
-    const auto state = states_by_id.find(to);
-    if (state != states_by_id.end()) take_mail(*state->second, m);
-  }
-
-  void take_mail(ClientState& state, Message& m) {
-    state.inbox.push_moved(m);
-    woke(state);
-  }
-
-  void woke(ClientState& state) {
-    state.has_mail = true;
-    if (std::find(woken.begin(), woken.end(), &state) == woken.end()) woken.push_back(&state);
-  }
 };
 
 // ---- InProcessBus ---------------------------------------------------------------------------
@@ -190,7 +189,7 @@ std::unique_ptr<BusClient> InProcessBus::connect(const std::string& name) {
   {
     std::lock_guard<std::mutex> lock(core_->mutex);
     // A real DB would POISON a second client of one name (1.6).
-    const auto [it, fresh] = core_->clients.try_emplace(name, name);
+    const auto [it, fresh] = core_->clients.try_emplace(name, name, &core_->woken);
     if (!fresh) return nullptr;
     BusCore::ClientState& state = it->second;
     if (!core_->open_connection(state)) {
@@ -254,8 +253,8 @@ BusClient::~BusClient() {
   if (!state_) return;  // refused at connect
   std::lock_guard<std::mutex> lock(core_->mutex);
   if (state_->connected) core_->close_connection(*state_);
-  core_->clients.erase(state_->name);
   core_->settle();  // no callbacks from a destructor: the mail waits in the inboxes
+  core_->clients.erase(state_->name);  // after settle(), which clears the woken list
 }
 
 // The state's flags are atomic: an app's per-cycle checks take no lock.

@@ -74,7 +74,7 @@ Database::Database(DatabaseConfig config, double start_moos_s, LogSink log,
 // Connections (protocol.md 1.5, 1.6, 1.9)
 
 bool Database::connect(ClientId id, const std::vector<Message>& identification,
-                       double now_moos_s) {
+                       double now_moos_s, MailSink* mail_sink) {
   assert(clients_.count(id) == 0 && "connection ids are unique");
   const std::optional<std::string> poison_reason = handshake_refusal(identification);
   if (poison_reason) {
@@ -89,6 +89,7 @@ bool Database::connect(ClientId id, const std::vector<Message>& identification,
   client.id = id;
   client.name = ident->sval;
   client.async = base::iequals(ident->key, kAsynchronousKey);
+  client.sink = mail_sink;
   client_by_name_[client.name] = id;
   const std::string name = client.name;
   clients_.emplace(id, std::move(client));
@@ -142,14 +143,11 @@ void Database::process_messages(ClientId id, Message* first, Message* last, doub
   if (found == clients_.end()) return;
   Client& client = found->second;
   // Step 2: a leading TIMING is echoed to asynchronous clients; synchronous clients never
-  // receive TIMING (protocol.md 5.6), so theirs is dropped. TIMING elsewhere is ignored.
-  std::optional<Message> echo;
+  // receive TIMING (protocol.md 5.6), so theirs is dropped. TIMING elsewhere is ignored. The
+  // echo is made after the other messages: handling them leaves this one as it is.
+  Message* echo = nullptr;
   if (first != last && first->type == mt::kTiming) {
-    if (client.async) {
-      echo = *first;
-      echo->dval = now_moos_s;  // server local warped time; the DB's skew is 0
-      echo->dval2 = 0.0;        // outgoing delay for this client, seconds (none)
-    }
+    if (client.async) echo = first;
     ++first;
   }
   for (; first != last; ++first) handle_message(client, std::move(*first), now_moos_s);
@@ -166,6 +164,8 @@ void Database::process_messages(ClientId id, Message* first, Message* last, doub
       reply.push_back(null_reply(now_moos_s));
     } else {
       reply.push_back(std::move(*echo));
+      reply.back().dval = now_moos_s;  // server local warped time; the DB's skew is 0
+      reply.back().dval2 = 0.0;        // outgoing delay for this client, seconds (none)
     }
     take_pending(client, reply);
     send_packet(id, std::move(reply));

@@ -54,11 +54,11 @@ void Database::queue_mail(ClientId id, Message&& msg) {
 
 void Database::queue_fan_out_mail(Client& client, Message& msg, std::size_t size, bool take) {
   if (!admit_mail(client, size)) return;
-  if (client.async && config_.mail_sink) {  // delivered now: no packet per message
+  if (client.async && client.sink) {  // delivered now: no packet per message
     if (take) {
-      config_.mail_sink->take_mail(client.id, msg);
+      client.sink->take_mail(msg);
     } else {
-      config_.mail_sink->copy_mail(client.id, msg);
+      client.sink->copy_mail(msg);
     }
   } else if (take) {
     client.pending.push_back(std::move(msg));

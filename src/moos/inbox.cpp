@@ -68,8 +68,9 @@ void Inbox::assign_moved(Message& to, Message& from) {
   copy_scalars(to, from);
   move_string(to.source, from.source);
   move_string(to.source_aux, from.source_aux);
-  move_string(to.community, from.community);
-  move_string(to.key, from.key);
+  // Mostly short and unchanged; moving a short string is a copy.
+  copy_if_changed(to.community, from.community);
+  copy_if_changed(to.key, from.key);
   move_string(to.sval, from.sval);
 }
 

@@ -3,6 +3,7 @@
 // checked against the plain packet path, which the other database tests pin down.
 #include <gtest/gtest.h>
 
+#include <deque>
 #include <string>
 #include <utility>
 #include <vector>
@@ -18,34 +19,36 @@ struct Sunk {
   bool taken = false;  ///< handed over by take_mail, not copy_mail
 };
 
-/// Records every mail it is given; a taken message is emptied, as a sink that trades may leave it.
+/// One client's sink: records its mail into a list shared by all clients; a taken message is
+/// emptied, as a sink that moves it may leave it.
 class RecordingSink final : public MailSink {
  public:
-  explicit RecordingSink(std::vector<Sunk>* out) : out_(out) {}
-  void copy_mail(ClientId to, const Message& msg) override { out_->push_back({to, msg, false}); }
-  void take_mail(ClientId to, Message& msg) override {
-    out_->push_back({to, msg, true});
+  RecordingSink(ClientId to, std::vector<Sunk>* out) : to_(to), out_(out) {}
+  void copy_mail(const Message& msg) override { out_->push_back({to_, msg, false}); }
+  void take_mail(Message& msg) override {
+    out_->push_back({to_, msg, true});
     msg = Message{};
   }
 
  private:
+  ClientId to_;
   std::vector<Sunk>* out_;
 };
 
 /// Two DBs fed the same traffic: `plain` sends every mail in packets, `sunk` hands the
-/// asynchronous clients' mail to its sink.
+/// asynchronous clients' mail to their sinks.
 class DatabaseSinkTest : public ::testing::Test {
  protected:
-  static DatabaseConfig config(MailSink* sink) {
+  static DatabaseConfig config() {
     DatabaseConfig c;
     c.community = "alpha";
-    c.mail_sink = sink;
     return c;
   }
 
   void connect(ClientId id, const std::string& name, bool async) {
     ASSERT_TRUE(plain_.connect(id, {identification(name, async)}, kT0));
-    ASSERT_TRUE(sunk_.connect(id, {identification(name, async)}, kT0));
+    sinks_.emplace_back(id, &sink_);
+    ASSERT_TRUE(sunk_.connect(id, {identification(name, async)}, kT0, &sinks_.back()));
   }
 
   /// The packets' messages of `plain` and the sink's of `sunk`, for client `id`.
@@ -71,9 +74,9 @@ class DatabaseSinkTest : public ::testing::Test {
   }
 
   std::vector<Sunk> sink_;
-  RecordingSink recorder_{&sink_};
-  Database plain_{config(nullptr), kT0, [](const std::string&) {}};
-  Database sunk_{config(&recorder_), kT0, [](const std::string&) {}};
+  std::deque<RecordingSink> sinks_;  // one per client; a deque keeps them in place
+  Database plain_{config(), kT0, [](const std::string&) {}};
+  Database sunk_{config(), kT0, [](const std::string&) {}};
 };
 
 TEST_F(DatabaseSinkTest, TheSinkGetsAnAsynchronousClientsMailAsItsPacketsWouldCarryIt) {
@@ -142,12 +145,11 @@ TEST_F(DatabaseSinkTest, APostingsLastReaderGetsTheMessageItselfTheOthersACopy) 
 
 TEST(DatabaseSink, TheUndeliveredMailBoundStillAppliesPerCall) {
   std::vector<Sunk> sink;
-  RecordingSink recorder(&sink);
+  RecordingSink reader(kA, &sink);
   DatabaseConfig config;
   config.max_pending_bytes = 1000;
-  config.mail_sink = &recorder;
   Database db(config, kT0, [](const std::string&) {});
-  ASSERT_TRUE(db.connect(kA, {identification("reader", true)}, kT0));
+  ASSERT_TRUE(db.connect(kA, {identification("reader", true)}, kT0, &reader));
   ASSERT_TRUE(db.connect(kB, {identification("pub", true)}, kT0));
   db.process_packet(kA, {registration("X", 0, "reader")}, kT0);
   // One message per call: the mail leaves with each call, nothing accumulates.
