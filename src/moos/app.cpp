@@ -335,7 +335,6 @@ void MoosApp::cycle() {
   }
 
   comms_->fetch_into(mail_);
-  // The counters are read here, so the usual cycle (nothing new) makes no calls.
   if (comms_->mail_dropped() != reported_mail_dropped_) report_dropped_mail();
   if (comms_->postings_dropped() != reported_postings_dropped_) report_dropped_postings();
   if (!mail_.empty()) {
@@ -441,11 +440,10 @@ void MoosApp::post_report(double iterate_start) {
   // Only a node name that comes from the connection (no Community setting) can change.
   if (settings_.community.empty()) appcast_.set_node(community());
 
-  // Nothing to report (the usual cycle of an app nobody watches): no times to work out.
+  // Nothing to report (an app nobody watches): no times to work out.
   const bool appcast_pending = appcast_requested() || iteration_ < 2;
   const bool term = term_reporting_enabled();
   if (!term && !appcast_pending) return;
-
   // protocol.md 7.2: real seconds since the last terminal report and the last appcast.
   const double warp = comms_->time_warp();
   auto real_since = [&](const std::optional<double>& t) {
