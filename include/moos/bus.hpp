@@ -87,6 +87,7 @@ class BusClient final : public Comms {
   Clock& clock() const override;
   double time_warp() const override;
   double skew_s() const override { return 0.0; }
+  double moos_time() const override;
   void fetch_into(std::vector<Message>& mail) override;
 
   /// As if the TCP connection dropped: the bus forgets this client's subscriptions, filters and

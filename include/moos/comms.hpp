@@ -27,6 +27,7 @@
 // - Every public function is thread-safe. Callbacks run on the implementation's own thread
 //   (TcpClient: its comms thread) with no lock held; they may call any function of this object.
 
+#include <array>
 #include <atomic>
 #include <cstdint>
 #include <functional>
@@ -89,7 +90,9 @@ class Comms {
   /// MOOS time minus local time, seconds (0 until a server says otherwise, protocol.md 1.8, 4.4).
   virtual double skew_s() const = 0;
   double local_time() const { return clock().unix_now_s() * time_warp(); }
-  double moos_time() const { return local_time() + skew_s(); }
+  /// local_time() + skew_s(). Virtual only so that an implementation can answer with fewer
+  /// calls (an app asks several times per cycle); the value is the same.
+  virtual double moos_time() const { return local_time() + skew_s(); }
 
   /// REGISTER `var`; updates of it arrive at most once per `interval_s` MOOS seconds (0 = every
   /// update; throttled updates are dropped by the server, protocol.md 5.3).
@@ -134,6 +137,9 @@ class Comms {
   /// promise, e.g. before a long sleep that mail must end). An implementation may then leave
   /// reading to fetch() and save its own wake-ups (TcpClient); the promise of fetch() holds.
   virtual void expect_fetch_within(double /*real_s*/) {}
+  /// False when expect_fetch_within() ignores its promise (BusClient): a caller may skip
+  /// working out its argument.
+  bool takes_fetch_promises() const { return takes_fetch_promises_; }
   /// Mail dropped unread since the start because the inbox was full (never decreases).
   std::uint64_t mail_dropped() const { return mail_dropped_.load(); }
   /// Postings refused since the start because the outbox was full or the message too large
@@ -157,7 +163,8 @@ class Comms {
   std::set<std::string> published_names() const;
 
  protected:
-  explicit Comms(std::string name) : name_(std::move(name)) {}
+  explicit Comms(std::string name, bool takes_fetch_promises = true)
+      : name_(std::move(name)), takes_fetch_promises_(takes_fetch_promises) {}
 
   /// Hands one message to the server: now when connected; a NOTIFY also while disconnected,
   /// queued for the next connection (the delivery contract above). False (nothing sent) when it
@@ -180,8 +187,12 @@ class Comms {
   Message register_message(const std::string& var, double interval_s) const;
   Message wildcard_message(char type, const WildcardSpec& spec) const;
   bool post_and_record(Message&& msg);
+  bool published_recently(const std::string& key) const;
+  /// Lists `name`, an element of published_, among recent_published_; book_mutex_ held.
+  void remember_published(const std::string& name);
 
   const std::string name_;
+  const bool takes_fetch_promises_;
   mutable std::mutex book_mutex_;
   /// Subscriptions in first-made order: a plain variable (var_pattern is the name, app_pattern
   /// unset) or a wildcard pair.
@@ -190,8 +201,15 @@ class Comms {
     WildcardSpec entry;
   };
   std::vector<Subscription> subscriptions_;
-  /// Unordered: looked up at every posting; published_names() sorts a copy.
+  /// Unordered: looked up at every posting; published_names() sorts a copy. Names are never
+  /// erased.
   std::unordered_set<std::string> published_;
+  /// Elements of published_ posted lately (null: none yet): a posting of one of them needs no
+  /// lock and no hashing. Their strings stay put (elements of an unordered_set do not move) and
+  /// are never changed. Written under book_mutex_, in turn.
+  static constexpr std::size_t kRecentPublished = 4;
+  std::array<std::atomic<const std::string*>, kRecentPublished> recent_published_{};
+  std::size_t recent_published_next_ = 0;  ///< under book_mutex_
   std::function<void()> on_connect_;
   std::function<void()> on_mail_;
   std::atomic<bool> has_on_mail_{false};

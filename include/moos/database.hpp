@@ -80,6 +80,18 @@ inline constexpr int kLoggedRefusalsPerClient = 20;
 inline constexpr std::size_t kDefaultMaxStoredBytes = 1024u * 1024u * 1024u;
 inline constexpr std::size_t kVariableOverheadBytes = 256;
 
+/// Where a connection layer in the same process (moos::InProcessBus) takes one asynchronous
+/// client's mail instead of packets (Database::connect).
+class MailSink {
+ public:
+  virtual ~MailSink() = default;
+  /// Mail; `msg` is shared with the posting's other readers: copy what you keep.
+  virtual void copy_mail(const Message& msg) = 0;
+  /// Mail the Database is done with (a posting's last reader): take its contents (a move
+  /// saves the copy); `msg` may be left holding anything.
+  virtual void take_mail(Message& msg) = 0;
+};
+
 struct DatabaseConfig {
   std::string community = kDefaultCommunity;
   std::string hostname;  ///< sent in WELCOME as `hostname=<hostname>` (protocol.md 1.6)
@@ -89,14 +101,6 @@ struct DatabaseConfig {
   std::size_t max_reply_bytes = kDefaultMaxPacketBytes;
   std::size_t max_stored_bytes = kDefaultMaxStoredBytes;
   bool db_variables = true;  ///< publish the DB_* variables of protocol.md 5.7
-  /// For a connection layer in the same process (moos::InProcessBus): when set, each mail of an
-  /// asynchronous client (a NOTIFY: live update, snapshot or answer) is handed to it as it is
-  /// queued, in the order it would have in the client's packets, instead of leaving in a packet
-  /// through take_output(); protocol replies (WELCOME, POISON, TIMING echoes) still leave there.
-  /// The max_pending_bytes bound applies per call as without it. The sink copies what it keeps:
-  /// the message is shared by all of a posting's readers. It must not call back into the
-  /// Database.
-  std::function<void(ClientId, const Message&)> mail_sink;
 };
 
 /// One packet for one client.
@@ -135,7 +139,14 @@ class Database {
   /// Handshake (protocol.md 1.5-1.6): `identification` is the decoded identification packet.
   /// Queues WELCOME (returns true; the client is now connected, DB_EVENT and DB_CLIENTS are
   /// published) or POISON (returns false; the caller closes the connection after sending).
-  bool connect(ClientId id, const std::vector<Message>& identification, double now_moos_s);
+  /// With a `mail_sink` (a connection layer in the same process, moos::InProcessBus), each mail
+  /// of an asynchronous client (a NOTIFY: live update, snapshot or answer) is handed to it as it
+  /// is queued, in the order it would have in the client's packets, instead of leaving in a
+  /// packet through take_output(); protocol replies (WELCOME, POISON, TIMING echoes) still leave
+  /// there, and the max_pending_bytes bound applies per call as without it. Not owned: it must
+  /// last as long as the connection and must not call back into the Database.
+  bool connect(ClientId id, const std::vector<Message>& identification, double now_moos_s,
+               MailSink* mail_sink = nullptr);
   /// Why connect() would refuse `identification` now (the POISON's text), or nullopt.
   std::optional<std::string> handshake_refusal(const std::vector<Message>& identification) const;
 
@@ -159,6 +170,8 @@ class Database {
   void take_output(std::vector<OutPacket>& out);
   /// Clients to disconnect because their undelivered mail overflowed; the list is emptied.
   std::vector<DropRequest> take_drop_requests();
+  /// Whether take_output() or take_drop_requests() has anything to hand over.
+  bool has_output() const { return !output_.empty() || !drops_.empty(); }
 
   bool is_connected(ClientId id) const { return clients_.count(id) != 0; }
   std::optional<std::string> client_name(ClientId id) const;
@@ -174,9 +187,40 @@ class Database {
  private:
   using VarId = std::size_t;
 
+  /// A variable a client has posted, found again by comparing names instead of hashing them.
+  struct PostedVariable {
+    std::string name;
+    VarId var = 0;
+  };
+
+  struct Client {
+    ClientId id = 0;
+    std::string name;
+    bool async = false;
+    MailSink* sink = nullptr;  ///< see connect()
+    std::vector<Message> pending;  ///< undelivered mail, in order
+    std::size_t pending_bytes = 0;
+    bool queued_for_flush = false;  ///< already listed in async_with_mail_
+    bool overflowed = false;
+    std::vector<WildcardSpec> filters;
+    std::set<VarId> subscribed;
+    std::set<VarId> published;
+    /// The variables of its latest accepted NOTIFYs, each also in `published` (an app posts the
+    /// same few every cycle); at most kPostedCacheEntries, names of at most
+    /// kPostedCacheNameBytes. VarIds never change, so only DB_CLEAR (which empties `published`)
+    /// empties it.
+    std::vector<PostedVariable> posted_cache;
+    std::size_t posted_cache_next = 0;  ///< the entry a new name replaces when it is full
+    int refusals = 0;
+  };
+  static constexpr std::size_t kPostedCacheEntries = 8;
+  static constexpr std::size_t kPostedCacheNameBytes = 64;
+
   struct Subscription {
     double interval_s = 0.0;  ///< 0: every update
     std::optional<double> last_delivery_moos_s;  ///< nullopt: never delivered
+    /// The subscriber (clients_ nodes do not move; a client's subscriptions go before it does).
+    Client* client = nullptr;
   };
 
   /// The last accepted write of a variable.
@@ -206,36 +250,27 @@ class Database {
     std::map<ClientId, Subscription> subscribers;  ///< ordered: deterministic fan-out
   };
 
-  struct Client {
-    std::string name;
-    bool async = false;
-    std::vector<Message> pending;  ///< undelivered mail, in order
-    std::size_t pending_bytes = 0;
-    bool queued_for_flush = false;  ///< already listed in async_with_mail_
-    bool overflowed = false;
-    std::vector<WildcardSpec> filters;
-    std::set<VarId> subscribed;
-    std::set<VarId> published;
-    int refusals = 0;
-  };
-
   /// process_packet() of the messages [first, last), which it moves from.
   void process_messages(ClientId id, Message* first, Message* last, double now_moos_s);
   // One handler per message type (protocol.md 5.2 step 3), each in the file of its rule.
-  void handle_message(ClientId id, Message&& msg, double now);
-  void handle_notify(ClientId id, Message&& msg, double now);
+  void handle_message(Client& client, Message&& msg, double now);
+  void handle_notify(Client& client, Message&& msg, double now);
   void handle_register(ClientId id, const Message& msg, double now);
   void handle_unregister(ClientId id, const Message& msg);
   void handle_wildcard_register(ClientId id, const Message& msg, double now);
   void handle_wildcard_unregister(ClientId id, const Message& msg);
   void handle_server_request(ClientId id, const Message& msg, double now);
 
-  // NOTIFY storage and fan-out (database_notify.cpp). publish() returns the variable; the
-  // write was refused if the variable's type differs from the message's afterwards.
-  VarId publish(Message&& msg, double now);
+  // NOTIFY storage and fan-out (database_notify.cpp). publish() writes `msg` to variable `id`
+  // (its name); the write was refused if the variable's type differs from the message's
+  // afterwards.
+  void publish(VarId id, Message&& msg, double now);
   void store(Variable& var, const Message& msg, double now);
   void fan_out(Variable& var, Message&& msg, double now);
   VarId find_or_create(const std::string& name);
+  /// The client's posted_cache entry of `name`, or null.
+  static const PostedVariable* find_posted(const Client& client, const std::string& name);
+  void remember_posted(Client& client, VarId var) const;
   /// Why a client's write of `msg` (or, without a value, a new name) would take the store
   /// beyond max_stored_bytes; empty when it fits.
   std::string store_refusal(const Message& msg, bool with_value) const;
@@ -263,11 +298,12 @@ class Database {
   // Mail and replies (database_mail.cpp).
   Message snapshot(const Variable& var) const;
   void queue_mail(ClientId id, Message&& msg);
-  /// queue_mail() of a copy of `msg` (a fan-out's reader but the last); a mail sink copies it.
-  void queue_mail_copy(ClientId id, const Message& msg);
-  /// The mail bound's check and count for `msg` to `id`: the client, or null when it takes no
+  /// A posting's mail of `size` encoded bytes for `client`: a copy of `msg` (a fan-out's reader
+  /// but the last), or with `take` the message itself, which a mail sink may take apart.
+  void queue_fan_out_mail(Client& client, Message& msg, std::size_t size, bool take);
+  /// The mail bound's check and count for `size` more bytes to `client`: false when it takes no
   /// more mail.
-  Client* admit_mail(ClientId id, const Message& msg);
+  bool admit_mail(Client& client, std::size_t size);
   void flush_async_mail();
   /// Moves the client's pending mail behind `reply`: all of it for an asynchronous client,
   /// what fits in config_.max_reply_bytes for a synchronous one.
@@ -289,7 +325,8 @@ class Database {
   std::unordered_map<std::string, VarId> var_index_;
   std::map<ClientId, Client> clients_;  ///< ordered by id = connection order
   std::unordered_map<std::string, ClientId> client_by_name_;
-  std::vector<ClientId> async_with_mail_;
+  /// Listed at most once each (queued_for_flush) and never across a disconnect.
+  std::vector<Client*> async_with_mail_;
 
   std::vector<OutPacket> output_;
   std::vector<DropRequest> drops_;

@@ -339,8 +339,8 @@ void MoosApp::cycle() {
   }
 
   comms_->fetch_into(mail_);
-  report_dropped_mail();
-  report_dropped_postings();
+  if (comms_->mail_dropped() != reported_mail_dropped_) report_dropped_mail();
+  if (comms_->postings_dropped() != reported_postings_dropped_) report_dropped_postings();
   if (!mail_.empty()) {
     const auto by_time = [](const Message& a, const Message& b) { return a.time < b.time; };
     // Mail mostly arrives in time order: checking is cheaper than a merge sort's buffer.
@@ -363,6 +363,7 @@ void MoosApp::cycle() {
 }
 
 void MoosApp::promise_next_fetch() {
+  if (!comms_->takes_fetch_promises()) return;  // no clock to read for it
   if (idle_resume_moos_s_) {
     comms_->expect_fetch_within(0.0);
     return;
@@ -443,6 +444,10 @@ void MoosApp::post_report(double iterate_start) {
   // Only a node name that comes from the connection (no Community setting) can change.
   if (settings_.community.empty()) appcast_.set_node(community());
 
+  // Nothing to report (an app nobody watches): no times to work out.
+  const bool appcast_pending = appcast_requested() || iteration_ < 2;
+  const bool term = term_reporting_enabled();
+  if (!term && !appcast_pending) return;
   // protocol.md 7.2: real seconds since the last terminal report and the last appcast.
   const double warp = comms_->time_warp();
   auto real_since = [&](const std::optional<double>& t) {
@@ -452,10 +457,6 @@ void MoosApp::post_report(double iterate_start) {
   const double since_appcast = real_since(last_appcast_moos_s_);
   const double interval = settings_.term_report_interval_s;
   if (since_term < interval && since_appcast < interval) return;
-
-  const bool appcast_pending = appcast_requested() || iteration_ < 2;
-  const bool term = term_reporting_enabled();
-  if (!term && !appcast_pending) return;
   if (!appcast_pending && since_term < interval) return;
   if (!term && since_appcast < interval) return;
 

@@ -10,7 +10,6 @@
 
 #include "moos/bus.hpp"
 
-#include <algorithm>
 #include <atomic>
 #include <functional>
 #include <map>
@@ -21,9 +20,10 @@
 
 namespace moos {
 
-/// One client name's connection to the bus.
-struct BusClientState {
-  explicit BusClientState(std::string n) : name(std::move(n)) {}
+/// One client name's connection to the bus, and the sink of its Database mail.
+struct BusClientState final : MailSink {
+  BusClientState(std::string n, std::vector<BusClientState*>* woken_list)
+      : name(std::move(n)), woken(woken_list) {}
   const std::string name;
   BusClient* handle = nullptr;  // for on-mail callbacks
   ClientId id = 0;              // the current Database connection
@@ -34,6 +34,27 @@ struct BusClientState {
   Inbox inbox;  // its mail is copied into the storage of the mail the app read before
   std::vector<Message> outbox;  // postings made while disconnected (comms.hpp)
   OutboxBound outbox_bound;
+  // The clients that got mail in the current bus call, in order (the bus's list), and whether
+  // this one is listed there.
+  std::vector<BusClientState*>* const woken;
+  bool listed_as_woken = false;
+
+  // The Database's mail, under the bus mutex: a copy into the storage the app's read mail left,
+  // or the message itself moved in.
+  void copy_mail(const Message& m) override {
+    inbox.push_copy(m);
+    got_mail();
+  }
+  void take_mail(Message& m) override {
+    inbox.push_moved(m);
+    got_mail();
+  }
+  void got_mail() {
+    has_mail = true;
+    if (listed_as_woken) return;
+    listed_as_woken = true;
+    woken->push_back(this);
+  }
 };
 
 struct BusCore {
@@ -49,8 +70,6 @@ struct BusCore {
     DatabaseConfig config;
     config.community = options.community;
     config.db_variables = false;  // no refresh timer on the bus (see bus.hpp)
-    // Mail goes straight into the inboxes: no packet per message to build and route.
-    config.mail_sink = [this](ClientId to, const Message& m) { take_mail(to, m); };
     return config;
   }
 
@@ -86,7 +105,8 @@ struct BusCore {
     ident.time = now();
     const ClientId id = next_id++;
     states_by_id[id] = &state;  // before the handshake: mail may follow the WELCOME at once
-    const bool welcomed = db.connect(id, {ident}, now());
+    // Mail goes straight into the inbox: no packet per message to build and route.
+    const bool welcomed = db.connect(id, {ident}, now(), &state);
     if (welcomed) {
       state.id = id;
     } else {
@@ -128,17 +148,19 @@ struct BusCore {
         if (auto cb = client->handle->on_mail_callback()) callbacks->push_back(std::move(cb));
       }
     }
+    for (ClientState* client : woken) client->listed_as_woken = false;
     woken.clear();
   }
 
   /// The Database's packets: protocol replies, which are not mail. Then the clients it drops.
   void route_output() {
+    if (!db.has_output()) return;  // the usual call: all its mail went to the sinks
     db.take_output(output);
     for (auto& packet : output) {
       const auto to = states_by_id.find(packet.to);
       if (to == states_by_id.end()) continue;  // a refused connection's POISON
       for (auto& m : packet.messages)
-        if (m.type == msg_type::kNotify) take_mail(*to->second, m);
+        if (m.type == msg_type::kNotify) to->second->take_mail(m);  // the packet's to give
     }
     output.clear();
     // The server would close these connections; so does the bus.
@@ -150,16 +172,6 @@ struct BusCore {
     }
   }
 
-  void take_mail(ClientId to, const Message& m) {
-    const auto state = states_by_id.find(to);
-    if (state != states_by_id.end()) take_mail(*state->second, m);
-  }
-
-  void take_mail(ClientState& state, const Message& m) {
-    state.inbox.push_copy(m);
-    state.has_mail = true;
-    if (std::find(woken.begin(), woken.end(), &state) == woken.end()) woken.push_back(&state);
-  }
 };
 
 // ---- InProcessBus ---------------------------------------------------------------------------
@@ -177,7 +189,7 @@ std::unique_ptr<BusClient> InProcessBus::connect(const std::string& name) {
   {
     std::lock_guard<std::mutex> lock(core_->mutex);
     // A real DB would POISON a second client of one name (1.6).
-    const auto [it, fresh] = core_->clients.try_emplace(name, name);
+    const auto [it, fresh] = core_->clients.try_emplace(name, name, &core_->woken);
     if (!fresh) return nullptr;
     BusCore::ClientState& state = it->second;
     if (!core_->open_connection(state)) {
@@ -235,14 +247,14 @@ std::vector<std::string> InProcessBus::diagnostics() const {
 // ---- BusClient ------------------------------------------------------------------------------
 
 BusClient::BusClient(std::shared_ptr<BusCore> core, std::string name)
-    : Comms(std::move(name)), core_(std::move(core)) {}
+    : Comms(std::move(name), /*takes_fetch_promises=*/false), core_(std::move(core)) {}
 
 BusClient::~BusClient() {
   if (!state_) return;  // refused at connect
   std::lock_guard<std::mutex> lock(core_->mutex);
   if (state_->connected) core_->close_connection(*state_);
-  core_->clients.erase(state_->name);
   core_->settle();  // no callbacks from a destructor: the mail waits in the inboxes
+  core_->clients.erase(state_->name);  // after settle(), which clears the woken list
 }
 
 // The state's flags are atomic: an app's per-cycle checks take no lock.
@@ -253,6 +265,9 @@ std::uint64_t BusClient::connection_count() const { return state_ ? state_->conn
 std::string BusClient::community() const { return core_->options.community; }
 Clock& BusClient::clock() const { return core_->clock; }
 double BusClient::time_warp() const { return core_->options.time_warp; }
+// Comms::moos_time() in one call: local time + the skew, 0 (added, as there, so that the
+// value is the same to the bit).
+double BusClient::moos_time() const { return core_->now() + skew_s(); }
 
 void BusClient::fetch_into(std::vector<Message>& mail) {
   // Mail that reached the inbox before this call set has_mail before it (under the lock).

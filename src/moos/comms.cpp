@@ -142,23 +142,43 @@ bool Comms::post_and_record(Message&& msg) {
                           std::to_string(kMaxMessageBytes) + " a MOOS client accepts");
     return false;
   }
-  // An app posts the same few names every cycle: the name is copied only the first time.
+  // An app posts the same few names every cycle: the name is copied only the first time, and
+  // looked up under the lock only when it was not among the latest.
+  if (published_recently(msg.key)) return transmit(std::move(msg));
   std::string new_key;
   {
     std::lock_guard<std::mutex> lock(book_mutex_);
-    if (published_.count(msg.key) == 0) new_key = msg.key;
+    const auto known = published_.find(msg.key);
+    if (known == published_.end()) {
+      new_key = msg.key;
+    } else {
+      remember_published(*known);
+    }
   }
   if (!transmit(std::move(msg))) return false;
   if (new_key.empty()) return true;
   std::lock_guard<std::mutex> lock(book_mutex_);
-  published_.insert(std::move(new_key));
+  remember_published(*published_.insert(std::move(new_key)).first);
   return true;
+}
+
+bool Comms::published_recently(const std::string& key) const {
+  for (const auto& recent : recent_published_) {
+    const std::string* name = recent.load(std::memory_order_acquire);
+    if (name && *name == key) return true;
+  }
+  return false;
+}
+
+void Comms::remember_published(const std::string& name) {
+  recent_published_[recent_published_next_].store(&name, std::memory_order_release);
+  recent_published_next_ = (recent_published_next_ + 1) % kRecentPublished;
 }
 
 bool Comms::notify(const std::string& var, double value, std::optional<double> time_s,
                    const std::string& source_aux) {
   Message m = make_double_notify(var, value, name_, time_s ? *time_s : moos_time());
-  m.source_aux = source_aux;
+  if (!source_aux.empty()) m.source_aux = source_aux;  // an assignment is a library call
   return post_and_record(std::move(m));
 }
 
@@ -166,14 +186,14 @@ bool Comms::notify(std::string var, std::string value, std::optional<double> tim
                    const std::string& source_aux) {
   Message m = make_string_notify(std::move(var), std::move(value), name_,
                                  time_s ? *time_s : moos_time());
-  m.source_aux = source_aux;
+  if (!source_aux.empty()) m.source_aux = source_aux;  // an assignment is a library call
   return post_and_record(std::move(m));
 }
 
 bool Comms::notify_binary(const std::string& var, const std::string& bytes,
                           std::optional<double> time_s, const std::string& source_aux) {
   Message m = make_binary_notify(var, bytes, name_, time_s ? *time_s : moos_time());
-  m.source_aux = source_aux;
+  if (!source_aux.empty()) m.source_aux = source_aux;  // an assignment is a library call
   return post_and_record(std::move(m));
 }
 

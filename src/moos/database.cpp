@@ -18,6 +18,7 @@
 
 #include "moos/database.hpp"
 
+#include <algorithm>
 #include <cassert>
 #include <utility>
 
@@ -73,7 +74,7 @@ Database::Database(DatabaseConfig config, double start_moos_s, LogSink log,
 // Connections (protocol.md 1.5, 1.6, 1.9)
 
 bool Database::connect(ClientId id, const std::vector<Message>& identification,
-                       double now_moos_s) {
+                       double now_moos_s, MailSink* mail_sink) {
   assert(clients_.count(id) == 0 && "connection ids are unique");
   const std::optional<std::string> poison_reason = handshake_refusal(identification);
   if (poison_reason) {
@@ -85,8 +86,10 @@ bool Database::connect(ClientId id, const std::vector<Message>& identification,
 
   const Message* ident = &identification.front();
   Client client;
+  client.id = id;
   client.name = ident->sval;
   client.async = base::iequals(ident->key, kAsynchronousKey);
+  client.sink = mail_sink;
   client_by_name_[client.name] = id;
   const std::string name = client.name;
   clients_.emplace(id, std::move(client));
@@ -110,6 +113,8 @@ void Database::disconnect(ClientId id, double now_moos_s) {
   if (it == clients_.end()) return;
   Client& client = it->second;
   for (const VarId var : client.subscribed) vars_[var].subscribers.erase(id);
+  if (client.queued_for_flush)  // not left listed: the list points at clients
+    async_with_mail_.erase(std::find(async_with_mail_.begin(), async_with_mail_.end(), &client));
   if (client.refusals > kLoggedRefusalsPerClient)
     log_(describe(id) + ": " + std::to_string(client.refusals) +
          " messages refused in total");
@@ -136,22 +141,19 @@ void Database::process_message(ClientId id, Message&& msg, double now_moos_s) {
 void Database::process_messages(ClientId id, Message* first, Message* last, double now_moos_s) {
   const auto found = clients_.find(id);
   if (found == clients_.end()) return;
+  Client& client = found->second;
   // Step 2: a leading TIMING is echoed to asynchronous clients; synchronous clients never
-  // receive TIMING (protocol.md 5.6), so theirs is dropped. TIMING elsewhere is ignored.
-  std::optional<Message> echo;
+  // receive TIMING (protocol.md 5.6), so theirs is dropped. TIMING elsewhere is ignored. The
+  // echo is made after the other messages: handling them leaves this one as it is.
+  Message* echo = nullptr;
   if (first != last && first->type == mt::kTiming) {
-    if (found->second.async) {
-      echo = *first;
-      echo->dval = now_moos_s;  // server local warped time; the DB's skew is 0
-      echo->dval2 = 0.0;        // outgoing delay for this client, seconds (none)
-    }
+    if (client.async) echo = first;
     ++first;
   }
-  for (; first != last; ++first) handle_message(id, std::move(*first), now_moos_s);
+  for (; first != last; ++first) handle_message(client, std::move(*first), now_moos_s);
 
   // Step 6: the reply. Sync: NULL first, always. Async: echo first, only if non-empty. Handling
-  // erases no client (drops are requests), so `found` is still valid.
-  Client& client = found->second;
+  // erases no client (drops are requests), so `client` is still valid.
   if (client.async && !echo) {
     if (!client.pending.empty()) send_packet(id, std::move(client.pending));
     client.pending.clear();
@@ -162,6 +164,8 @@ void Database::process_messages(ClientId id, Message* first, Message* last, doub
       reply.push_back(null_reply(now_moos_s));
     } else {
       reply.push_back(std::move(*echo));
+      reply.back().dval = now_moos_s;  // server local warped time; the DB's skew is 0
+      reply.back().dval2 = 0.0;        // outgoing delay for this client, seconds (none)
     }
     take_pending(client, reply);
     send_packet(id, std::move(reply));
@@ -170,9 +174,10 @@ void Database::process_messages(ClientId id, Message* first, Message* last, doub
   flush_async_mail();
 }
 
-void Database::handle_message(ClientId id, Message&& msg, double now) {
+void Database::handle_message(Client& client, Message&& msg, double now) {
+  const ClientId id = client.id;
   switch (msg.type) {
-    case mt::kNotify: handle_notify(id, std::move(msg), now); break;
+    case mt::kNotify: handle_notify(client, std::move(msg), now); break;
     case mt::kRegister: handle_register(id, msg, now); break;
     case mt::kUnregister: handle_unregister(id, msg); break;
     case mt::kWildcardRegister: handle_wildcard_register(id, msg, now); break;

@@ -31,42 +31,39 @@ Message Database::snapshot(const Variable& var) const {
   return m;
 }
 
-Database::Client* Database::admit_mail(ClientId id, const Message& msg) {
-  Client& client = clients_.at(id);
-  if (client.overflowed) return nullptr;
-  const std::size_t size = msg.encoded_size();
+bool Database::admit_mail(Client& client, std::size_t size) {
+  if (client.overflowed) return false;
   if (client.pending_bytes + size > config_.max_pending_bytes) {
     client.overflowed = true;
     drops_.push_back(DropRequest{
-        id, "undelivered mail would exceed " + std::to_string(config_.max_pending_bytes) +
-                " bytes (the client does not collect its mail)"});
-    return nullptr;
+        client.id, "undelivered mail would exceed " + std::to_string(config_.max_pending_bytes) +
+                       " bytes (the client does not collect its mail)"});
+    return false;
   }
   client.pending_bytes += size;
   if (client.async && !client.queued_for_flush) {
     client.queued_for_flush = true;
-    async_with_mail_.push_back(id);
+    async_with_mail_.push_back(&client);
   }
-  return &client;
+  return true;
 }
 
 void Database::queue_mail(ClientId id, Message&& msg) {
-  Client* client = admit_mail(id, msg);
-  if (!client) return;
-  if (client->async && config_.mail_sink) {
-    config_.mail_sink(id, msg);  // delivered now: no packet per message
-  } else {
-    client->pending.push_back(std::move(msg));
-  }
+  queue_fan_out_mail(clients_.at(id), msg, msg.encoded_size(), true);
 }
 
-void Database::queue_mail_copy(ClientId id, const Message& msg) {
-  Client* client = admit_mail(id, msg);
-  if (!client) return;
-  if (client->async && config_.mail_sink) {
-    config_.mail_sink(id, msg);  // the sink's copy reuses its own storage
+void Database::queue_fan_out_mail(Client& client, Message& msg, std::size_t size, bool take) {
+  if (!admit_mail(client, size)) return;
+  if (client.async && client.sink) {  // delivered now: no packet per message
+    if (take) {
+      client.sink->take_mail(msg);
+    } else {
+      client.sink->copy_mail(msg);
+    }
+  } else if (take) {
+    client.pending.push_back(std::move(msg));
   } else {
-    client->pending.push_back(msg);
+    client.pending.push_back(msg);
   }
 }
 
@@ -94,15 +91,12 @@ void Database::take_pending(Client& client, std::vector<Message>& reply) {
 }
 
 void Database::flush_async_mail() {
-  for (const ClientId id : async_with_mail_) {
-    const auto it = clients_.find(id);
-    if (it == clients_.end()) continue;
-    Client& client = it->second;
-    client.queued_for_flush = false;
-    client.pending_bytes = 0;  // the bound is per call, with a mail sink too
-    if (client.pending.empty()) continue;
-    send_packet(id, std::move(client.pending));
-    client.pending.clear();
+  for (Client* client : async_with_mail_) {
+    client->queued_for_flush = false;
+    client->pending_bytes = 0;  // the bound is per call, with a mail sink too
+    if (client->pending.empty()) continue;
+    send_packet(client->id, std::move(client->pending));
+    client->pending.clear();
   }
   async_with_mail_.clear();
 }

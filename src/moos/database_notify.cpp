@@ -49,54 +49,78 @@ void overwrite(std::string& to, const std::string& from) {
 
 }  // namespace
 
-void Database::handle_notify(ClientId id, Message&& msg, double now) {
+void Database::handle_notify(Client& client, Message&& msg, double now) {
+  const ClientId id = client.id;
   if (msg.key.empty()) return refuse(id, "NOTIFY with an empty variable name refused");
   if (!is_value_type(msg.data_type))
     return refuse(id, "NOTIFY " + base::excerpt(msg.key) + " with data type '" + msg.data_type +
                           "' refused (expected D, S or B)");
-  Client& client = clients_.at(id);
   if (msg.source.empty()) msg.source = client.name;
   if (msg.community.empty()) msg.community = config_.community;
-  if (msg.encoded_size() > kMaxMessageBytes)  // no client could take it (codec.hpp)
+  if (const std::size_t size = msg.encoded_size(); size > kMaxMessageBytes)
     return refuse(id, "NOTIFY " + base::excerpt(msg.key) + " refused: its " +
-                          std::to_string(msg.encoded_size()) + " bytes exceed the " +
+                          std::to_string(size) + " bytes exceed the " +
                           std::to_string(kMaxMessageBytes) + " a client accepts in a message");
   if (const std::string why = store_refusal(msg, true); !why.empty())
     return refuse(id, "NOTIFY " + base::excerpt(msg.key) + " refused: " + why);
   const char type = msg.data_type;
-  const VarId var = publish(std::move(msg), now);
+  // A name the client posted before needs no hashing, nor another look at `published`.
+  const PostedVariable* posted = find_posted(client, msg.key);
+  const VarId var = posted ? posted->var : find_or_create(msg.key);
+  publish(var, std::move(msg), now);
   if (vars_[var].data_type != type)
     return refuse(id, "NOTIFY " + base::excerpt(vars_[var].name) + " as " + type_name(type) +
                           " refused: the variable is " + type_name(vars_[var].data_type) +
                           " (fixed by its first write)");
+  if (posted) return;
   client.published.insert(var);
+  remember_posted(client, var);
+}
+
+const Database::PostedVariable* Database::find_posted(const Client& client,
+                                                      const std::string& name) {
+  for (const PostedVariable& entry : client.posted_cache)
+    if (entry.name == name) return &entry;
+  return nullptr;
+}
+
+void Database::remember_posted(Client& client, VarId var) const {
+  const std::string& name = vars_[var].name;
+  if (name.size() > kPostedCacheNameBytes) return;  // rare; bounds the cache's memory
+  if (client.posted_cache.size() < kPostedCacheEntries) {
+    client.posted_cache.push_back(PostedVariable{name, var});
+    return;
+  }
+  // Full: the entries are replaced in turn (an app that posts more names than fit pays a hash
+  // look-up for some, as without the cache).
+  client.posted_cache[client.posted_cache_next] = PostedVariable{name, var};
+  client.posted_cache_next = (client.posted_cache_next + 1) % kPostedCacheEntries;
 }
 
 void Database::publish_db_variable(Message msg, double now) {
   msg.community = config_.community;
   const char type = msg.data_type;
-  const VarId var = publish(std::move(msg), now);
+  const VarId var = find_or_create(msg.key);
+  publish(var, std::move(msg), now);
   if (vars_[var].data_type != type)
     log_("DB variable " + vars_[var].name + " not written: a client wrote it first as " +
          type_name(vars_[var].data_type));
 }
 
-Database::VarId Database::publish(Message&& msg, double now) {
-  const VarId id = find_or_create(msg.key);
+void Database::publish(VarId id, Message&& msg, double now) {
   if (vars_[id].write_count == 0) {
     // Step 2: the first write fixes the type and binds the wildcard filters.
     vars_[id].data_type = msg.data_type;
     bind_wildcard_filters(id, msg.source);
   }
   Variable& var = vars_[id];
-  if (msg.data_type != var.data_type) return id;  // step 3: the caller reports the refusal
+  if (msg.data_type != var.data_type) return;  // step 3: the caller reports the refusal
 
   msg.type = mt::kNotify;
   if (msg.community.empty()) msg.community = config_.community;
   store(var, msg, now);
   if (notify_observer_) notify_observer_(msg);
   fan_out(var, std::move(msg), now);
-  return id;
 }
 
 void Database::store(Variable& var, const Message& msg, double now) {
@@ -118,9 +142,10 @@ void Database::store(Variable& var, const Message& msg, double now) {
   }
   value.time_moos_s = msg.time;
   value.db_write_moos_s = now;
-  overwrite(value.writer, msg.source);
-  overwrite(value.writer_aux, msg.source_aux);
-  overwrite(value.community, msg.community);
+  // Mostly what the last write stored: comparing costs less than assigning.
+  if (value.writer != msg.source) overwrite(value.writer, msg.source);
+  if (value.writer_aux != msg.source_aux) overwrite(value.writer_aux, msg.source_aux);
+  if (value.community != msg.community) overwrite(value.community, msg.community);
   stored_bytes_ += value_bytes(value);
 
   WriteFrequency& f = var.frequency;
@@ -138,19 +163,18 @@ void Database::fan_out(Variable& var, Message&& msg, double now) {
   // Steps 5-6: every subscriber whose interval expired, the publisher included; throttled
   // updates are dropped, not delayed. A subscription that never delivered is due. Each due
   // subscriber but the last gets a copy; the last one gets the message itself (a mail sink
-  // copies each into its own storage).
-  ClientId previous = 0;
-  bool have_previous = false;
+  // takes it apart instead of copying it).
+  const std::size_t size = msg.encoded_size();  // one size for every reader
+  Client* previous = nullptr;
   for (auto& [subscriber, sub] : var.subscribers) {
     const bool due = sub.interval_s <= 0.0 || !sub.last_delivery_moos_s ||
                      now - *sub.last_delivery_moos_s >= sub.interval_s;
     if (!due) continue;
     sub.last_delivery_moos_s = now;
-    if (have_previous) queue_mail_copy(previous, msg);
-    previous = subscriber;
-    have_previous = true;
+    if (previous) queue_fan_out_mail(*previous, msg, size, false);
+    previous = sub.client;
   }
-  if (have_previous) queue_mail(previous, std::move(msg));
+  if (previous) queue_fan_out_mail(*previous, msg, size, true);
 }
 
 Database::VarId Database::find_or_create(const std::string& name) {

@@ -24,9 +24,10 @@ void Database::handle_register(ClientId id, const Message& msg, double now) {
 void Database::subscribe(ClientId id, VarId var, double interval_s, double now) {
   // Add or replace; replacing forgets the last delivery (protocol.md 5.4).
   Variable& v = vars_[var];
+  Client& client = clients_.at(id);
   Subscription& sub = v.subscribers[id];
-  sub = Subscription{interval_s, std::nullopt};
-  clients_.at(id).subscribed.insert(var);
+  sub = Subscription{interval_s, std::nullopt, &client};
+  client.subscribed.insert(var);
   if (v.value) {
     // Every REGISTER re-sends the current value and starts the throttle window (protocol.md 5.4).
     sub.last_delivery_moos_s = now;
@@ -56,7 +57,7 @@ void Database::bind_wildcard_filters(VarId var, const std::string& writer) {
         last_word = &filter;
     }
     if (last_word == nullptr) continue;
-    v.subscribers[id] = Subscription{last_word->interval_s, std::nullopt};
+    v.subscribers[id] = Subscription{last_word->interval_s, std::nullopt, &client};
     client.subscribed.insert(var);
   }
 }

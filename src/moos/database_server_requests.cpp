@@ -79,6 +79,8 @@ void Database::clear_db() {
     client.pending.clear();
     client.pending_bytes = 0;
     client.published.clear();
+    client.posted_cache.clear();  // its entries promise membership of `published`
+    client.posted_cache_next = 0;
   }
 }
 

@@ -18,6 +18,62 @@ std::size_t Inbox::kept_bytes() const {
   return bytes;
 }
 
+namespace {
+void copy_string(std::string& to, const std::string& from) {
+  if (from.empty()) {
+    to.clear();
+  } else {
+    to = from;
+  }
+}
+
+/// copy_string() unless `to` holds `from` already: a key, a source name or a community is
+/// mostly what the kept message held, and comparing costs less than assigning.
+void copy_if_changed(std::string& to, const std::string& from) {
+  if (to != from) copy_string(to, from);
+}
+
+void move_string(std::string& to, std::string& from) {
+  if (from.empty()) {
+    to.clear();
+  } else {
+    to = std::move(from);
+  }
+}
+
+// Field by field: a field added to Message must be added here too.
+static_assert(sizeof(Message) == 8 + 5 * sizeof(std::string) + 3 * sizeof(double),
+              "Inbox copies Message field by field");
+
+void copy_scalars(Message& to, const Message& from) {
+  to.id = from.id;
+  to.type = from.type;
+  to.data_type = from.data_type;
+  to.time = from.time;
+  to.dval = from.dval;
+  to.dval2 = from.dval2;
+}
+}  // namespace
+
+void Inbox::assign_copy(Message& to, const Message& from) {
+  copy_scalars(to, from);
+  copy_if_changed(to.source, from.source);
+  copy_string(to.source_aux, from.source_aux);
+  copy_if_changed(to.community, from.community);
+  copy_if_changed(to.key, from.key);
+  copy_string(to.sval, from.sval);  // a value mostly changes
+}
+
+void Inbox::assign_moved(Message& to, Message& from) {
+  copy_scalars(to, from);
+  move_string(to.source, from.source);
+  move_string(to.source_aux, from.source_aux);
+  // Mostly short and unchanged; moving a short string is a copy.
+  copy_if_changed(to.community, from.community);
+  copy_if_changed(to.key, from.key);
+  move_string(to.sval, from.sval);
+}
+
 void Inbox::push_trade(Message& msg) {
   if (size_ < slots_.size()) {
     swap(slots_[size_], msg);

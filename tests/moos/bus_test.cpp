@@ -58,6 +58,9 @@ TEST_F(BusTest, LiveNotifyReachesEverySubscriberIncludingThePublisher_5_3) {
 
 TEST_F(BusTest, FetchIntoCopiesNewMailIntoTheStorageOfTheMailReadBefore) {
   b->register_variable("REPORT");
+  // The last reader takes the posting itself (next test); b, a reader before it, gets copies.
+  const auto last = bus.connect("pLast");
+  last->register_variable("REPORT");
   // Values beyond the small-string buffer: each owns storage.
   const std::string first(200, 'a');
   const std::string second(200, 'b');
@@ -82,6 +85,27 @@ TEST_F(BusTest, FetchIntoCopiesNewMailIntoTheStorageOfTheMailReadBefore) {
   EXPECT_NE(blocker.data(), storage);
   b->fetch_into(mail);
   EXPECT_TRUE(mail.empty());
+}
+
+TEST_F(BusTest, ThePostingsLastReaderGetsItsStorageNotACopy) {
+  a->register_variable("REPORT");
+  b->register_variable("REPORT");  // connected after a: the last reader
+  std::vector<Message> mail_a;
+  std::vector<Message> mail_b;
+  for (const char fill : {'a', 'b', 'c'}) {
+    std::string value(200, fill);  // beyond the small-string buffer: it owns storage
+    const char* posted = value.data();
+    ASSERT_TRUE(a->notify("REPORT", std::move(value)));
+    a->fetch_into(mail_a);
+    b->fetch_into(mail_b);
+    ASSERT_EQ(mail_a.size(), 1u);
+    ASSERT_EQ(mail_b.size(), 1u);
+    EXPECT_EQ(mail_b[0], mail_a[0]);
+    EXPECT_EQ(mail_b[0].sval, std::string(200, fill));
+    EXPECT_EQ(mail_b[0].source, "pA");
+    EXPECT_EQ(mail_b[0].sval.data(), posted);  // moved all the way, never copied
+    EXPECT_NE(mail_a[0].sval.data(), posted);
+  }
 }
 
 TEST_F(BusTest, MailKeepsPostingOrderAcrossVariables) {

@@ -3,6 +3,10 @@
 // of section 8), the subscription book and its replay, and the wildcard pattern language (4.1, 5.5).
 #include <gtest/gtest.h>
 
+#include <set>
+#include <string>
+#include <vector>
+
 #include "moos/codec.hpp"
 #include "moos/comms.hpp"
 #include "moos/wildcard.hpp"
@@ -150,6 +154,22 @@ TEST(CommsBook, RegistrationsAreRememberedWhileDisconnectedAndReplayedInOrder_1_
   EXPECT_EQ(replay[1].sval, "AppPattern=*,VarPattern=NAV_*,Interval=0");
   c.unregister_wildcard("NAV_*");
   EXPECT_EQ(c.replay_messages().size(), 1u);
+}
+
+TEST(CommsBook, EveryPostedNameIsPublishedHoweverManyAreRepeated_7_1) {
+  RecordingComms c;
+  // More names than the book remembers as recent, in turns: each still counts once.
+  const std::vector<std::string> names = {"A", "B", "C", "D", "E", "F"};
+  for (int round = 0; round < 3; ++round)
+    for (const auto& name : names) ASSERT_TRUE(c.notify(name, 1.0));
+  EXPECT_EQ(c.published_names(), std::set<std::string>(names.begin(), names.end()));
+  EXPECT_EQ(c.sent.size(), 18u);
+  // A recent name is still refused while disconnected, and a refused new name is not listed.
+  c.connected = false;
+  EXPECT_FALSE(c.notify("F", 2.0));
+  EXPECT_FALSE(c.notify("G", 2.0));
+  EXPECT_EQ(c.published_names().count("G"), 0u);
+  EXPECT_EQ(c.sent.size(), 18u);
 }
 
 TEST(Wildcard, StarAndQuestionMarkWholeStringCaseSensitive_4_1) {

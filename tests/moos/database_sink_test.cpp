@@ -3,6 +3,7 @@
 // checked against the plain packet path, which the other database tests pin down.
 #include <gtest/gtest.h>
 
+#include <deque>
 #include <string>
 #include <utility>
 #include <vector>
@@ -15,22 +16,39 @@ namespace {
 struct Sunk {
   ClientId to;
   Message message;
+  bool taken = false;  ///< handed over by take_mail, not copy_mail
+};
+
+/// One client's sink: records its mail into a list shared by all clients; a taken message is
+/// emptied, as a sink that moves it may leave it.
+class RecordingSink final : public MailSink {
+ public:
+  RecordingSink(ClientId to, std::vector<Sunk>* out) : to_(to), out_(out) {}
+  void copy_mail(const Message& msg) override { out_->push_back({to_, msg, false}); }
+  void take_mail(Message& msg) override {
+    out_->push_back({to_, msg, true});
+    msg = Message{};
+  }
+
+ private:
+  ClientId to_;
+  std::vector<Sunk>* out_;
 };
 
 /// Two DBs fed the same traffic: `plain` sends every mail in packets, `sunk` hands the
-/// asynchronous clients' mail to its sink.
+/// asynchronous clients' mail to their sinks.
 class DatabaseSinkTest : public ::testing::Test {
  protected:
-  static DatabaseConfig config(std::vector<Sunk>* sink) {
+  static DatabaseConfig config() {
     DatabaseConfig c;
     c.community = "alpha";
-    if (sink) c.mail_sink = [sink](ClientId to, const Message& m) { sink->push_back({to, m}); };
     return c;
   }
 
   void connect(ClientId id, const std::string& name, bool async) {
     ASSERT_TRUE(plain_.connect(id, {identification(name, async)}, kT0));
-    ASSERT_TRUE(sunk_.connect(id, {identification(name, async)}, kT0));
+    sinks_.emplace_back(id, &sink_);
+    ASSERT_TRUE(sunk_.connect(id, {identification(name, async)}, kT0, &sinks_.back()));
   }
 
   /// The packets' messages of `plain` and the sink's of `sunk`, for client `id`.
@@ -56,8 +74,9 @@ class DatabaseSinkTest : public ::testing::Test {
   }
 
   std::vector<Sunk> sink_;
-  Database plain_{config(nullptr), kT0, [](const std::string&) {}};
-  Database sunk_{config(&sink_), kT0, [](const std::string&) {}};
+  std::deque<RecordingSink> sinks_;  // one per client; a deque keeps them in place
+  Database plain_{config(), kT0, [](const std::string&) {}};
+  Database sunk_{config(), kT0, [](const std::string&) {}};
 };
 
 TEST_F(DatabaseSinkTest, TheSinkGetsAnAsynchronousClientsMailAsItsPacketsWouldCarryIt) {
@@ -106,13 +125,31 @@ TEST_F(DatabaseSinkTest, ATimingEchoStillLeavesInAPacket) {
   EXPECT_EQ(out[0].messages[0].dval, kT0 + 2);
 }
 
+TEST_F(DatabaseSinkTest, APostingsLastReaderGetsTheMessageItselfTheOthersACopy) {
+  connect(kA, "first", true);
+  connect(kB, "second", true);
+  connect(kC, "pub", true);
+  send(kA, {registration("X", 0, "first")});
+  send(kB, {registration("X", 0, "second")});
+  sink_.clear();
+  send(kC, {notify_double("X", 1, "pub"), notify_double("X", 2, "pub")});
+  ASSERT_EQ(sink_.size(), 4u);  // the readers in connection order, posting by posting
+  const std::vector<ClientId> to = {sink_[0].to, sink_[1].to, sink_[2].to, sink_[3].to};
+  EXPECT_EQ(to, (std::vector<ClientId>{kA, kB, kA, kB}));
+  EXPECT_FALSE(sink_[0].taken);
+  EXPECT_TRUE(sink_[1].taken);
+  EXPECT_EQ(sink_[0].message, sink_[1].message);  // taken after the copy: the copy is whole
+  EXPECT_EQ(sink_[3].message.dval, 2);
+  EXPECT_EQ(sunk_.latest("X")->dval, 2);  // stored before the message was given away
+}
+
 TEST(DatabaseSink, TheUndeliveredMailBoundStillAppliesPerCall) {
   std::vector<Sunk> sink;
+  RecordingSink reader(kA, &sink);
   DatabaseConfig config;
   config.max_pending_bytes = 1000;
-  config.mail_sink = [&](ClientId to, const Message& m) { sink.push_back({to, m}); };
   Database db(config, kT0, [](const std::string&) {});
-  ASSERT_TRUE(db.connect(kA, {identification("reader", true)}, kT0));
+  ASSERT_TRUE(db.connect(kA, {identification("reader", true)}, kT0, &reader));
   ASSERT_TRUE(db.connect(kB, {identification("pub", true)}, kT0));
   db.process_packet(kA, {registration("X", 0, "reader")}, kT0);
   // One message per call: the mail leaves with each call, nothing accumulates.
