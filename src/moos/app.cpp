@@ -267,55 +267,6 @@ bool MoosApp::start(Comms& comms, AppSettings settings) {
   return on_start_up();
 }
 
-void MoosApp::schedule_next(double cycle_start) {
-  const double period = 1.0 / settings_.app_tick_hz;
-  const double tolerance = period * kScheduleToleranceFraction;
-  const double due = due_moos_s();  // the slot this cycle had, IdleAppTick's skipping included
-  const double late = cycle_start - due;
-  if (late + tolerance < 0) {
-    next_due_moos_s_ = cycle_start + period;  // an early (manual) cycle restarts the schedule
-  } else if (late < kMaxCatchUpPeriods * period) {
-    // On time, or woken late by a loaded machine: keep the grid. A slot already past runs at
-    // once, so a late wake-up costs no cycle.
-    next_due_moos_s_ = due + period;
-  } else {
-    next_due_moos_s_ = cycle_start + period;  // far behind: skip the missed slots
-  }
-}
-
-bool MoosApp::cycle_if_due() {
-  const double tolerance = kScheduleToleranceFraction / settings_.app_tick_hz;
-  if (moos_time() + tolerance < due_moos_s()) return false;
-  cycle();
-  return true;
-}
-
-void MoosApp::run_for(double moos_s) {
-  if (!comms_) return;
-  Clock& clock = comms_->clock();
-  const double warp = comms_->time_warp();
-  const double end = moos_time() + moos_s;
-  const double tolerance = kScheduleToleranceFraction / settings_.app_tick_hz;
-  while (!stop_ && due_moos_s() <= end + tolerance) {
-    clock.sleep_real_s((due_moos_s() - moos_time()) / warp);
-    cycle();
-  }
-  clock.sleep_real_s((end - moos_time()) / warp);
-}
-
-void MoosApp::run_until_stopped(const std::atomic<bool>* external_stop) {
-  if (!comms_) return;
-  Clock& clock = comms_->clock();
-  while (!stop_ && !(external_stop && *external_stop)) {
-    const double wait_real = (due_moos_s() - moos_time()) / comms_->time_warp();
-    if (wait_real > 0) {
-      sleep_until_due(clock, wait_real);
-      continue;
-    }
-    cycle();
-  }
-}
-
 void MoosApp::cycle() {
   if (!comms_) return;
   // Everything this cycle posts leaves together (Comms::hold_sends).
