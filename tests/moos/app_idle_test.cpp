@@ -204,11 +204,12 @@ TEST(SystemClockSleep, MailEndsASleepUnlessWokenEarly) {
   EXPECT_TRUE(wake.pending());
 }
 
-/// A connected Comms at warp 2 that takes every posting and records the promised fetches.
+/// A connected Comms at warp 2 that takes every posting and records the promised fetches, taking
+/// promises (as a TCP client does) or not (as a bus client does).
 class PromiseRecorder final : public Comms {
  public:
   static constexpr double kWarp = 2.0;
-  PromiseRecorder() : Comms("pQuiet") {}
+  explicit PromiseRecorder(bool takes_promises = true) : Comms("pQuiet", takes_promises) {}
   bool is_connected() const override { return true; }
   std::uint64_t connection_count() const override { return 1; }
   std::string community() const override { return "alpha"; }
@@ -229,8 +230,8 @@ class PromiseRecorder final : public Comms {
 
 /// Runs `app` on a PromiseRecorder for `moos_s` and returns the promises it made.
 std::vector<double> promises_of(QuietApp& app, std::optional<double> idle_app_tick_hz,
-                                double moos_s) {
-  PromiseRecorder comms;
+                                double moos_s, bool takes_promises = true) {
+  PromiseRecorder comms(takes_promises);
   AppSettings s = quiet_settings(idle_app_tick_hz);
   s.time_warp = PromiseRecorder::kWarp;
   EXPECT_TRUE(app.start(comms, s));
@@ -245,6 +246,18 @@ TEST(AppFetchPromise, EveryCyclePromisesTheNextSlotInRealSeconds) {
   const auto promises = promises_of(app, std::nullopt, 5.0);
   ASSERT_EQ(promises.size(), 21u);  // one per cycle: 0, 0.25, ..., 5
   for (double p : promises) EXPECT_NEAR(p, kPeriod_real_s, 1e-9);
+}
+
+// A bus client ignores promises, so an app on the bus works none out (no clock read per cycle).
+TEST(AppFetchPromise, ACommsThatIgnoresPromisesIsNotGivenAny) {
+  QuietApp app;
+  EXPECT_TRUE(promises_of(app, std::nullopt, 5.0, /*takes_promises=*/false).empty());
+}
+
+TEST(AppFetchPromise, ABusClientIgnoresPromises) {
+  ManualClock clock(kT0);
+  InProcessBus bus(clock);
+  EXPECT_FALSE(bus.connect("pA")->takes_fetch_promises());
 }
 
 TEST(AppFetchPromise, AnAppThatSkipsSlotsPromisesNothing) {
