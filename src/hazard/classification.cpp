@@ -11,6 +11,7 @@
 #include "hazard/sensor_model.hpp"
 #include "base/text.hpp"
 #include "hazard/time_rules.hpp"
+#include "report_aspect.hpp"
 #include "visuals.hpp"
 
 namespace hazard {
@@ -188,11 +189,7 @@ void Engine::post_hazard_report(const VehicleState& v, glm::dvec2 position,
                                 const HazardField::Aspect* aspect, Outputs& out) {
   HazardReport report{std::nullopt, position.x, position.y, std::string(label), reported,
                       std::nullopt, std::nullopt, std::nullopt};
-  if (aspect) {
-    report.aspect_deg = aspect->aspect_deg;
-    report.aspect_min_deg = aspect->aspect_min_deg;
-    report.aspect_max_deg = aspect->aspect_max_deg;
-  }
+  set_aspect(report, aspect);
   std::string for_vehicle = format_hazard_report(report);
   std::string general = with_vname(v.name, for_vehicle);
   out.post("UHZ_HAZARD_REPORT" + v.variable_suffix, std::move(for_vehicle));

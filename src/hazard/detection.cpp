@@ -5,6 +5,7 @@
 #include "hazard/messages/detection_report.hpp"
 #include "hazard/sensor_model.hpp"
 #include "base/text.hpp"
+#include "report_aspect.hpp"
 #include "visuals.hpp"
 
 namespace hazard {
@@ -69,11 +70,7 @@ void Engine::post_detection_report(const VehicleState& v, glm::dvec2 position,
                                    Outputs& out) {
   DetectionReport report{std::nullopt, position.x, position.y, std::string(label),
                          std::nullopt, std::nullopt, std::nullopt};
-  if (aspect) {
-    report.aspect_deg = aspect->aspect_deg;
-    report.aspect_min_deg = aspect->aspect_min_deg;
-    report.aspect_max_deg = aspect->aspect_max_deg;
-  }
+  set_aspect(report, aspect);
   std::string for_vehicle = format_detection_report(report);
   out.post("UHZ_DETECTION_REPORT", with_vname(v.name, for_vehicle));
   out.post("UHZ_DETECTION_REPORT" + v.variable_suffix, std::move(for_vehicle));
