@@ -77,6 +77,8 @@ class NodeReportMemo {
   };
 
   const Parsed<NodeReport>& keep(std::string_view text, Parsed<NodeReport>&& parsed);
+  /// format() for a report the direct writing does not take (through WrittenFields).
+  std::string format_general(const NodeReport& report);
   /// The entry replaced next, now holding `text` (its parse is the caller's to set).
   Entry& next_entry(std::string_view text);
 

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
+#include "base/fmt_fixed.hpp"
 #include "base/text_appender.hpp"
 #include "fields.hpp"
 #include "hazard/messages/node_report_fields.hpp"
@@ -270,6 +272,84 @@ void assign_as_written(std::string_view text, const WrittenFields& w, NodeReport
   r.placed_from_lat_lon = false;
 }
 
+// ---- the direct writing: the usual report, written at a pointer --------------------------------
+
+// The longest TYPE the direct writing takes (a longer one is written the general way).
+constexpr std::size_t kMaxDirectTypeBytes = 64;
+// Room for the direct writing's longest text: every key, the name and type at their longest,
+// and every number at base::kFmtFixedMaxChars.
+constexpr std::size_t kDirectTextBytes = 64 + kMaxVehicleNameBytes + kMaxDirectTypeBytes +
+                                         7 * base::kFmtFixedMaxChars;
+
+// What the numbers of a directly written report read as (base::write_fmt_fixed's read-back).
+struct DirectNumbers {
+  double x, y, spd, hdg;               // always written
+  double lat = 0, lon = 0, time = 0;  // written when the report has them
+};
+
+// A key (a literal: its length is a constant and the copy a store or two) and the number FMT
+// writes after it; nullptr when the number is outside base::write_fmt_fixed's fast path.
+template <int Decimals, std::size_t N>
+[[gnu::always_inline]] inline char* put_number(char* p, const char (&key)[N], double value,
+                                               double& read_back) {
+  std::memcpy(p, key, N - 1);
+  return base::write_fmt_fixed<Decimals>(p + N - 1, value, read_back);
+}
+
+char* put_text(char* p, std::string_view text) {
+  std::memcpy(p, text.data(), text.size());
+  return p + text.size();
+}
+
+// The usual report's text at `out` (room for kDirectTextBytes), the same bytes
+// write_node_report writes: its length, and in `n` what each number reads as. 0 for anything
+// else (a name that is not plain, a long or unscannable type, a number outside the fast path):
+// those go the general way. Such a text is accepted as written (accepted_as_written) exactly
+// when its numbers are within out_of_range's limits (direct_in_range).
+std::size_t write_direct(const NodeReport& r, char* out, DirectNumbers& n) {
+  if (!plain_vehicle_name(r.name)) return 0;
+  if (r.type && (r.type->size() > kMaxDirectTypeBytes || !scans_as_written(*r.type))) return 0;
+  char* p = put_text(out, "NAME=");
+  p = put_text(p, r.name);
+  if (!(p = put_number<2>(p, ",X=", r.x_m, n.x))) return 0;
+  if (!(p = put_number<2>(p, ",Y=", r.y_m, n.y))) return 0;
+  if (!(p = put_number<2>(p, ",SPD=", r.speed_mps, n.spd))) return 0;
+  if (!(p = put_number<2>(p, ",HDG=", r.heading_deg, n.hdg))) return 0;
+  if (r.lat_deg && !(p = put_number<kLatLonDecimals>(p, ",LAT=", *r.lat_deg, n.lat))) return 0;
+  if (r.lon_deg && !(p = put_number<kLatLonDecimals>(p, ",LON=", *r.lon_deg, n.lon))) return 0;
+  if (r.time_s && !(p = put_number<3>(p, ",TIME=", *r.time_s, n.time))) return 0;
+  if (r.type) {
+    p = put_text(p, ",TYPE=");
+    p = put_text(p, *r.type);
+  }
+  return static_cast<std::size_t>(p - out);
+}
+
+// accepted_as_written's number limits, on a direct writing's read-backs.
+bool direct_in_range(const DirectNumbers& n) {
+  return std::fabs(n.x) <= kMaxNodeCoordinate_m && std::fabs(n.y) <= kMaxNodeCoordinate_m &&
+         n.spd >= 0.0 && n.spd <= kMaxNodeSpeed_mps;
+}
+
+// assign_as_written for a direct writing: the name and type are the report's own bytes.
+void assign_direct(const NodeReport& from, const DirectNumbers& n, NodeReport& r) {
+  if (r.name != from.name) r.name.assign(from.name);
+  r.x_m = n.x;
+  r.y_m = n.y;
+  r.speed_mps = n.spd;
+  r.heading_deg = base::norm360(n.hdg);
+  r.lat_deg = from.lat_deg ? std::optional<double>(n.lat) : std::nullopt;
+  r.lon_deg = from.lon_deg ? std::optional<double>(n.lon) : std::nullopt;
+  r.time_s = from.time_s ? std::optional<double>(n.time) : std::nullopt;
+  if (from.type && !from.type->empty()) {
+    if (!r.type) r.type.emplace();
+    if (*r.type != *from.type) r.type->assign(*from.type);
+  } else {
+    r.type.reset();
+  }
+  r.placed_from_lat_lon = false;
+}
+
 }  // namespace
 
 Parsed<NodeReport> parse_node_report(std::string_view text) {
@@ -312,22 +392,39 @@ NodeReportMemo::Entry& NodeReportMemo::next_entry(std::string_view text) {
   Entry& e = entries_[next_];
   next_ = (next_ + 1) % kKept;
   used_ = std::max(used_, next_ == 0 ? kKept : next_);
-  e.text.assign(text.data(), text.size());
+  e.text.clear();  // then an append within the kept capacity: assign() is twice its cost
+  e.text.append(text.data(), text.size());
   return e;
 }
 
 // The parse is known from what was written, without reading the text back: what the scan and
 // build_node_report would give (accepted_as_written, assign_as_written), written into the
-// entry in place.
+// entry in place. The usual report is written directly at a stack buffer (write_direct); the
+// rest through the general writer, which records where each field went.
 std::string NodeReportMemo::format(const NodeReport& report) {
+  char buffer[kDirectTextBytes];
+  DirectNumbers numbers;
+  const std::size_t size = write_direct(report, buffer, numbers);
+  if (size == 0) return format_general(report);
+  const std::string_view text(buffer, size);
+  // Without a placement, as parse() keeps it: a written report always has X and Y.
+  if (direct_in_range(numbers)) {
+    Entry& e = next_entry(text);
+    e.parsed.error.clear();  // (a kept entry has none; a fresh one is empty)
+    if (!e.parsed.value) e.parsed.value.emplace();
+    assign_direct(report, numbers, *e.parsed.value);
+  }
+  return std::string(text);
+}
+
+std::string NodeReportMemo::format_general(const NodeReport& report) {
   std::string text;
   WrittenFields written;
   write_node_report(report, text, written);
-  // Without a placement, as parse() keeps it: a written report always has X and Y. A text
-  // the writing cannot vouch for is read when it arrives.
+  // A text the writing cannot vouch for is read when it arrives.
   if (!accepted_as_written(text, written)) return text;
   Entry& e = next_entry(text);
-  e.parsed.error.clear();  // (a kept entry has none; a fresh one is empty)
+  e.parsed.error.clear();
   if (!e.parsed.value) e.parsed.value.emplace();
   assign_as_written(text, written, *e.parsed.value);
   return text;

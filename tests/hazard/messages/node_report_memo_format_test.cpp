@@ -137,5 +137,43 @@ TEST(NodeReportMemoFormat, AUsualReportIsKeptFromTheWritingAndAnOddOneIsRead) {
   EXPECT_EQ(memo.texts_read(), 1U);
 }
 
+// The reports the direct writing leaves to the general one (a TYPE over 64 bytes, a number
+// past 2^53 units) and one it writes but must not keep (X beyond kMaxNodeCoordinate_m): the
+// text is format_node_report's, and the parse is what reading it gives.
+TEST(NodeReportMemoFormat, ReportsOffTheDirectWritingKeepTheSameTextAndParse) {
+  NodeReportMemo memo;
+  NodeReport r;
+  r.name = "betty";
+  r.x_m = 12.345;
+  r.y_m = -0.004;
+  r.speed_mps = 2.0;
+  r.heading_deg = 359.999;
+  r.time_s = 1700000024.75;
+  r.type = std::string(65, 't');
+  std::string text = memo.format(r);
+  EXPECT_EQ(text, "NAME=betty,X=12.35,Y=0,SPD=2,HDG=360,TIME=1700000024.75,TYPE=" +
+                      std::string(65, 't'));
+  expect_same_parse(memo.parse(text, nullptr), parse_node_report(text), text);
+  EXPECT_EQ(memo.texts_read(), 0U);  // kept through the general writing
+  r.type = "";
+  text = memo.format(r);
+  EXPECT_EQ(text, "NAME=betty,X=12.35,Y=0,SPD=2,HDG=360,TIME=1700000024.75,TYPE=");
+  expect_same_parse(memo.parse(text, nullptr), parse_node_report(text), text);
+  EXPECT_EQ(memo.texts_read(), 0U);  // kept from the direct writing, no type
+  r.time_s = 1e16;  // past the fast path: written by append_fmt
+  text = memo.format(r);
+  EXPECT_EQ(text, format_node_report(r));
+  expect_same_parse(memo.parse(text, nullptr), parse_node_report(text), text);
+  EXPECT_EQ(memo.texts_read(), 1U);
+  r.time_s.reset();
+  r.x_m = 2e8;  // beyond kMaxNodeCoordinate_m: written, not kept, refused when read
+  text = memo.format(r);
+  EXPECT_EQ(text, "NAME=betty,X=200000000,Y=0,SPD=2,HDG=360,TYPE=");
+  const Parsed<NodeReport>& refused = memo.parse(text, nullptr);
+  EXPECT_FALSE(refused.value.has_value());
+  expect_same_parse(refused, parse_node_report(text), text);
+  EXPECT_EQ(memo.texts_read(), 2U);
+}
+
 }  // namespace
 }  // namespace hazard
