@@ -74,6 +74,7 @@ class NodeReportMemo {
   struct Entry {
     std::string text;
     Parsed<NodeReport> parsed;
+    bool direct = false;  ///< kept by format()'s direct writing: its name and type pass its checks
   };
 
   const Parsed<NodeReport>& keep(std::string_view text, Parsed<NodeReport>&& parsed);
