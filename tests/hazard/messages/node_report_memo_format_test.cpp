@@ -175,5 +175,32 @@ TEST(NodeReportMemoFormat, ReportsOffTheDirectWritingKeepTheSameTextAndParse) {
   EXPECT_EQ(memo.texts_read(), 2U);
 }
 
+// An entry kept from a parse (not from the direct writing) vouches for nothing: a report with
+// its name, which the direct writing refuses ('{'), is written the general way and read back.
+TEST(NodeReportMemoFormat, AnEntryKeptFromAParseDoesNotVouchForTheNameItHolds) {
+  NodeReportMemo memo;
+  NodeReport r;
+  r.name = "archie";
+  for (int i = 0; i < 4; ++i) {  // every entry kept by the direct writing
+    r.x_m = i;
+    memo.format(r);
+  }
+  // The next four entries kept from parses; the first has the name "{x}".
+  for (int i = 0; i < 4; ++i) {
+    const std::string name = i == 0 ? "{x}" : "p" + std::to_string(i);
+    ASSERT_TRUE(memo.parse("NAME=" + name + ",X=1,Y=2,SPD=1,HDG=0", nullptr).value);
+  }
+  EXPECT_EQ(memo.texts_read(), 4U);
+  r.name = "{x}";
+  r.x_m = 3.0;  // (not the parsed text, which the memo would find)
+  r.y_m = 2.0;
+  r.speed_mps = 1.0;
+  r.heading_deg = 0.0;
+  const std::string text = memo.format(r);  // replaces the "{x}" entry's place
+  EXPECT_EQ(text, "NAME={x},X=3,Y=2,SPD=1,HDG=0");
+  expect_same_parse(memo.parse(text, nullptr), parse_node_report(text), text);
+  EXPECT_EQ(memo.texts_read(), 5U);  // not kept from the writing: read when it arrives
+}
+
 }  // namespace
 }  // namespace hazard
