@@ -89,8 +89,9 @@ void append_fmt(std::string& out, double value, int decimals = 5);
 /// The room write_fmt_fast() may fill (its longest text: 16 digits, a point and a sign).
 inline constexpr std::size_t kFastFmtMaxChars = 24;
 /// FMT(v, d) written at `dest`, which has room for kFastFmtMaxChars bytes, when the common case
-/// covers it (|v| * 10^d below 2^53, at most 9 decimals): the end of the text, else nullptr and
-/// nothing written (append_fmt covers every value). For writers that fill a buffer.
+/// covers it (|v| * 10^d below 2^53, at most 9 decimals): the end of the text (the room past it
+/// may hold scratch digits), else nullptr and nothing written (append_fmt covers every value).
+/// For writers that fill a buffer; write_fmt_fixed (fmt_fixed.hpp) when d is a constant.
 char* write_fmt_fast(char* dest, double value, int decimals);
 /// The same, and in `read_back` the number the text reads as (read_plain_decimal takes all of
 /// it, and parse_number gives the same): for a writer that knows what its reader will find.

@@ -9,6 +9,7 @@
 #include <cstring>
 #include <iterator>
 
+#include "base/fmt_fixed.hpp"
 #include "base/key_value_reader.hpp"
 
 namespace base {
@@ -108,15 +109,9 @@ int decimal_digits(std::uint64_t v) {
   const auto whole = static_cast<double>(whole_units_signed);
   const double fraction = scaled - whole;  // exact below 2^53
   bool round_up = fraction > 0.5;
-  if (std::fabs(fraction - 0.5) <= scaled * 0x1p-50) {
-    // Near a tie the product's rounding matters. fma gives its error exactly, and the sign of
-    // (fraction - 0.5) + error, both exact doubles, is the side of the tie the value is on.
-    const double above_tie = (fraction - 0.5) + std::fma(magnitude, kPow10[decimals], -scaled);
-    // An exact tie (2.5 to 0 decimals, -10000.25 to 1) goes to the even neighbour, as printf
-    // rounds in the default rounding mode.
-    const bool odd = (whole_units & 1U) != 0;
-    round_up = above_tie > 0.0 || (above_tie == 0.0 && odd);
-  }
+  if (std::fabs(fraction - 0.5) <= scaled * 0x1p-50)  // near a tie: the product's error decides
+    round_up = detail::rounds_up_near_tie(magnitude, kPow10[decimals], scaled, fraction,
+                                          (whole_units & 1U) != 0);
   const std::uint64_t units = whole_units + (round_up ? 1 : 0);
   // The whole part without a division: floor(|value|) * 10^decimals <= units (both sides
   // round monotonically), and rounding up carries at most once into the whole part.
@@ -213,22 +208,79 @@ void append_fmt(std::string& out, double value, int decimals) {
   if (out.size() == at + 2 && out.compare(at, 2, "-0") == 0) out.erase(at, 1);
 }
 
+static_assert(kFastFmtMaxChars == kFmtFixedMaxChars, "one room for both writers");
+
+namespace {
+
+// FMT(v, d) through write_fmt_fixed<d>: one text for every writer of a buffer.
+[[gnu::always_inline]] inline char* write_fmt_dispatched(char* dest, double value, int decimals,
+                                                        double& read_back) {
+  switch (std::max(decimals, 0)) {
+    case 0: return write_fmt_fixed<0>(dest, value, read_back);
+    case 1: return write_fmt_fixed<1>(dest, value, read_back);
+    case 2: return write_fmt_fixed<2>(dest, value, read_back);
+    case 3: return write_fmt_fixed<3>(dest, value, read_back);
+    case 4: return write_fmt_fixed<4>(dest, value, read_back);
+    case 5: return write_fmt_fixed<5>(dest, value, read_back);
+    case 6: return write_fmt_fixed<6>(dest, value, read_back);
+    case 7: return write_fmt_fixed<7>(dest, value, read_back);
+    case 8: return write_fmt_fixed<8>(dest, value, read_back);
+    case 9: return write_fmt_fixed<9>(dest, value, read_back);
+    default: return nullptr;
+  }
+}
+
+}  // namespace
+
+namespace detail {
+
+bool rounds_up_near_tie(double magnitude, double scale, double scaled, double fraction,
+                        bool odd) {
+  // The sign of (fraction - 0.5) + error, both exact doubles, is the side of the tie the value
+  // is on; an exact tie (2.5 to 0 decimals, -10000.25 to 1) goes to the even neighbour, as
+  // printf rounds in the default rounding mode.
+  const double above_tie = (fraction - 0.5) + std::fma(magnitude, scale, -scaled);
+  return above_tie > 0.0 || (above_tie == 0.0 && odd);
+}
+
+namespace {
+
+// Exactly four digits of `v` (below 10^4), leading zeros kept.
+void put_four(char* p, std::uint64_t v) {
+  const std::uint64_t high = v / 100;
+  put_pair(p, high);
+  put_pair(p + 2, v - high * 100);
+}
+
+}  // namespace
+
+// Eight digits at a time from the left, each group by constant divisions (a time stamp of
+// 1.7e9 s has ten digits): no digit count first.
+char* write_long_whole(char* p, std::uint64_t v) {
+  if (v < 100000000) {  // five to eight digits
+    const std::uint64_t high = v / 10000;
+    p = write_whole(p, high);
+    put_four(p, v - high * 10000);
+    return p + 4;
+  }
+  const std::uint64_t high = v / 100000000;  // below 2^53 / 10^8: at most eight digits
+  const std::uint64_t low = v - high * 100000000;
+  p = write_whole(p, high);
+  const std::uint64_t middle = low / 10000;
+  put_four(p, middle);
+  put_four(p + 4, low - middle * 10000);
+  return p + 8;
+}
+
+}  // namespace detail
+
 char* write_fmt_fast(char* dest, double value, int decimals) {
-  FixedText t;
-  if (!fixed_fast_text(value, std::max(decimals, 0), /*fmt=*/true, t)) return nullptr;
-  write_fixed_text(t, dest + t.length);
-  return dest + t.length;
+  double unused = 0.0;  // (its division is left out: the result is never read)
+  return write_fmt_dispatched(dest, value, decimals, unused);
 }
 
 char* write_fmt_fast(char* dest, double value, int decimals, double& read_back) {
-  FixedText t;
-  if (!fixed_fast_text(value, std::max(decimals, 0), /*fmt=*/true, t)) return nullptr;
-  write_fixed_text(t, dest + t.length);
-  // The text's digits as one integer over 10^shown: what read_plain_decimal computes from it
-  // (the fast path keeps that integer at most 2^53, with at most 9 decimals).
-  read_back = plain_decimal_value(t.whole * kPow10Int[t.shown] + t.fraction,
-                                  static_cast<std::size_t>(t.shown), t.negative);
-  return dest + t.length;
+  return write_fmt_dispatched(dest, value, decimals, read_back);
 }
 
 std::string joined(std::initializer_list<std::string_view> pieces) {

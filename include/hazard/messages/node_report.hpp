@@ -74,9 +74,12 @@ class NodeReportMemo {
   struct Entry {
     std::string text;
     Parsed<NodeReport> parsed;
+    bool direct = false;  ///< kept by format()'s direct writing: its name and type pass its checks
   };
 
   const Parsed<NodeReport>& keep(std::string_view text, Parsed<NodeReport>&& parsed);
+  /// format() for a report the direct writing does not take (through WrittenFields).
+  std::string format_general(const NodeReport& report);
   /// The entry replaced next, now holding `text` (its parse is the caller's to set).
   Entry& next_entry(std::string_view text);
 

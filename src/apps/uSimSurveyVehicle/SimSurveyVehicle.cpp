@@ -69,6 +69,9 @@ bool SimSurveyVehicle::on_start_up() {
                    : mission::apply_survey_vehicle_param(config_, line.key, line.value).error;
   });
   vname_ = vehicle_name(vname_);
+  // Neither changes after start-up: the report carries them from here on (no compare per report).
+  report_.name = vname_;
+  report_.type = vehicle_type_;
   if (const auto valid = mission::validate(config_.vehicle); !valid) {
     report_config_warning(valid.error + "; the vehicle's defaults are used");
     config_.vehicle = mission::VehicleParams{};
@@ -158,8 +161,7 @@ void SimSurveyVehicle::on_iterate() {
 }
 
 void SimSurveyVehicle::post_node_report(const mission::Pose& pose) {
-  hazard::NodeReport& r = report_;
-  if (r.name != vname_) r.name = vname_;
+  hazard::NodeReport& r = report_;  // its name and type are set at start-up
   r.x_m = pose.position_m.x;
   r.y_m = pose.position_m.y;
   r.speed_mps = pose.speed_mps;
@@ -172,7 +174,6 @@ void SimSurveyVehicle::post_node_report(const mission::Pose& pose) {
     r.lon_deg = geo.lon_deg;
   }
   r.time_s = pose.time_s;
-  if (!r.type || *r.type != vehicle_type_) r.type = vehicle_type_;
   std::string text = share_node_report_parses_ ? hazard::NodeReportMemo::this_thread().format(r)
                                                : hazard::format_node_report(r);
   notify(node_report_var_, std::move(text));  // the text moves on, uncopied

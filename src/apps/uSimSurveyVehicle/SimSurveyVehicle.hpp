@@ -105,8 +105,8 @@ class SimSurveyVehicle final : public mission_app::MissionApp {
   bool share_node_report_parses_ = false;
   bool report_lat_lon_ = true;
   long routes_received_ = 0;
-  /// The report written each iteration, kept so that its name and type are copied once, not
-  /// ten times a second.
+  /// The report written each iteration, its name and type set once at start-up, not ten
+  /// times a second.
   hazard::NodeReport report_;
 };
 

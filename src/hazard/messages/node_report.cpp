@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 
+#include "base/fmt_fixed.hpp"
 #include "base/text_appender.hpp"
 #include "fields.hpp"
 #include "hazard/messages/node_report_fields.hpp"
@@ -207,11 +210,35 @@ void write_node_report(const NodeReport& r, std::string& out, WrittenFields& w) 
   if (r.type) text(",TYPE=", *r.type, w.type);
 }
 
-// A text field the scan finds byte for byte as written: nothing that ends its piece (',') or
-// holds it open ('{'), no blank at either end for the trim to take.
-bool scans_as_written(std::string_view value) {
-  for (const char c : value)  // (find_first_of looks each byte up in the set by a call)
-    if (c == ',' || c == '{') return false;
+// What a byte is to the scan: one that ends its piece (',') or holds it open ('{'), or a
+// control byte (below 0x20, and 0x7F). A table, looked up without a branch per byte: the name
+// and type of every report written are checked.
+enum ByteClass : unsigned char { kEndsPiece = 1, kControlByte = 2 };
+struct ByteClasses {
+  unsigned char of[256];
+};
+constexpr ByteClasses make_byte_classes() {
+  ByteClasses c{};
+  for (int b = 0; b < 256; ++b) {
+    const bool ends = b == ',' || b == '{';
+    const bool control = b < 0x20 || b == 0x7F;
+    c.of[b] = static_cast<unsigned char>((ends ? kEndsPiece : 0) | (control ? kControlByte : 0));
+  }
+  return c;
+}
+constexpr ByteClasses kByteClasses = make_byte_classes();
+
+// The classes of all of `text`'s bytes together.
+unsigned classes_of(std::string_view text) {
+  unsigned seen = 0;
+  for (const char c : text) seen |= kByteClasses.of[static_cast<unsigned char>(c)];
+  return seen;
+}
+
+// A text field the scan finds byte for byte as written: nothing that ends its piece or holds
+// it open, no blank at either end for the trim to take.
+[[gnu::always_inline]] inline bool scans_as_written(std::string_view value) {
+  if ((classes_of(value) & kEndsPiece) != 0) return false;
   return value.empty() ||
          (!base::detail::is_trimmed(value.front()) && !base::detail::is_trimmed(value.back()));
 }
@@ -221,10 +248,7 @@ bool scans_as_written(std::string_view value) {
 // trim takes but ' '.
 bool plain_vehicle_name(std::string_view name) {
   if (name.empty() || name.size() > kMaxVehicleNameBytes) return false;
-  for (const char c : name) {
-    const auto b = static_cast<unsigned char>(c);
-    if (b < 0x20 || b == 0x7F || c == ',' || c == '{') return false;
-  }
+  if (classes_of(name) != 0) return false;
   return name.front() != ' ' && name.back() != ' ';
 }
 
@@ -270,6 +294,143 @@ void assign_as_written(std::string_view text, const WrittenFields& w, NodeReport
   r.placed_from_lat_lon = false;
 }
 
+// ---- the direct writing: the usual report, written at a pointer --------------------------------
+
+// The longest TYPE the direct writing takes (a longer one is written the general way).
+constexpr std::size_t kMaxDirectTypeBytes = 64;
+// Room for the direct writing's longest text: every key, the name and type at their longest,
+// and every number at base::kFmtFixedMaxChars.
+constexpr std::size_t kDirectTextBytes = 64 + kMaxVehicleNameBytes + kMaxDirectTypeBytes +
+                                         7 * base::kFmtFixedMaxChars;
+
+// What the numbers of a directly written report read as (base::write_fmt_fixed's read-back).
+struct DirectNumbers {
+  double x, y, spd, hdg;               // always written
+  double lat = 0, lon = 0, time = 0;  // written when the report has them
+};
+
+// A key (a literal: its length is a constant and the copy a store or two) and the number FMT
+// writes after it; nullptr when the number is outside base::write_fmt_fixed's fast path.
+template <int Decimals, std::size_t N>
+[[gnu::always_inline]] inline char* put_number(char* p, const char (&key)[N], double value,
+                                               double& read_back) {
+  std::memcpy(p, key, N - 1);
+  return base::write_fmt_fixed<Decimals>(p + N - 1, value, read_back);
+}
+
+// A name or type (mostly 3 to 16 bytes) copied or compared by two overlapping fixed-size
+// loads, not a memcpy or memcmp call (the call and its dispatch were more than the bytes);
+// longer texts by the call.
+template <typename Word>
+Word word_at(const char* p) {
+  Word w;
+  std::memcpy(&w, p, sizeof w);
+  return w;
+}
+
+template <typename Word>
+void copy_ends(char* to, const char* from, std::size_t n) {
+  std::memcpy(to, from, sizeof(Word));
+  std::memcpy(to + n - sizeof(Word), from + n - sizeof(Word), sizeof(Word));
+}
+
+[[gnu::always_inline]] inline char* put_text(char* p, std::string_view text) {
+  const std::size_t n = text.size();
+  const char* const s = text.data();
+  if (n > 16) {
+    std::memcpy(p, s, n);
+  } else if (n >= 8) {
+    copy_ends<std::uint64_t>(p, s, n);
+  } else if (n >= 4) {
+    copy_ends<std::uint32_t>(p, s, n);
+  } else if (n > 0) {
+    p[0] = s[0];
+    p[n / 2] = s[n / 2];
+    p[n - 1] = s[n - 1];
+  }
+  return p + n;
+}
+
+template <typename Word>
+bool same_ends(const char* a, const char* b, std::size_t n) {
+  return word_at<Word>(a) == word_at<Word>(b) &&
+         word_at<Word>(a + n - sizeof(Word)) == word_at<Word>(b + n - sizeof(Word));
+}
+
+[[gnu::always_inline]] inline bool same_text(std::string_view a, std::string_view b) {
+  const std::size_t n = a.size();
+  if (n != b.size()) return false;
+  if (n > 16) return std::memcmp(a.data(), b.data(), n) == 0;
+  if (n >= 8) return same_ends<std::uint64_t>(a.data(), b.data(), n);
+  if (n >= 4) return same_ends<std::uint32_t>(a.data(), b.data(), n);
+  return n == 0 || (a[0] == b[0] && a[n / 2] == b[n / 2] && a[n - 1] == b[n - 1]);
+}
+
+// The usual report's text at `out` (room for kDirectTextBytes), the same bytes
+// write_node_report writes: its length, and in `n` what each number reads as. 0 for anything
+// else (a name that is not plain, a long or unscannable type, a number outside the fast path):
+// `checked` when the name and type are known to pass (same_name_and_type).
+// those go the general way. Such a text is accepted as written (accepted_as_written) exactly
+// when its numbers are within out_of_range's limits (direct_in_range).
+std::size_t write_direct(const NodeReport& r, char* out, DirectNumbers& n, bool checked) {
+  if (!checked) {
+    if (!plain_vehicle_name(r.name)) return 0;
+    if (r.type && (r.type->size() > kMaxDirectTypeBytes || !scans_as_written(*r.type))) return 0;
+  }
+  char* p = put_text(out, "NAME=");
+  p = put_text(p, r.name);
+  if (!(p = put_number<2>(p, ",X=", r.x_m, n.x))) return 0;
+  if (!(p = put_number<2>(p, ",Y=", r.y_m, n.y))) return 0;
+  if (!(p = put_number<2>(p, ",SPD=", r.speed_mps, n.spd))) return 0;
+  if (!(p = put_number<2>(p, ",HDG=", r.heading_deg, n.hdg))) return 0;
+  if (r.lat_deg && !(p = put_number<kLatLonDecimals>(p, ",LAT=", *r.lat_deg, n.lat))) return 0;
+  if (r.lon_deg && !(p = put_number<kLatLonDecimals>(p, ",LON=", *r.lon_deg, n.lon))) return 0;
+  if (r.time_s && !(p = put_number<3>(p, ",TIME=", *r.time_s, n.time))) return 0;
+  if (r.type) {
+    p = put_text(p, ",TYPE=");
+    p = put_text(p, *r.type);
+  }
+  return static_cast<std::size_t>(p - out);
+}
+
+// accepted_as_written's number limits, on a direct writing's read-backs.
+bool direct_in_range(const DirectNumbers& n) {
+  return std::fabs(n.x) <= kMaxNodeCoordinate_m && std::fabs(n.y) <= kMaxNodeCoordinate_m &&
+         n.spd >= 0.0 && n.spd <= kMaxNodeSpeed_mps;
+}
+
+// Whether a report kept from a direct writing has `r`'s name and type (an empty type is none):
+// then they passed write_direct's checks, and assign_direct need not copy them.
+bool same_name_and_type(const NodeReport& kept, const NodeReport& r) {
+  if (!same_text(kept.name, r.name)) return false;
+  if (!r.type || r.type->empty()) return !kept.type;
+  return kept.type && same_text(*kept.type, *r.type);
+}
+
+// assign_as_written for a direct writing: the name and type are the report's own bytes
+// (`same_strings`: r has them already).
+void assign_direct(const NodeReport& from, const DirectNumbers& n, NodeReport& r,
+                   bool same_strings) {
+  if (!same_strings && !same_text(r.name, from.name)) r.name.assign(from.name);
+  r.x_m = n.x;
+  r.y_m = n.y;
+  r.speed_mps = n.spd;
+  // norm360 leaves a heading in [0, 360) as it is (a read-back is never -0): the usual one
+  // skips the call.
+  r.heading_deg = n.hdg >= 0.0 && n.hdg < 360.0 ? n.hdg : base::norm360(n.hdg);
+  r.lat_deg = from.lat_deg ? std::optional<double>(n.lat) : std::nullopt;
+  r.lon_deg = from.lon_deg ? std::optional<double>(n.lon) : std::nullopt;
+  r.time_s = from.time_s ? std::optional<double>(n.time) : std::nullopt;
+  r.placed_from_lat_lon = false;
+  if (same_strings) return;
+  if (from.type && !from.type->empty()) {
+    if (!r.type) r.type.emplace();
+    if (!same_text(*r.type, *from.type)) r.type->assign(*from.type);
+  } else {
+    r.type.reset();
+  }
+}
+
 }  // namespace
 
 Parsed<NodeReport> parse_node_report(std::string_view text) {
@@ -302,32 +463,65 @@ const Parsed<NodeReport>& NodeReportMemo::parse(std::string_view text,
   return keep(text, std::move(parsed));
 }
 
+// (Inlined: one call per report written.)
+[[gnu::always_inline]] inline NodeReportMemo::Entry& NodeReportMemo::next_entry(
+    std::string_view text) {
+  Entry& e = entries_[next_];
+  next_ = (next_ + 1) % kKept;
+  used_ = std::max(used_, next_ == 0 ? kKept : next_);
+  // Within the kept capacity: a report of the same length (the usual one) is a copy over the
+  // old bytes, another one a clear() and append(); assign() is twice their cost.
+  if (e.text.size() == text.size()) {
+    std::memcpy(e.text.data(), text.data(), text.size());
+  } else {
+    e.text.clear();
+    e.text.append(text.data(), text.size());
+  }
+  return e;
+}
+
 const Parsed<NodeReport>& NodeReportMemo::keep(std::string_view text, Parsed<NodeReport>&& parsed) {
   Entry& e = next_entry(text);
+  e.direct = false;
   e.parsed = std::move(parsed);
   return e.parsed;
 }
 
-NodeReportMemo::Entry& NodeReportMemo::next_entry(std::string_view text) {
-  Entry& e = entries_[next_];
-  next_ = (next_ + 1) % kKept;
-  used_ = std::max(used_, next_ == 0 ? kKept : next_);
-  e.text.assign(text.data(), text.size());
-  return e;
-}
-
 // The parse is known from what was written, without reading the text back: what the scan and
 // build_node_report would give (accepted_as_written, assign_as_written), written into the
-// entry in place.
+// entry in place. The usual report is written directly at a stack buffer (write_direct); the
+// rest through the general writer, which records where each field went.
 std::string NodeReportMemo::format(const NodeReport& report) {
+  // The entry replaced next mostly holds this vehicle's previous report (the vehicles take
+  // turns): its name and type need no check and no copy.
+  const Entry& replaced = entries_[next_];
+  const bool known = replaced.direct && replaced.parsed.value &&
+                     same_name_and_type(*replaced.parsed.value, report);
+  char buffer[kDirectTextBytes];
+  DirectNumbers numbers;
+  const std::size_t size = write_direct(report, buffer, numbers, known);
+  if (size == 0) return format_general(report);
+  const std::string_view text(buffer, size);
+  // Without a placement, as parse() keeps it: a written report always has X and Y.
+  if (direct_in_range(numbers)) {
+    Entry& e = next_entry(text);  // (the entry `replaced`)
+    e.direct = true;
+    e.parsed.error.clear();  // (a kept entry has none; a fresh one is empty)
+    if (!e.parsed.value) e.parsed.value.emplace();
+    assign_direct(report, numbers, *e.parsed.value, known);
+  }
+  return std::string(text);
+}
+
+std::string NodeReportMemo::format_general(const NodeReport& report) {
   std::string text;
   WrittenFields written;
   write_node_report(report, text, written);
-  // Without a placement, as parse() keeps it: a written report always has X and Y. A text
-  // the writing cannot vouch for is read when it arrives.
+  // A text the writing cannot vouch for is read when it arrives.
   if (!accepted_as_written(text, written)) return text;
   Entry& e = next_entry(text);
-  e.parsed.error.clear();  // (a kept entry has none; a fresh one is empty)
+  e.direct = false;
+  e.parsed.error.clear();
   if (!e.parsed.value) e.parsed.value.emplace();
   assign_as_written(text, written, *e.parsed.value);
   return text;

@@ -137,5 +137,70 @@ TEST(NodeReportMemoFormat, AUsualReportIsKeptFromTheWritingAndAnOddOneIsRead) {
   EXPECT_EQ(memo.texts_read(), 1U);
 }
 
+// The reports the direct writing leaves to the general one (a TYPE over 64 bytes, a number
+// past 2^53 units) and one it writes but must not keep (X beyond kMaxNodeCoordinate_m): the
+// text is format_node_report's, and the parse is what reading it gives.
+TEST(NodeReportMemoFormat, ReportsOffTheDirectWritingKeepTheSameTextAndParse) {
+  NodeReportMemo memo;
+  NodeReport r;
+  r.name = "betty";
+  r.x_m = 12.345;
+  r.y_m = -0.004;
+  r.speed_mps = 2.0;
+  r.heading_deg = 359.999;
+  r.time_s = 1700000024.75;
+  r.type = std::string(65, 't');
+  std::string text = memo.format(r);
+  EXPECT_EQ(text, "NAME=betty,X=12.35,Y=0,SPD=2,HDG=360,TIME=1700000024.75,TYPE=" +
+                      std::string(65, 't'));
+  expect_same_parse(memo.parse(text, nullptr), parse_node_report(text), text);
+  EXPECT_EQ(memo.texts_read(), 0U);  // kept through the general writing
+  r.type = "";
+  text = memo.format(r);
+  EXPECT_EQ(text, "NAME=betty,X=12.35,Y=0,SPD=2,HDG=360,TIME=1700000024.75,TYPE=");
+  expect_same_parse(memo.parse(text, nullptr), parse_node_report(text), text);
+  EXPECT_EQ(memo.texts_read(), 0U);  // kept from the direct writing, no type
+  r.time_s = 1e16;  // past the fast path: written by append_fmt
+  text = memo.format(r);
+  EXPECT_EQ(text, format_node_report(r));
+  expect_same_parse(memo.parse(text, nullptr), parse_node_report(text), text);
+  EXPECT_EQ(memo.texts_read(), 1U);
+  r.time_s.reset();
+  r.x_m = 2e8;  // beyond kMaxNodeCoordinate_m: written, not kept, refused when read
+  text = memo.format(r);
+  EXPECT_EQ(text, "NAME=betty,X=200000000,Y=0,SPD=2,HDG=360,TYPE=");
+  const Parsed<NodeReport>& refused = memo.parse(text, nullptr);
+  EXPECT_FALSE(refused.value.has_value());
+  expect_same_parse(refused, parse_node_report(text), text);
+  EXPECT_EQ(memo.texts_read(), 2U);
+}
+
+// An entry kept from a parse (not from the direct writing) vouches for nothing: a report with
+// its name, which the direct writing refuses ('{'), is written the general way and read back.
+TEST(NodeReportMemoFormat, AnEntryKeptFromAParseDoesNotVouchForTheNameItHolds) {
+  NodeReportMemo memo;
+  NodeReport r;
+  r.name = "archie";
+  for (int i = 0; i < 4; ++i) {  // every entry kept by the direct writing
+    r.x_m = i;
+    memo.format(r);
+  }
+  // The next four entries kept from parses; the first has the name "{x}".
+  for (int i = 0; i < 4; ++i) {
+    const std::string name = i == 0 ? "{x}" : "p" + std::to_string(i);
+    ASSERT_TRUE(memo.parse("NAME=" + name + ",X=1,Y=2,SPD=1,HDG=0", nullptr).value);
+  }
+  EXPECT_EQ(memo.texts_read(), 4U);
+  r.name = "{x}";
+  r.x_m = 3.0;  // (not the parsed text, which the memo would find)
+  r.y_m = 2.0;
+  r.speed_mps = 1.0;
+  r.heading_deg = 0.0;
+  const std::string text = memo.format(r);  // replaces the "{x}" entry's place
+  EXPECT_EQ(text, "NAME={x},X=3,Y=2,SPD=1,HDG=0");
+  expect_same_parse(memo.parse(text, nullptr), parse_node_report(text), text);
+  EXPECT_EQ(memo.texts_read(), 5U);  // not kept from the writing: read when it arrives
+}
+
 }  // namespace
 }  // namespace hazard
