@@ -178,6 +178,8 @@ void HazardManager::add_track_sample(const TrackSample& sample) {
 
 void HazardManager::update_passes(const TrackSample& s) {
   if (!s.sensor_on) return;  // the sensor freezes its inside/outside state while off
+  // No object known yet (a vehicle waiting for a hand-over): none inside, none can enter.
+  if (records_.empty()) return;
   const Footprint foot(s.position_m, s.heading_deg, s.half_width_m, config_);
   // Exits (and core reached) for the objects inside.
   for (std::size_t i = 0; i < inside_.size();) {

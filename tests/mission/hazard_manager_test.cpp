@@ -331,6 +331,28 @@ TEST(Manager, HandoverCarriesEvidenceAndTheReceiverAddsItOnce) {
   EXPECT_TRUE(charlie.beliefs().empty());
 }
 
+TEST(Manager, AnObjectHandedOverMidPassIsEnteredByTheNextPose) {
+  // Archie knows no object while it drives (its poses skip the swath work), then learns one
+  // beside the track from betty: the next pose enters it, and the pass without a detection
+  // counts as a miss.
+  ManagerConfig bc;
+  bc.vname = "betty";
+  HazardManager betty(bc);
+  betty.on_config_ack({"betty", 25, kPd, kPfa, kPclass}, 0.0);
+  betty.on_detection(detection("75", 10, 50), 1.0);
+  const auto handover = parse_handover(betty.handover_to("archie").postings.back().text);
+  ASSERT_TRUE(handover) << handover.error;
+
+  HazardManager archie(archie_config());
+  archie.on_config_ack(archie_ack(), 0.0);
+  double t = drive_north(archie, 0, 0, 48, 1.0);
+  archie.on_handover(*handover.value, t);
+  t = drive_north(archie, 0, 48.375, 120, t);
+  archie.tick(t + 20);
+  EXPECT_EQ(archie.counters().missed_passes, 1);
+  EXPECT_EQ(archie.belief("75")->own.missed_passes, 1);
+}
+
 TEST(Manager, ReacquireRouteVisitsTheHandedOverObjects) {
   HazardManager archie(archie_config());
   archie.on_config_ack(archie_ack(), 0.0);
