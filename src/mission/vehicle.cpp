@@ -177,9 +177,13 @@ Pose SurveyVehicle::advance_to(double now_s) {
   }
   if (!following()) return advance_to(now_s);
   const double partial_s = now_s - grid_time(state_.step_index);
-  State preview = state_;
-  if (partial_s > 0.0) step(preview, partial_s, false);
-  last_pose_ = pose_of(preview, now_s);
+  if (partial_s > 0.0) {
+    State preview = state_;
+    step(preview, partial_s, false);
+    last_pose_ = pose_of(preview, now_s);
+  } else {
+    last_pose_ = pose_of(state_, now_s);  // on the grid: no preview to copy
+  }
   return last_pose_;
 }
 
