@@ -118,10 +118,27 @@ std::string log_excerpt(std::string_view text);
 
 // ---- angles -----------------------------------------------------------------------------------
 
-/// Angle in [0, 360) (never -0.0), exact for every finite input, in one fmod (no loop, N3).
-double norm360(double angle_deg);
+namespace detail {
+/// norm360 for any input: one fmod (no loop, N3). The inline cases below give the same bits.
+double norm360_general(double angle_deg);
+}  // namespace detail
+
+/// Angle in [0, 360) (never -0.0), exact for every finite input. Headings and the differences
+/// of two headings (within one turn) are the common inputs, several per vehicle step: those are
+/// normalised inline, without a call (NaN and everything else go to norm360_general).
+inline double norm360(double angle_deg) {
+  if (angle_deg >= 0.0 && angle_deg < 360.0) return angle_deg + 0.0;  // -0.0 becomes +0.0
+  if (angle_deg < 0.0 && angle_deg > -360.0) {
+    const double r = angle_deg + 360.0;
+    return r < 360.0 ? r : 0.0;  // -1e-17 + 360 rounds to 360
+  }
+  return detail::norm360_general(angle_deg);
+}
 /// Angle in (-180, 180].
-double norm180(double angle_deg);
+inline double norm180(double angle_deg) {
+  const double r = norm360(angle_deg);
+  return r > 180.0 ? r - 360.0 : r;
+}
 
 // ---- inline definitions: trim and iequals run on every key and value of every message -------
 

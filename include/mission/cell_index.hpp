@@ -35,8 +35,9 @@ class CellIndex {
 
   template <class F>
   void for_each_in_box(glm::dvec2 lo_m, glm::dvec2 hi_m, F&& f) const {
+    if (cells_.empty()) return;
     const Range r = range_of(lo_m, hi_m);
-    if (cells_.empty() || r.x1 < r.x0 || r.y1 < r.y0) return;
+    if (r.x1 < r.x0 || r.y1 < r.y0) return;
     if (r.cells() > static_cast<double>(cells_.size())) {
       for (std::uint32_t c : occupied_in(r))
         for (std::uint32_t id : cells_[c].ids) f(id);

@@ -124,8 +124,9 @@ class HazardManager {
   Outputs tick(double now_s);
   /// UHZ_CONFIG_ACK(_<V>): acks for another vehicle are ignored with a warning.
   Outputs on_config_ack(const hazard::ConfigAck& ack, double now_s);
-  /// The vehicle's own pose (its NODE_REPORT or navigation).
-  Outputs on_pose(glm::dvec2 position_m, double heading_deg, double speed_mps, double now_s);
+  /// The vehicle's own pose (its NODE_REPORT or navigation). It posts nothing: the passes it
+  /// ends are resolved by tick() (one call per report, so no empty Outputs to build and publish).
+  void on_pose(glm::dvec2 position_m, double heading_deg, double speed_mps, double now_s);
   /// UHZ_DETECTION_REPORT(_<V>): belief update and a classification request.
   Outputs on_detection(const hazard::DetectionReport& report, double now_s);
   /// UHZ_HAZARD_REPORT(_<V>): a classification answer.

@@ -28,11 +28,13 @@
 
 #include <glm/vec2.hpp>
 
+#include <cmath>
 #include <optional>
 #include <string>
 #include "base/result.hpp"
 #include <vector>
 
+#include "base/text.hpp"
 #include "mission/polygon.hpp"
 
 namespace mission {
@@ -73,9 +75,20 @@ std::vector<glm::dvec2> plan_reacquire_route(glm::dvec2 start_m,
                                              const std::vector<glm::dvec2>& objects_m,
                                              const ReacquireOptions& options);
 
+// Inline: the vehicle calls each once per step.
+namespace detail {
+constexpr double kDegPerRad = 57.295779513082320876798;
+}  // namespace detail
+
 /// Unit vector of a heading (0 = +y, 90 = +x): (sin h, cos h).
-glm::dvec2 heading_vector(double heading_deg);
+inline glm::dvec2 heading_vector(double heading_deg) {
+  const double h = heading_deg / detail::kDegPerRad;
+  return {std::sin(h), std::cos(h)};
+}
 /// Heading of a direction vector, in [0, 360); (0,0) gives 0.
-double heading_of(glm::dvec2 direction);
+inline double heading_of(glm::dvec2 direction) {
+  if (direction.x == 0.0 && direction.y == 0.0) return 0.0;
+  return base::norm360(std::atan2(direction.x, direction.y) * detail::kDegPerRad);
+}
 
 }  // namespace mission

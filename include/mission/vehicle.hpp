@@ -94,8 +94,9 @@ class SurveyVehicle {
   const State& state() const { return state_; }
 
  private:
-  /// One step of dt_s; `whole_step` false for a preview (the noise state is not advanced).
-  State step(const State& from, double dt_s, bool whole_step) const;
+  /// One step of dt_s, in place; `whole_step` false for a preview (the noise state is not
+  /// advanced).
+  void step(State& s, double dt_s, bool whole_step) const;
   Pose pose_of(const State& s, double time_s) const;
   /// How early the turn toward waypoint `target + 1` starts (metres before `target`).
   double turn_anticipation_m(std::size_t target) const;
@@ -106,6 +107,9 @@ class SurveyVehicle {
   std::vector<glm::dvec2> waypoints_m_;
   /// turn_anticipation_m of each waypoint, computed once per route: step() asks every step.
   std::vector<double> anticipation_m_;
+  /// heading_of(waypoint i - waypoint i-1) (0 for i = 0), once per route: the desired heading
+  /// while turning onto line i, which step() would otherwise compute every step of the turn.
+  std::vector<double> leg_heading_deg_;
   State state_;
   std::optional<double> done_time_s_;
   Pose last_pose_;

@@ -513,18 +513,15 @@ std::string escape_for_log(std::string_view text) {
 
 // fmod is exact (the remainder of two doubles is representable), so any finite heading, however
 // large (1e15, 1e300), normalises in one step without a loop (N3).
-double norm360(double angle_deg) {
-  // fmod(a, 360) is a itself when |a| < 360: the common case skips the library call.
+namespace detail {
+double norm360_general(double angle_deg) {
+  // fmod(a, 360) is a itself when |a| < 360: that case skips the library call.
   double r = std::fabs(angle_deg) < 360.0 ? angle_deg : std::fmod(angle_deg, 360.0);
   if (r < 0) r += 360.0;
   if (r >= 360.0) r = 0.0;  // -1e-17 + 360 rounds to 360
   return r + 0.0;           // -720 gives fmod = -0.0; adding +0.0 makes it +0.0
 }
-
-double norm180(double angle_deg) {
-  const double r = norm360(angle_deg);
-  return r > 180.0 ? r - 360.0 : r;
-}
+}  // namespace detail
 
 std::string excerpt(std::string_view text, std::size_t max_chars) {
   if (text.size() <= max_chars) return std::string(text);

@@ -142,9 +142,8 @@ Outputs HazardManager::on_config_ack(const hazard::ConfigAck& ack, double /*now_
   return out;
 }
 
-Outputs HazardManager::on_pose(glm::dvec2 position_m, double heading_deg, double speed_mps,
-                               double now_s) {
-  Outputs out;
+void HazardManager::on_pose(glm::dvec2 position_m, double heading_deg, double speed_mps,
+                            double now_s) {
   headings_.add(heading_deg, now_s);
   const double rate_dps = headings_.turn_rate_dps();
   const bool speed_ok = !(speed_mps > config_.sensor_max_speed_mps);
@@ -166,7 +165,6 @@ Outputs HazardManager::on_pose(glm::dvec2 position_m, double heading_deg, double
   if (keep) add_track_sample(sample);
   last_pose_ = sample;
   update_passes(sample);
-  return out;
 }
 
 void HazardManager::add_track_sample(const TrackSample& sample) {
@@ -180,6 +178,8 @@ void HazardManager::add_track_sample(const TrackSample& sample) {
 
 void HazardManager::update_passes(const TrackSample& s) {
   if (!s.sensor_on) return;  // the sensor freezes its inside/outside state while off
+  // No object known yet (a vehicle waiting for a hand-over): none inside, none can enter.
+  if (records_.empty()) return;
   const Footprint foot(s.position_m, s.heading_deg, s.half_width_m, config_);
   // Exits (and core reached) for the objects inside.
   for (std::size_t i = 0; i < inside_.size();) {

@@ -19,8 +19,6 @@ namespace mission {
 
 namespace {
 
-constexpr double kDegPerRad = 57.295779513082320876798;
-
 struct LaneExtent {
   double across_m;
   double along_min_m;
@@ -71,16 +69,6 @@ std::vector<LaneExtent> lane_extents(const ConvexPolygon& region, glm::dvec2 alo
 }
 
 }  // namespace
-
-glm::dvec2 heading_vector(double heading_deg) {
-  const double h = heading_deg / kDegPerRad;
-  return {std::sin(h), std::cos(h)};
-}
-
-double heading_of(glm::dvec2 direction) {
-  if (direction.x == 0.0 && direction.y == 0.0) return 0.0;
-  return base::norm360(std::atan2(direction.x, direction.y) * kDegPerRad);
-}
 
 base::Result<LawnmowerPlan> plan_lawnmower(const ConvexPolygon& region,
                                            const LawnmowerOptions& options) {

@@ -69,8 +69,11 @@ SurveyVehicle::SurveyVehicle(const VehicleParams& params, const Pose& start)
 void SurveyVehicle::set_waypoints(std::vector<glm::dvec2> waypoints_m) {
   waypoints_m_ = std::move(waypoints_m);
   anticipation_m_.clear();
-  for (std::size_t i = 0; i < waypoints_m_.size(); ++i)
+  leg_heading_deg_.clear();
+  for (std::size_t i = 0; i < waypoints_m_.size(); ++i) {
     anticipation_m_.push_back(turn_anticipation_m(i));
+    leg_heading_deg_.push_back(i == 0 ? 0.0 : heading_of(waypoints_m_[i] - waypoints_m_[i - 1]));
+  }
   state_.target = 0;
   state_.turning = false;
   state_.segment_start_m = state_.position_m;
@@ -82,13 +85,15 @@ double SurveyVehicle::grid_time(std::uint64_t step_index) const {
   return start_time_s_ + static_cast<double>(step_index) * params_.step_s;
 }
 
-SurveyVehicle::State SurveyVehicle::step(const State& from, double dt_s, bool whole_step) const {
-  State s = from;
-  // 1. Waypoint bookkeeping (bounded by the number of waypoints).
+void SurveyVehicle::step(State& s, double dt_s, bool whole_step) const {
+  // 1. Waypoint bookkeeping (bounded by the number of waypoints). The track line of the target
+  //    kept is step 2's too.
+  glm::dvec2 track{0.0, 0.0};
+  double length_m = 0.0;
   while (s.target < waypoints_m_.size()) {
     const glm::dvec2 target = waypoints_m_[s.target];
-    const glm::dvec2 track = target - s.segment_start_m;
-    const double length_m = glm::length(track);
+    track = target - s.segment_start_m;
+    length_m = glm::length(track);
     const bool captured = glm::length(target - s.position_m) <= params_.capture_radius_m;
     const double along_m =
         length_m > 0.0 ? glm::dot(s.position_m - s.segment_start_m, track) / length_m : 0.0;
@@ -98,13 +103,12 @@ SurveyVehicle::State SurveyVehicle::step(const State& from, double dt_s, bool wh
     ++s.target;
     s.turning = s.target > 0 && s.target < waypoints_m_.size();
   }
-  if (s.target >= waypoints_m_.size()) return s;  // done: the caller records the time
+  if (s.target >= waypoints_m_.size()) return;  // done: the caller records the time
 
   // 2. Desired heading: while turning a corner, the new line's heading (a full-rate turn from the
   //    anticipation point is the arc tangent to both lines); then the lead point on the line.
+  //    Turning means the line runs from waypoint target - 1, whose heading set_waypoints kept.
   const glm::dvec2 target = waypoints_m_[s.target];
-  const glm::dvec2 track = target - s.segment_start_m;
-  const double length_m = glm::length(track);
   glm::dvec2 lead_point = target;
   if (length_m > 0.0) {
     const glm::dvec2 unit = track / length_m;
@@ -112,8 +116,9 @@ SurveyVehicle::State SurveyVehicle::step(const State& from, double dt_s, bool wh
         std::clamp(glm::dot(s.position_m - s.segment_start_m, unit), 0.0, length_m);
     lead_point = s.segment_start_m + unit * std::min(along_m + params_.lead_m, length_m);
   }
-  const double desired_deg =
-      s.turning && length_m > 0.0 ? heading_of(track) : heading_of(lead_point - s.position_m);
+  assert(!s.turning || (s.target > 0 && s.segment_start_m == waypoints_m_[s.target - 1]));
+  const double desired_deg = s.turning && length_m > 0.0 ? leg_heading_deg_[s.target]
+                                                         : heading_of(lead_point - s.position_m);
 
   // 3. Rate-limited turn toward the commanded heading.
   const double max_turn_deg = params_.max_turn_rate_dps * dt_s;
@@ -133,7 +138,6 @@ SurveyVehicle::State SurveyVehicle::step(const State& from, double dt_s, bool wh
     s.noise_deg = s.noise_deg * phi + params_.heading_noise_deg * std::sqrt(1.0 - phi * phi) *
                                           standard_normal(params_.seed, kNoiseStream, s.step_index);
   }
-  return s;
 }
 
 double SurveyVehicle::turn_anticipation_m(std::size_t target) const {
@@ -167,14 +171,19 @@ Pose SurveyVehicle::advance_to(double now_s) {
   }
   while (following() && grid_time(state_.step_index + 1) <= now_s) {
     const double step_start_s = grid_time(state_.step_index);
-    state_ = step(state_, params_.step_s, true);
+    step(state_, params_.step_s, true);
     ++state_.step_index;
     if (!following()) done_time_s_ = step_start_s;
   }
   if (!following()) return advance_to(now_s);
   const double partial_s = now_s - grid_time(state_.step_index);
-  const State preview = partial_s > 0.0 ? step(state_, partial_s, false) : state_;
-  last_pose_ = pose_of(preview, now_s);
+  if (partial_s > 0.0) {
+    State preview = state_;
+    step(preview, partial_s, false);
+    last_pose_ = pose_of(preview, now_s);
+  } else {
+    last_pose_ = pose_of(state_, now_s);  // on the grid: no preview to copy
+  }
   return last_pose_;
 }
 

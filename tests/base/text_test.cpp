@@ -3,6 +3,8 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstring>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -200,6 +202,48 @@ TEST(Text, AnglesNormaliseWithoutLoops_N3) {
   EXPECT_GE(r, 0.0);
   EXPECT_LT(r, 360.0);
   EXPECT_TRUE(std::isfinite(base::norm360(1e308)));
+}
+
+std::uint64_t bits_of(double v) {
+  std::uint64_t b = 0;
+  std::memcpy(&b, &v, sizeof b);
+  return b;
+}
+
+// norm360's inline cases must give the bits of the general path (outputs depend on them).
+void expect_same_as_general(double a) {
+  const double fast = base::norm360(a);
+  const double general = base::detail::norm360_general(a);
+  if (std::isnan(general)) {
+    EXPECT_TRUE(std::isnan(fast)) << a;
+    return;
+  }
+  EXPECT_EQ(bits_of(fast), bits_of(general)) << a;
+  const double half = general > 180.0 ? general - 360.0 : general;
+  EXPECT_EQ(bits_of(base::norm180(a)), bits_of(half)) << a;
+}
+
+TEST(Text, AnglesInlineCasesMatchTheGeneralPath) {
+  const double inf = std::numeric_limits<double>::infinity();
+  const double below360 = std::nextafter(360.0, 0.0);
+  for (double a : {0.0, -0.0, 360.0, -360.0, below360, -below360, 359.9999999999999,
+                   -359.9999999999999, std::nextafter(-360.0, 0.0), std::nextafter(-360.0, -inf),
+                   std::nextafter(0.0, -1.0), -1e-300, 1e-300, -1e-17, 180.0, -180.0, 720.0, -720.0,
+                   1e15, -1e15, 1e308, -1e308, inf, -inf,
+                   std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::min(),
+                   -std::numeric_limits<double>::denorm_min()}) {
+    expect_same_as_general(a);
+  }
+  // Pseudo-random values within a few turns, and arbitrary bit patterns.
+  std::uint64_t state = 0x9E3779B97F4A7C15ULL;
+  for (int i = 0; i < 100000; ++i) {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    const double unit = static_cast<double>(state >> 11) / 9007199254740992.0;  // [0, 1)
+    expect_same_as_general((unit - 0.5) * 2000.0);
+    double any = 0.0;
+    std::memcpy(&any, &state, sizeof any);
+    expect_same_as_general(any);
+  }
 }
 
 TEST(Text, ExcerptCutsHugeValues) {

@@ -41,12 +41,9 @@ double drive_north(HazardManager& m, double x_m, double y0, double y1, double t0
                    Outputs* all = nullptr) {
   double t = t0;
   for (double y = y0; y <= y1; y += 1.5 * 0.25, t += 0.25) {
-    Outputs a = m.on_pose({x_m, y}, 0.0, 1.5, t);
+    m.on_pose({x_m, y}, 0.0, 1.5, t);
     Outputs b = m.tick(t);
-    if (all) {
-      all->append(std::move(a));
-      all->append(std::move(b));
-    }
+    if (all) all->append(std::move(b));
   }
   return t;
 }
@@ -332,6 +329,28 @@ TEST(Manager, HandoverCarriesEvidenceAndTheReceiverAddsItOnce) {
   HazardManager charlie(cc);
   EXPECT_EQ(charlie.on_handover(*parsed.value, 1.0).run_warnings.size(), 1u);
   EXPECT_TRUE(charlie.beliefs().empty());
+}
+
+TEST(Manager, AnObjectHandedOverMidPassIsEnteredByTheNextPose) {
+  // Archie knows no object while it drives (its poses skip the swath work), then learns one
+  // beside the track from betty: the next pose enters it, and the pass without a detection
+  // counts as a miss.
+  ManagerConfig bc;
+  bc.vname = "betty";
+  HazardManager betty(bc);
+  betty.on_config_ack({"betty", 25, kPd, kPfa, kPclass}, 0.0);
+  betty.on_detection(detection("75", 10, 50), 1.0);
+  const auto handover = parse_handover(betty.handover_to("archie").postings.back().text);
+  ASSERT_TRUE(handover) << handover.error;
+
+  HazardManager archie(archie_config());
+  archie.on_config_ack(archie_ack(), 0.0);
+  double t = drive_north(archie, 0, 0, 48, 1.0);
+  archie.on_handover(*handover.value, t);
+  t = drive_north(archie, 0, 48.375, 120, t);
+  archie.tick(t + 20);
+  EXPECT_EQ(archie.counters().missed_passes, 1);
+  EXPECT_EQ(archie.belief("75")->own.missed_passes, 1);
 }
 
 TEST(Manager, ReacquireRouteVisitsTheHandedOverObjects) {

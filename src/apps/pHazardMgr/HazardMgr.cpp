@@ -180,7 +180,7 @@ void HazardMgr::on_node_report(const std::string& text, double time_s) {
   const double pose_s = std::max(last_pose_time_s_, r.time_s ? std::min(*r.time_s, time_s) : time_s);
   last_pose_time_s_ = pose_s;
   last_position_m_ = glm::dvec2{r.x_m, r.y_m};
-  publish(manager_->on_pose(*last_position_m_, r.heading_deg, r.speed_mps, pose_s));
+  manager_->on_pose(*last_position_m_, r.heading_deg, r.speed_mps, pose_s);
   if (route_pending_) post_reacquire_route();
 }
 
