@@ -302,19 +302,29 @@ void MoosApp::cycle() {
   }
 
   if (!comms_->is_connected()) return;  // libMOOS iterates only while connected (7.1)
-  post_status_if_due();
+  if (settings_.post_status) post_status_if_due();
   ++iteration_;
   if (traits_.post_iteration_timing && last_iterate_start_moos_s_)
     comms_->notify(iter_gap_var_, (now - *last_iterate_start_moos_s_) * settings_.app_tick_hz);
   last_iterate_start_moos_s_ = now;
   iterate();
-  post_report(now);
-  plan_idle(now);
-  promise_next_fetch();
+  if (report_may_be_due()) {
+    post_report(now);
+  } else {
+    appcast_.set_iteration(iteration_);  // all post_report() would have done
+  }
+  if (settings_.idle_app_tick_hz) plan_idle(now);
+  if (comms_->takes_fetch_promises()) promise_next_fetch();  // else no clock to read for it
+}
+
+bool MoosApp::report_may_be_due() const {
+  // What post_report() looks at, cheapest first; without any of it, it only counts the
+  // iteration.
+  return iteration_ < 2 || terminal_output_ || !requests_.empty() || new_config_warning_ ||
+         traits_.post_iteration_timing || settings_.community.empty();
 }
 
 void MoosApp::promise_next_fetch() {
-  if (!comms_->takes_fetch_promises()) return;  // no clock to read for it
   if (idle_resume_moos_s_) {
     comms_->expect_fetch_within(0.0);
     return;
@@ -345,14 +355,21 @@ void MoosApp::report_dropped_postings() {
 }
 
 void MoosApp::handle_framework_mail(std::vector<Message>& mail) {
-  auto framework = [&](const Message& m) {
-    if (m.key == kTimingKey) return true;
-    if (m.key != kAppCastRequestKey) return false;
-    if (auto request = parse_appcast_request(m.sval, community(), settings_.app_name))
-      requests_[request->key] = Request{curr_time_, *request};
+  const auto is_framework = [](const Message& m) {
+    return same_text(m.key, kTimingKey) || same_text(m.key, kAppCastRequestKey);
+  };
+  // Mostly there is none: a look at each key, and nothing moves.
+  const auto first = std::find_if(mail.begin(), mail.end(), is_framework);
+  if (first == mail.end()) return;
+  auto handled = [&](const Message& m) {
+    if (!is_framework(m)) return false;
+    if (m.key == kAppCastRequestKey) {
+      if (auto request = parse_appcast_request(m.sval, community(), settings_.app_name))
+        requests_[request->key] = Request{curr_time_, *request};
+    }
     return true;
   };
-  mail.erase(std::remove_if(mail.begin(), mail.end(), framework), mail.end());
+  mail.erase(std::remove_if(first, mail.end(), handled), mail.end());
 }
 
 bool MoosApp::appcast_requested() const {
@@ -378,7 +395,6 @@ std::string MoosApp::status_string() const {
 }
 
 void MoosApp::post_status_if_due() {
-  if (!settings_.post_status) return;
   if (last_status_moos_s_ && curr_time_ - *last_status_moos_s_ < kStatusPeriod_s) return;
   comms_->notify(status_var_, status_string());
   last_status_moos_s_ = curr_time_;
@@ -433,8 +449,8 @@ std::string MoosApp::terminal_report() {
 }
 
 bool MoosApp::notify(const std::string& var, double value) { return comms_->notify(var, value); }
-bool MoosApp::notify(std::string var, std::string value) {
-  return comms_->notify(std::move(var), std::move(value));
+bool MoosApp::notify(const std::string& var, std::string value) {
+  return comms_->notify(var, std::move(value));
 }
 bool MoosApp::notify_binary(const std::string& var, const std::string& bytes) {
   return comms_->notify_binary(var, bytes);
