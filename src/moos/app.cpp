@@ -355,21 +355,14 @@ void MoosApp::report_dropped_postings() {
 }
 
 void MoosApp::handle_framework_mail(std::vector<Message>& mail) {
-  const auto is_framework = [](const Message& m) {
-    return same_text(m.key, kTimingKey) || same_text(m.key, kAppCastRequestKey);
-  };
-  // Mostly there is none: a look at each key, and nothing moves.
-  const auto first = std::find_if(mail.begin(), mail.end(), is_framework);
-  if (first == mail.end()) return;
-  auto handled = [&](const Message& m) {
-    if (!is_framework(m)) return false;
-    if (m.key == kAppCastRequestKey) {
-      if (auto request = parse_appcast_request(m.sval, community(), settings_.app_name))
-        requests_[request->key] = Request{curr_time_, *request};
-    }
+  auto framework = [&](const Message& m) {
+    if (m.key == kTimingKey) return true;
+    if (m.key != kAppCastRequestKey) return false;
+    if (auto request = parse_appcast_request(m.sval, community(), settings_.app_name))
+      requests_[request->key] = Request{curr_time_, *request};
     return true;
   };
-  mail.erase(std::remove_if(first, mail.end(), handled), mail.end());
+  mail.erase(std::remove_if(mail.begin(), mail.end(), framework), mail.end());
 }
 
 bool MoosApp::appcast_requested() const {
