@@ -201,7 +201,7 @@ class MoosApp {
   double seconds_since_start() const;
 
   bool notify(const std::string& var, double value);
-  bool notify(std::string var, std::string value);  ///< moved on, uncopied
+  bool notify(const std::string& var, std::string value);  ///< the value moved on, uncopied
   bool notify_binary(const std::string& var, const std::string& bytes);
   bool register_variable(const std::string& var, double interval_s = 0.0);
   bool unregister_variable(const std::string& var);
@@ -228,11 +228,16 @@ class MoosApp {
   /// large), naming the latest's variable.
   void report_dropped_postings();
   bool appcast_requested() const;
+  /// The status when it is due; only with settings_.post_status.
   void post_status_if_due();
+  /// False when post_report() would only set the appcast's iteration: no terminal, no appcast
+  /// request, no new configuration warning, no _ITER_LEN, a fixed node name, past iteration 1.
+  bool report_may_be_due() const;
   void post_report(double iterate_start_moos_s);
   void schedule_next(double cycle_start_moos_s);
   /// After a cycle: tells the comms when the next fetch comes (Comms::expect_fetch_within), so
   /// it can leave reading to it; none while slots are skipped, when mail must wake the app.
+  /// Only for a comms that takes the promise (Comms::takes_fetch_promises).
   void promise_next_fetch();
   // IdleAppTick (app_idle.cpp).
   /// When the next cycle is due: the next AppTick slot, or while quiet and without mail the
@@ -240,7 +245,7 @@ class MoosApp {
   double due_moos_s() const;
   /// The first slot of the AppTick grid (next_due_moos_s_ + k / AppTick) at or after `t`.
   double grid_slot_at_or_after(double t) const;
-  /// After a cycle: until when the following cycles may be skipped (none without IdleAppTick).
+  /// After a cycle: until when the following cycles may be skipped; only with IdleAppTick.
   void plan_idle(double cycle_start_moos_s);
   /// From the comms thread: mail (or a connection) arrived; the first since the last fetch
   /// records its MOOS time.

@@ -107,9 +107,9 @@ class Comms {
   /// NOTIFY a double / string / binary value. `time_s` defaults to the MOOS time now.
   bool notify(const std::string& var, double value, std::optional<double> time_s = std::nullopt,
               const std::string& source_aux = {});
-  /// The strings are taken by value: a caller done with its text moves it in, uncopied.
-  bool notify(std::string var, std::string value, std::optional<double> time_s = std::nullopt,
-              const std::string& source_aux = {});
+  /// The value is taken by value: a caller done with its text moves it in, uncopied.
+  bool notify(const std::string& var, std::string value,
+              std::optional<double> time_s = std::nullopt, const std::string& source_aux = {});
   bool notify_binary(const std::string& var, const std::string& bytes,
                      std::optional<double> time_s = std::nullopt,
                      const std::string& source_aux = {});
@@ -186,6 +186,11 @@ class Comms {
   Message control_message(char type, char data_type, const std::string& key) const;
   Message register_message(const std::string& var, double interval_s) const;
   Message wildcard_message(char type, const WildcardSpec& spec) const;
+  /// notify() of any type: `sval` (null for a double) is taken, uncopied.
+  bool post_notify(char data_type, const std::string& var, double dval, std::string* sval,
+                   std::optional<double> time_s, const std::string& source_aux);
+  void fill_notify(Message& m, char data_type, const std::string& var, double dval,
+                   std::string* sval, double time, const std::string& source_aux) const;
   bool post_and_record(Message&& msg);
   bool published_recently(const std::string& key) const;
   /// Lists `name`, an element of published_, among recent_published_; book_mutex_ held.
@@ -216,6 +221,11 @@ class Comms {
   std::atomic<std::uint64_t> mail_dropped_{0};
   std::atomic<std::uint64_t> postings_dropped_{0};
   std::string last_post_error_;  ///< under book_mutex_
+  /// The message notify() builds, kept with whatever storage the transport left in it (the bus
+  /// hands back that of the inbox message it wrote over): a steady posting then allocates no
+  /// string. Used by one posting at a time (outgoing_in_use_); a concurrent one builds its own.
+  Message outgoing_;
+  std::atomic<bool> outgoing_in_use_{false};
 };
 
 }  // namespace moos

@@ -49,6 +49,7 @@
 #include <set>
 #include <string>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "moos/codec.hpp"
@@ -199,7 +200,10 @@ class Database {
     bool async = false;
     MailSink* sink = nullptr;  ///< see connect()
     std::vector<Message> pending;  ///< undelivered mail, in order
+    /// Bytes of `pending`; for a client with a mail sink, of the mail the sink got in call
+    /// `sink_call` (the bound is per call, and such a client is never listed for the flush).
     std::size_t pending_bytes = 0;
+    std::uint64_t sink_call = 0;
     bool queued_for_flush = false;  ///< already listed in async_with_mail_
     bool overflowed = false;
     std::vector<WildcardSpec> filters;
@@ -221,6 +225,22 @@ class Database {
     std::optional<double> last_delivery_moos_s;  ///< nullopt: never delivered
     /// The subscriber (clients_ nodes do not move; a client's subscriptions go before it does).
     Client* client = nullptr;
+  };
+
+  /// A variable's subscriptions by client id (= connection order: the fan-out's deterministic
+  /// order), in a sorted vector: walked at every write, changed only by (un)registrations and
+  /// disconnects.
+  class Subscribers {
+   public:
+    using Entry = std::pair<ClientId, Subscription>;
+    /// The subscription of `id`, added (default) if it had none.
+    Subscription& operator[](ClientId id);
+    void erase(ClientId id);
+    std::vector<Entry>::iterator begin() { return entries_.begin(); }
+    std::vector<Entry>::iterator end() { return entries_.end(); }
+
+   private:
+    std::vector<Entry> entries_;
   };
 
   /// The last accepted write of a variable.
@@ -247,7 +267,7 @@ class Database {
     std::optional<Value> value;  ///< nullopt: never written (or cleared by DB_CLEAR)
     std::uint64_t write_count = 0;
     WriteFrequency frequency;
-    std::map<ClientId, Subscription> subscribers;  ///< ordered: deterministic fan-out
+    Subscribers subscribers;
   };
 
   /// process_packet() of the messages [first, last), which it moves from.
@@ -261,12 +281,11 @@ class Database {
   void handle_wildcard_unregister(ClientId id, const Message& msg);
   void handle_server_request(ClientId id, const Message& msg, double now);
 
-  // NOTIFY storage and fan-out (database_notify.cpp). publish() writes `msg` to variable `id`
-  // (its name); the write was refused if the variable's type differs from the message's
+  // NOTIFY storage (database_notify.cpp). publish() writes `msg` to variable `id` (its name) and
+  // fans it out; the write was refused if the variable's type differs from the message's
   // afterwards.
   void publish(VarId id, Message&& msg, double now);
   void store(Variable& var, const Message& msg, double now);
-  void fan_out(Variable& var, Message&& msg, double now);
   VarId find_or_create(const std::string& name);
   /// The client's posted_cache entry of `name`, or null.
   static const PostedVariable* find_posted(const Client& client, const std::string& name);
@@ -274,6 +293,10 @@ class Database {
   /// Why a client's write of `msg` (or, without a value, a new name) would take the store
   /// beyond max_stored_bytes; empty when it fits.
   std::string store_refusal(const Message& msg, bool with_value) const;
+  /// The most a write of `msg` can add to the store (its value, if `with_value`, and its name).
+  static std::size_t most_stored_bytes(const Message& msg, bool with_value);
+  /// store_refusal() when the most the write could add would not fit: the exact count.
+  std::string store_refusal_near_bound(const Message& msg, bool with_value) const;
   static std::size_t value_bytes(const Value& value);
 
   // Subscriptions (database_register.cpp).
@@ -296,6 +319,7 @@ class Database {
   void clear_db();
 
   // Mail and replies (database_mail.cpp).
+  void fan_out(Variable& var, Message&& msg, double now);
   Message snapshot(const Variable& var) const;
   void queue_mail(ClientId id, Message&& msg);
   /// A posting's mail of `size` encoded bytes for `client`: a copy of `msg` (a fan-out's reader
@@ -325,8 +349,14 @@ class Database {
   std::unordered_map<std::string, VarId> var_index_;
   std::map<ClientId, Client> clients_;  ///< ordered by id = connection order
   std::unordered_map<std::string, ClientId> client_by_name_;
-  /// Listed at most once each (queued_for_flush) and never across a disconnect.
+  /// Listed at most once each (queued_for_flush) and never across a disconnect; clients with a
+  /// mail sink are not listed (their mail left as it was queued).
   std::vector<Client*> async_with_mail_;
+  /// Public calls completed (each ends in flush_async_mail()): Client::sink_call's clock.
+  std::uint64_t calls_ = 0;
+  /// The client of the latest process_packet() (null when it disconnected): a client mostly
+  /// sends several packets in a row, found again without a look-up.
+  Client* last_sender_ = nullptr;
 
   std::vector<OutPacket> output_;
   std::vector<DropRequest> drops_;

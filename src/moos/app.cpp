@@ -302,19 +302,29 @@ void MoosApp::cycle() {
   }
 
   if (!comms_->is_connected()) return;  // libMOOS iterates only while connected (7.1)
-  post_status_if_due();
+  if (settings_.post_status) post_status_if_due();
   ++iteration_;
   if (traits_.post_iteration_timing && last_iterate_start_moos_s_)
     comms_->notify(iter_gap_var_, (now - *last_iterate_start_moos_s_) * settings_.app_tick_hz);
   last_iterate_start_moos_s_ = now;
   iterate();
-  post_report(now);
-  plan_idle(now);
-  promise_next_fetch();
+  if (report_may_be_due()) {
+    post_report(now);
+  } else {
+    appcast_.set_iteration(iteration_);  // all post_report() would have done
+  }
+  if (settings_.idle_app_tick_hz) plan_idle(now);
+  if (comms_->takes_fetch_promises()) promise_next_fetch();  // else no clock to read for it
+}
+
+bool MoosApp::report_may_be_due() const {
+  // What post_report() looks at, cheapest first; without any of it, it only counts the
+  // iteration.
+  return iteration_ < 2 || terminal_output_ || !requests_.empty() || new_config_warning_ ||
+         traits_.post_iteration_timing || settings_.community.empty();
 }
 
 void MoosApp::promise_next_fetch() {
-  if (!comms_->takes_fetch_promises()) return;  // no clock to read for it
   if (idle_resume_moos_s_) {
     comms_->expect_fetch_within(0.0);
     return;
@@ -378,7 +388,6 @@ std::string MoosApp::status_string() const {
 }
 
 void MoosApp::post_status_if_due() {
-  if (!settings_.post_status) return;
   if (last_status_moos_s_ && curr_time_ - *last_status_moos_s_ < kStatusPeriod_s) return;
   comms_->notify(status_var_, status_string());
   last_status_moos_s_ = curr_time_;
@@ -433,8 +442,8 @@ std::string MoosApp::terminal_report() {
 }
 
 bool MoosApp::notify(const std::string& var, double value) { return comms_->notify(var, value); }
-bool MoosApp::notify(std::string var, std::string value) {
-  return comms_->notify(std::move(var), std::move(value));
+bool MoosApp::notify(const std::string& var, std::string value) {
+  return comms_->notify(var, std::move(value));
 }
 bool MoosApp::notify_binary(const std::string& var, const std::string& bytes) {
   return comms_->notify_binary(var, bytes);

@@ -29,7 +29,7 @@ double MoosApp::due_moos_s() const {
 }
 
 void MoosApp::plan_idle(double cycle_start_moos_s) {
-  if (!settings_.idle_app_tick_hz || !comms_ || !comms_->is_connected()) return;
+  if (!comms_ || !comms_->is_connected()) return;
   const double quiet_until = quiet_until_moos_s(cycle_start_moos_s);
   const double resume =
       std::min(cycle_start_moos_s + 1.0 / *settings_.idle_app_tick_hz, quiet_until);

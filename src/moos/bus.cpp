@@ -4,9 +4,10 @@
 // Data structures: the Database (every rule of protocol.md 5); per client name, its state: the
 // current Database connection id (a reconnect is a new connection, as over TCP), its inbox and
 // connection count; the connection ids back to the states, to route the Database's output. Each
-// BusClient points at its state, which lives as long as it does. One mutex guards everything;
-// the flags a client checks every cycle (connected, mail waiting) are atomic so that the checks
-// take no lock. On-mail callbacks run after the mutex is released.
+// BusClient points at its state, which lives as long as it does. One mutex (a LightMutex: one
+// atomic operation when nobody waits) guards everything; the flags a client checks every cycle
+// (connected, mail waiting) are atomic so that the checks take no lock. On-mail callbacks run
+// after the mutex is released.
 
 #include "moos/bus.hpp"
 
@@ -17,6 +18,7 @@
 
 #include "base/text.hpp"
 #include "moos/inbox.hpp"
+#include "moos/light_mutex.hpp"
 
 namespace moos {
 
@@ -34,8 +36,9 @@ struct BusClientState final : MailSink {
   Inbox inbox;  // its mail is copied into the storage of the mail the app read before
   std::vector<Message> outbox;  // postings made while disconnected (comms.hpp)
   OutboxBound outbox_bound;
-  // The clients that got mail in the current bus call, in order (the bus's list), and whether
-  // this one is listed there.
+  // The clients with an on-mail callback that got mail in the current bus call, in order (the
+  // bus's list), and whether this one is listed there. A client without a callback is not
+  // listed: nothing is to be done for it after the call.
   std::vector<BusClientState*>* const woken;
   bool listed_as_woken = false;
 
@@ -51,7 +54,7 @@ struct BusClientState final : MailSink {
   }
   void got_mail() {
     has_mail = true;
-    if (listed_as_woken) return;
+    if (listed_as_woken || !handle || !handle->has_on_mail()) return;
     listed_as_woken = true;
     woken->push_back(this);
   }
@@ -82,7 +85,7 @@ struct BusCore {
 
   Clock& clock;
   const InProcessBus::Options options;
-  mutable std::mutex mutex;
+  mutable LightMutex mutex;  // taken per posting and per fetch with mail: cheap when free
   std::vector<Message> postings;
   std::vector<std::string> diagnostics;
   Database db;  // after the two lists its callbacks fill
@@ -140,11 +143,11 @@ struct BusCore {
   /// After a Database call: routes its output and, with `callbacks`, collects the on-mail
   /// callbacks of the clients that got mail (none from a destructor: the mail waits).
   void settle(std::vector<std::function<void()>>* callbacks = nullptr) {
-    route_output();
+    if (db.has_output()) route_output();  // the usual call: all its mail went to the sinks
+    if (woken.empty()) return;  // the usual call: nobody to wake
     // Copied under the bus lock (lock order: bus, then a client's book), called after it.
     if (callbacks) {
       for (ClientState* client : woken) {
-        if (!client->handle || !client->handle->has_on_mail()) continue;
         if (auto cb = client->handle->on_mail_callback()) callbacks->push_back(std::move(cb));
       }
     }
@@ -154,7 +157,6 @@ struct BusCore {
 
   /// The Database's packets: protocol replies, which are not mail. Then the clients it drops.
   void route_output() {
-    if (!db.has_output()) return;  // the usual call: all its mail went to the sinks
     db.take_output(output);
     for (auto& packet : output) {
       const auto to = states_by_id.find(packet.to);
@@ -187,7 +189,7 @@ std::unique_ptr<BusClient> InProcessBus::connect(const std::string& name) {
   if (name.empty()) return nullptr;
   std::unique_ptr<BusClient> client(new BusClient(core_, name));
   {
-    std::lock_guard<std::mutex> lock(core_->mutex);
+    std::lock_guard<LightMutex> lock(core_->mutex);
     // A real DB would POISON a second client of one name (1.6).
     const auto [it, fresh] = core_->clients.try_emplace(name, name, &core_->woken);
     if (!fresh) return nullptr;
@@ -209,12 +211,12 @@ double InProcessBus::moos_time() const { return core_->now(); }
 const std::string& InProcessBus::community() const { return core_->options.community; }
 
 std::vector<Message> InProcessBus::postings() const {
-  std::lock_guard<std::mutex> lock(core_->mutex);
+  std::lock_guard<LightMutex> lock(core_->mutex);
   return core_->postings;
 }
 
 std::vector<Message> InProcessBus::postings_of(const std::string& var) const {
-  std::lock_guard<std::mutex> lock(core_->mutex);
+  std::lock_guard<LightMutex> lock(core_->mutex);
   std::vector<Message> out;
   for (const auto& m : core_->postings)
     if (m.key == var) out.push_back(m);
@@ -222,17 +224,17 @@ std::vector<Message> InProcessBus::postings_of(const std::string& var) const {
 }
 
 void InProcessBus::clear_postings() {
-  std::lock_guard<std::mutex> lock(core_->mutex);
+  std::lock_guard<LightMutex> lock(core_->mutex);
   core_->postings.clear();
 }
 
 std::optional<Message> InProcessBus::latest(const std::string& var) const {
-  std::lock_guard<std::mutex> lock(core_->mutex);
+  std::lock_guard<LightMutex> lock(core_->mutex);
   return core_->db.latest(var);
 }
 
 std::vector<std::string> InProcessBus::client_names() const {
-  std::lock_guard<std::mutex> lock(core_->mutex);
+  std::lock_guard<LightMutex> lock(core_->mutex);
   std::vector<std::string> names;
   for (const auto& [name, state] : core_->clients)
     if (state.connected) names.push_back(name);
@@ -240,7 +242,7 @@ std::vector<std::string> InProcessBus::client_names() const {
 }
 
 std::vector<std::string> InProcessBus::diagnostics() const {
-  std::lock_guard<std::mutex> lock(core_->mutex);
+  std::lock_guard<LightMutex> lock(core_->mutex);
   return core_->diagnostics;
 }
 
@@ -251,7 +253,7 @@ BusClient::BusClient(std::shared_ptr<BusCore> core, std::string name)
 
 BusClient::~BusClient() {
   if (!state_) return;  // refused at connect
-  std::lock_guard<std::mutex> lock(core_->mutex);
+  std::lock_guard<LightMutex> lock(core_->mutex);
   if (state_->connected) core_->close_connection(*state_);
   core_->settle();  // no callbacks from a destructor: the mail waits in the inboxes
   core_->clients.erase(state_->name);  // after settle(), which clears the woken list
@@ -270,13 +272,18 @@ double BusClient::time_warp() const { return core_->options.time_warp; }
 double BusClient::moos_time() const { return core_->now() + skew_s(); }
 
 void BusClient::fetch_into(std::vector<Message>& mail) {
-  // Mail that reached the inbox before this call set has_mail before it (under the lock).
+  // Mail that reached the inbox before this call set has_mail before it (under the lock). The
+  // usual cycle of an app without mail returns here, without the lock.
+  if (state_ && !state_->has_mail && mail.empty()) return;
+  hand_over_mail(mail);
+}
+
+void BusClient::hand_over_mail(std::vector<Message>& mail) {
   if (!state_) {
     mail.clear();
     return;
   }
-  if (!state_->has_mail && mail.empty()) return;
-  std::lock_guard<std::mutex> lock(core_->mutex);
+  std::lock_guard<LightMutex> lock(core_->mutex);
   state_->inbox.hand_over(mail);
   state_->has_mail = false;
 }
@@ -286,7 +293,7 @@ bool BusClient::transmit(Message&& msg) {
   std::vector<std::function<void()>> callbacks;
   std::string refusal;
   {
-    std::lock_guard<std::mutex> lock(core_->mutex);
+    std::lock_guard<LightMutex> lock(core_->mutex);
     BusCore::ClientState& state = *state_;
     if (state.connected) {
       core_->deliver(state, std::move(msg), callbacks);
@@ -311,7 +318,7 @@ bool BusClient::transmit(Message&& msg) {
 
 void BusClient::simulate_disconnect() {
   if (!state_) return;
-  std::lock_guard<std::mutex> lock(core_->mutex);
+  std::lock_guard<LightMutex> lock(core_->mutex);
   if (!state_->connected) return;
   core_->close_connection(*state_);
   core_->settle();
@@ -323,7 +330,7 @@ bool BusClient::simulate_reconnect() {
   std::vector<Message> packet = replay_messages();
   std::vector<std::function<void()>> callbacks;
   {
-    std::lock_guard<std::mutex> lock(core_->mutex);
+    std::lock_guard<LightMutex> lock(core_->mutex);
     BusCore::ClientState& state = *state_;
     if (state.connected) return true;
     if (!core_->open_connection(state)) return false;

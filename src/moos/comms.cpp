@@ -8,6 +8,7 @@
 
 #include "base/text.hpp"
 #include "moos/codec.hpp"
+#include "moos/inbox.hpp"
 #include "moos/wildcard.hpp"
 
 namespace moos {
@@ -165,7 +166,7 @@ bool Comms::post_and_record(Message&& msg) {
 bool Comms::published_recently(const std::string& key) const {
   for (const auto& recent : recent_published_) {
     const std::string* name = recent.load(std::memory_order_acquire);
-    if (name && *name == key) return true;
+    if (name && same_text(*name, key)) return true;
   }
   return false;
 }
@@ -177,24 +178,61 @@ void Comms::remember_published(const std::string& name) {
 
 bool Comms::notify(const std::string& var, double value, std::optional<double> time_s,
                    const std::string& source_aux) {
-  Message m = make_double_notify(var, value, name_, time_s ? *time_s : moos_time());
-  if (!source_aux.empty()) m.source_aux = source_aux;  // an assignment is a library call
-  return post_and_record(std::move(m));
+  return post_notify(data_type::kDouble, var, value, nullptr, time_s, source_aux);
 }
 
-bool Comms::notify(std::string var, std::string value, std::optional<double> time_s,
+bool Comms::notify(const std::string& var, std::string value, std::optional<double> time_s,
                    const std::string& source_aux) {
-  Message m = make_string_notify(std::move(var), std::move(value), name_,
-                                 time_s ? *time_s : moos_time());
-  if (!source_aux.empty()) m.source_aux = source_aux;  // an assignment is a library call
-  return post_and_record(std::move(m));
+  return post_notify(data_type::kString, var, kUnsetDouble, &value, time_s, source_aux);
 }
 
 bool Comms::notify_binary(const std::string& var, const std::string& bytes,
                           std::optional<double> time_s, const std::string& source_aux) {
-  Message m = make_binary_notify(var, bytes, name_, time_s ? *time_s : moos_time());
-  if (!source_aux.empty()) m.source_aux = source_aux;  // an assignment is a library call
-  return post_and_record(std::move(m));
+  std::string value = bytes;
+  return post_notify(data_type::kBinary, var, kUnsetDouble, &value, time_s, source_aux);
+}
+
+bool Comms::post_notify(char data_type, const std::string& var, double dval, std::string* sval,
+                        std::optional<double> time_s, const std::string& source_aux) {
+  const double time = time_s ? *time_s : moos_time();
+  if (outgoing_in_use_.exchange(true, std::memory_order_acquire)) {
+    // Another posting (another thread, or a callback inside a posting) is using it.
+    Message m;
+    fill_notify(m, data_type, var, dval, sval, time, source_aux);
+    return post_and_record(std::move(m));
+  }
+  fill_notify(outgoing_, data_type, var, dval, sval, time, source_aux);
+  const bool posted = post_and_record(std::move(outgoing_));
+  // Whatever storage the transport left in it stays for the next posting, within a bound.
+  if (Inbox::storage_bytes(outgoing_) > Inbox::kMaxKeptBytes) outgoing_ = Message{};
+  outgoing_in_use_.store(false, std::memory_order_release);
+  return posted;
+}
+
+void Comms::fill_notify(Message& m, char data_type, const std::string& var, double dval,
+                        std::string* sval, double time, const std::string& source_aux) const {
+  // As libMOOS fills a NOTIFY (protocol.md 2.2). Every field is written: `m` may hold anything
+  // a transport left in it. Names are compared before they are assigned: mostly they are what
+  // the last posting had.
+  m.id = kUnsetId;
+  m.type = msg_type::kNotify;
+  m.data_type = data_type;
+  if (!same_text(m.source, name_)) m.source = name_;
+  if (source_aux.empty()) {
+    m.source_aux.clear();
+  } else {
+    m.source_aux = source_aux;
+  }
+  m.community.clear();
+  if (!same_text(m.key, var)) m.key = var;
+  m.time = time;
+  m.dval = dval;
+  m.dval2 = kUnsetDouble;
+  if (sval) {
+    m.sval = std::move(*sval);  // the caller's text, uncopied; it takes m's old storage away
+  } else {
+    m.sval.clear();
+  }
 }
 
 bool Comms::post(Message notify) {

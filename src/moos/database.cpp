@@ -11,10 +11,11 @@
 // an echoed TIMING opens its packet.
 //
 // Data structures: variables live in a vector indexed by a small VarId, found by name
-// through a hash map; each variable keeps its subscribers in an ordered map (fan-out order
-// = connection order, deterministic); each client keeps the ids of the variables it is
+// through a hash map; each variable keeps its subscribers in a vector sorted by client id
+// (fan-out order = connection order, deterministic); each client keeps the ids of the variables it is
 // subscribed to, so a disconnect touches only those. Asynchronous clients with queued mail
-// are listed once in `async_with_mail_`, so flushing costs nothing for idle clients.
+// are listed once in `async_with_mail_`, so flushing costs nothing for idle clients (nor for
+// clients with a mail sink, whose mail never waits).
 
 #include "moos/database.hpp"
 
@@ -120,6 +121,7 @@ void Database::disconnect(ClientId id, double now_moos_s) {
          " messages refused in total");
   const std::string name = client.name;
   client_by_name_.erase(name);
+  if (last_sender_ == &client) last_sender_ = nullptr;
   clients_.erase(it);
 
   publish_db_string("DB_EVENT", "disconnected=" + name, now_moos_s);
@@ -139,9 +141,12 @@ void Database::process_message(ClientId id, Message&& msg, double now_moos_s) {
 }
 
 void Database::process_messages(ClientId id, Message* first, Message* last, double now_moos_s) {
-  const auto found = clients_.find(id);
-  if (found == clients_.end()) return;
-  Client& client = found->second;
+  if (!last_sender_ || last_sender_->id != id) {
+    const auto found = clients_.find(id);
+    if (found == clients_.end()) return;
+    last_sender_ = &found->second;
+  }
+  Client& client = *last_sender_;
   // Step 2: a leading TIMING is echoed to asynchronous clients; synchronous clients never
   // receive TIMING (protocol.md 5.6), so theirs is dropped. TIMING elsewhere is ignored. The
   // echo is made after the other messages: handling them leaves this one as it is.
@@ -228,7 +233,9 @@ bool Database::is_async(ClientId id) const {
 
 std::size_t Database::pending_bytes(ClientId id) const {
   const auto it = clients_.find(id);
-  return it == clients_.end() ? 0 : it->second.pending_bytes;
+  if (it == clients_.end()) return 0;
+  const Client& client = it->second;
+  return client.async && client.sink ? 0 : client.pending_bytes;  // a sink took it all
 }
 
 std::optional<Message> Database::latest(const std::string& name) const {

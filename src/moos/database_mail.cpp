@@ -1,4 +1,5 @@
-// MOOSDB rule: mail, replies and their order (docs/protocol.md 2.6, 5.6).
+// MOOSDB rule: the fan-out of a NOTIFY (docs/protocol.md 5.3), mail, replies and their order
+// (2.6, 5.6).
 // Contract in include/moos/database.hpp.
 
 #include <utility>
@@ -10,6 +11,24 @@ namespace moos {
 
 namespace mt = msg_type;
 namespace dt = data_type;
+
+void Database::fan_out(Variable& var, Message&& msg, double now) {
+  // Steps 5-6: every subscriber whose interval expired, the publisher included; throttled
+  // updates are dropped, not delayed. A subscription that never delivered is due. Each due
+  // subscriber but the last gets a copy; the last one gets the message itself (a mail sink
+  // takes it apart instead of copying it).
+  const std::size_t size = msg.encoded_size();  // one size for every reader
+  Client* previous = nullptr;
+  for (auto& [subscriber, sub] : var.subscribers) {
+    const bool due = sub.interval_s <= 0.0 || !sub.last_delivery_moos_s ||
+                     now - *sub.last_delivery_moos_s >= sub.interval_s;
+    if (!due) continue;
+    sub.last_delivery_moos_s = now;
+    if (previous) queue_fan_out_mail(*previous, msg, size, false);
+    previous = sub.client;
+  }
+  if (previous) queue_fan_out_mail(*previous, msg, size, true);
+}
 
 Message Database::snapshot(const Variable& var) const {
   // protocol.md 2.6 "NOTIFY S->C snapshot on REGISTER"; an unwritten variable (the `ALL` answer)
@@ -33,6 +52,11 @@ Message Database::snapshot(const Variable& var) const {
 
 bool Database::admit_mail(Client& client, std::size_t size) {
   if (client.overflowed) return false;
+  const bool sunk = client.async && client.sink;
+  if (sunk && client.sink_call != calls_) {  // the first mail of this call
+    client.sink_call = calls_;
+    client.pending_bytes = 0;
+  }
   if (client.pending_bytes + size > config_.max_pending_bytes) {
     client.overflowed = true;
     drops_.push_back(DropRequest{
@@ -41,7 +65,7 @@ bool Database::admit_mail(Client& client, std::size_t size) {
     return false;
   }
   client.pending_bytes += size;
-  if (client.async && !client.queued_for_flush) {
+  if (client.async && !sunk && !client.queued_for_flush) {
     client.queued_for_flush = true;
     async_with_mail_.push_back(&client);
   }
@@ -93,12 +117,13 @@ void Database::take_pending(Client& client, std::vector<Message>& reply) {
 void Database::flush_async_mail() {
   for (Client* client : async_with_mail_) {
     client->queued_for_flush = false;
-    client->pending_bytes = 0;  // the bound is per call, with a mail sink too
+    client->pending_bytes = 0;  // the bound is per call
     if (client->pending.empty()) continue;
     send_packet(client->id, std::move(client->pending));
     client->pending.clear();
   }
   async_with_mail_.clear();
+  ++calls_;
 }
 
 void Database::send_packet(ClientId to, std::vector<Message> messages) {

@@ -1,4 +1,4 @@
-// MOOSDB rule: NOTIFY, the store and the fan-out (docs/protocol.md 5.3).
+// MOOSDB rule: NOTIFY and the store (docs/protocol.md 5.3; the fan-out is in database_mail.cpp).
 // Contract in include/moos/database.hpp. Clients' NOTIFYs and the DB's own variables take
 // the same path, so subscribers cannot tell them apart.
 
@@ -47,6 +47,12 @@ void overwrite(std::string& to, const std::string& from) {
   }
 }
 
+/// overwrite() unless `to` holds `from` already (a writer's name, a community: mostly what the
+/// last write stored); comparing costs less than assigning.
+void overwrite_if_changed(std::string& to, const std::string& from) {
+  if (!same_text(to, from)) overwrite(to, from);
+}
+
 }  // namespace
 
 void Database::handle_notify(Client& client, Message&& msg, double now) {
@@ -80,7 +86,7 @@ void Database::handle_notify(Client& client, Message&& msg, double now) {
 const Database::PostedVariable* Database::find_posted(const Client& client,
                                                       const std::string& name) {
   for (const PostedVariable& entry : client.posted_cache)
-    if (entry.name == name) return &entry;
+    if (same_text(entry.name, name)) return &entry;
   return nullptr;
 }
 
@@ -142,10 +148,9 @@ void Database::store(Variable& var, const Message& msg, double now) {
   }
   value.time_moos_s = msg.time;
   value.db_write_moos_s = now;
-  // Mostly what the last write stored: comparing costs less than assigning.
-  if (value.writer != msg.source) overwrite(value.writer, msg.source);
-  if (value.writer_aux != msg.source_aux) overwrite(value.writer_aux, msg.source_aux);
-  if (value.community != msg.community) overwrite(value.community, msg.community);
+  overwrite_if_changed(value.writer, msg.source);
+  overwrite_if_changed(value.writer_aux, msg.source_aux);
+  overwrite_if_changed(value.community, msg.community);
   stored_bytes_ += value_bytes(value);
 
   WriteFrequency& f = var.frequency;
@@ -157,24 +162,6 @@ void Database::store(Variable& var, const Message& msg, double now) {
     f.window_start_moos_s = now;
     f.window_start_count = var.write_count;
   }
-}
-
-void Database::fan_out(Variable& var, Message&& msg, double now) {
-  // Steps 5-6: every subscriber whose interval expired, the publisher included; throttled
-  // updates are dropped, not delayed. A subscription that never delivered is due. Each due
-  // subscriber but the last gets a copy; the last one gets the message itself (a mail sink
-  // takes it apart instead of copying it).
-  const std::size_t size = msg.encoded_size();  // one size for every reader
-  Client* previous = nullptr;
-  for (auto& [subscriber, sub] : var.subscribers) {
-    const bool due = sub.interval_s <= 0.0 || !sub.last_delivery_moos_s ||
-                     now - *sub.last_delivery_moos_s >= sub.interval_s;
-    if (!due) continue;
-    sub.last_delivery_moos_s = now;
-    if (previous) queue_fan_out_mail(*previous, msg, size, false);
-    previous = sub.client;
-  }
-  if (previous) queue_fan_out_mail(*previous, msg, size, true);
 }
 
 Database::VarId Database::find_or_create(const std::string& name) {
@@ -196,13 +183,21 @@ std::size_t Database::value_bytes(const Value& value) {
 
 std::string Database::store_refusal(const Message& msg, bool with_value) const {
   // The most the write could add fits: no need to look the variable up (the usual case).
-  const std::size_t name_bytes = kVariableOverheadBytes + msg.key.size();
-  const std::size_t most_after =
-      name_bytes + (with_value ? msg.sval.size() + msg.source.size() + msg.source_aux.size() +
-                                     msg.community.size()
-                               : 0);
-  if (stored_bytes_ + most_after <= config_.max_stored_bytes) return {};
+  if (stored_bytes_ + most_stored_bytes(msg, with_value) <= config_.max_stored_bytes) return {};
+  return store_refusal_near_bound(msg, with_value);
+}
+
+std::size_t Database::most_stored_bytes(const Message& msg, bool with_value) {
+  return kVariableOverheadBytes + msg.key.size() +
+         (with_value ? msg.sval.size() + msg.source.size() + msg.source_aux.size() +
+                           msg.community.size()
+                     : 0);
+}
+
+std::string Database::store_refusal_near_bound(const Message& msg, bool with_value) const {
   // What the variable holds now, and would hold after the write.
+  const std::size_t name_bytes = kVariableOverheadBytes + msg.key.size();
+  const std::size_t most_after = most_stored_bytes(msg, with_value);
   const auto it = var_index_.find(msg.key);
   const Variable* var = it == var_index_.end() ? nullptr : &vars_[it->second];
   const std::size_t before = var ? name_bytes + (var->value ? value_bytes(*var->value) : 0) : 0;

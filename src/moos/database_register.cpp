@@ -11,6 +11,19 @@
 
 namespace moos {
 
+Database::Subscription& Database::Subscribers::operator[](ClientId id) {
+  const auto by_id = [](const Entry& e, ClientId key) { return e.first < key; };
+  auto it = std::lower_bound(entries_.begin(), entries_.end(), id, by_id);
+  if (it == entries_.end() || it->first != id) it = entries_.insert(it, Entry{id, Subscription{}});
+  return it->second;
+}
+
+void Database::Subscribers::erase(ClientId id) {
+  const auto by_id = [](const Entry& e, ClientId key) { return e.first < key; };
+  const auto it = std::lower_bound(entries_.begin(), entries_.end(), id, by_id);
+  if (it != entries_.end() && it->first == id) entries_.erase(it);
+}
+
 void Database::handle_register(ClientId id, const Message& msg, double now) {
   if (msg.key.empty()) return refuse(id, "REGISTER with an empty variable name refused");
   if (!std::isfinite(msg.dval) || msg.dval < 0.0)

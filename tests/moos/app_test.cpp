@@ -343,6 +343,44 @@ TEST_F(AppOnBus, SortMailByTimeFalseKeepsArrivalOrder_6_3) {
   EXPECT_EQ(app.mail_batches[0][0].dval, 3.0);
 }
 
+TEST_F(AppOnBus, FrameworkMailAnywhereInTheBatchIsRemovedAndTheRestKeepsItsOrder_7_1) {
+  AppSettings s = settings_for();
+  s.sort_mail_by_time = false;
+  start(s);
+  tester->notify("_async_timing", 0.0);
+  tester->notify("IN", 1.0);
+  tester->notify("APPCAST_REQ", std::string("node=alpha,app=pEcho,duration=1,key=k,thresh=any"));
+  tester->notify("IN", 2.0);
+  tester->notify("_async_timing", 0.0);
+  app.cycle();
+  tester->notify("APPCAST_REQ", std::string("node=alpha,app=pEcho,duration=1,key=k,thresh=any"));
+  app.cycle();  // framework mail alone: no on_new_mail
+  ASSERT_EQ(app.mail_batches.size(), 1u);
+  const auto& mail = app.mail_batches[0];
+  ASSERT_EQ(mail.size(), 2u);
+  EXPECT_EQ(mail[0].dval, 1.0);
+  EXPECT_EQ(mail[1].dval, 2.0);
+}
+
+TEST_F(AppOnBus, ACycleWithNothingToReportStillCountsTheAppcastsIteration_7_2) {
+  // A Community setting, no terminal, no request, no _ITER_LEN: nothing to report.
+  AppTraits traits{"pQuiet", 4.0};
+  traits.post_iteration_timing = false;
+  EchoApp quiet(traits);
+  AppSettings s = settings_for("pQuiet");
+  s.time_warp = bus.time_warp();
+  const auto comms = bus.connect("pQuiet");
+  ASSERT_TRUE(quiet.start(*comms, s));
+  quiet.run_for(2.0);
+  EXPECT_EQ(count("APPCAST"), 1u);  // iteration 1 only
+  EXPECT_GT(quiet.iteration(), 2u);
+  EXPECT_EQ(quiet.appcast().iteration(), quiet.iteration());
+  // A request is looked at again at once.
+  tester->notify("APPCAST_REQ", std::string("node=alpha,app=pQuiet,duration=3,key=k,thresh=any"));
+  quiet.run_for(1.0);
+  EXPECT_GT(count("APPCAST"), 1u);
+}
+
 TEST_F(AppOnBus, StatusIsPostedAtOnceThenEveryTwoMoosSeconds_7_1) {
   start();
   app.run_for(5.0);

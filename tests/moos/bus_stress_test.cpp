@@ -75,5 +75,46 @@ TEST(BusStress, PostersOnTheirOwnThreadsReachASteadySubscriberInOrderPerSource) 
   reader->set_on_mail({});
 }
 
+TEST(BusStress, ThreadsSharingOneClientPostWholeMessagesInOrderPerThread) {
+  // One client's notify() from several threads at once: each posting is built whole (one of
+  // them in the client's kept message, the others in their own) and delivered once, in order.
+  ManualClock clock{1000.0};
+  InProcessBus bus{clock};
+  auto reader = bus.connect("pReader");
+  auto shared = bus.connect("pShared");
+  ASSERT_TRUE(reader && shared);
+  ASSERT_TRUE(reader->register_wildcard("SHARED_*"));
+  std::vector<std::thread> threads;
+  for (int t = 0; t < kPosters; ++t) {
+    threads.emplace_back([&, t] {
+      const std::string var = "SHARED_" + std::to_string(t);
+      for (int i = 0; i < kPostsPerThread; ++i)
+        shared->notify(var, std::to_string(t) + ":" + std::to_string(i) + std::string(40, '.'));
+    });
+  }
+  std::vector<Message> mail;
+  std::vector<Message> batch;  // handed back at each fetch, as an app does
+  std::atomic<bool> posting{true};
+  std::thread reader_thread([&] {
+    while (posting) {
+      reader->fetch_into(batch);
+      mail.insert(mail.end(), batch.begin(), batch.end());
+    }
+  });
+  for (auto& t : threads) t.join();
+  posting = false;
+  reader_thread.join();
+  for (auto& m : reader->fetch()) mail.push_back(std::move(m));
+
+  ASSERT_EQ(mail.size(), static_cast<std::size_t>(kPosters) * kPostsPerThread);
+  std::map<std::string, int> next;
+  for (const Message& m : mail) {
+    EXPECT_EQ(m.source, "pShared");
+    const std::string thread = m.key.substr(std::string("SHARED_").size());
+    EXPECT_EQ(m.sval, thread + ":" + std::to_string(next[thread]) + std::string(40, '.'));
+    ++next[thread];
+  }
+}
+
 }  // namespace
 }  // namespace moos

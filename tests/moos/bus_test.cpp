@@ -350,6 +350,49 @@ TEST_F(BusTest, OnMailCallbackWakesTheSubscriber_4_5) {
   EXPECT_EQ(woken, 1);
 }
 
+TEST_F(BusTest, AnOnMailCallbackSetOrClearedBetweenPostingsCountsFromTheNext_4_5) {
+  b->register_variable("X");
+  a->notify("X", 1.0);  // b has no callback yet: its mail waits unannounced
+  int woken = 0;
+  b->set_on_mail([&] { ++woken; });
+  a->notify("X", 2.0);  // mail was waiting already; the callback is still called
+  EXPECT_EQ(woken, 1);
+  b->set_on_mail({});
+  a->notify("X", 3.0);
+  EXPECT_EQ(woken, 1);
+  b->set_on_mail([&] { ++woken; });
+  a->notify("X", 4.0);
+  EXPECT_EQ(woken, 2);
+  EXPECT_EQ(b->fetch().size(), 4u);
+}
+
+TEST_F(BusTest, APostingFromAnOnMailCallbackDuringAPostingIsWhole_4_5) {
+  // a hears its own PING while posting it, and posts PONG from inside that posting.
+  a->register_variable("PING");
+  b->register_variable("PING");
+  b->register_variable("PONG");
+  bool ponged = false;
+  a->set_on_mail([&] {
+    if (ponged) return;
+    ponged = true;
+    a->notify("PONG", std::string("from the callback"), std::nullopt, "aux");
+  });
+  ASSERT_TRUE(a->notify("PING", std::string("first")));
+  ASSERT_TRUE(a->notify("PING", std::string("second")));
+  const auto mail = b->fetch();
+  ASSERT_EQ(mail.size(), 3u);
+  EXPECT_EQ(mail[0].key, "PING");
+  EXPECT_EQ(mail[0].sval, "first");
+  EXPECT_EQ(mail[1].key, "PONG");
+  EXPECT_EQ(mail[1].sval, "from the callback");
+  EXPECT_EQ(mail[1].source_aux, "aux");
+  EXPECT_EQ(mail[2].key, "PING");
+  EXPECT_EQ(mail[2].sval, "second");
+  EXPECT_EQ(mail[2].source_aux, "");
+  for (const Message& m : mail) EXPECT_EQ(m.source, "pA");
+  a->set_on_mail({});
+}
+
 TEST_F(BusTest, PostingsHistoryAndLatest) {
   a->notify("X", 1.0);
   b->notify("Y", std::string("y"));

@@ -135,6 +135,56 @@ TEST(CommsMessages, NotifyFieldsFollowLibMoosDefaults_2_2) {
   for (const auto& m : c.sent) EXPECT_EQ(m.community, "");  // libMOOS leaves it empty
 }
 
+/// A transport that records each message, then leaves something else in every field of it, as
+/// Comms::transmit may (the in-process bus leaves the storage of the mail it wrote over).
+class LitteringComms final : public Comms {
+ public:
+  LitteringComms() : Comms("pTest") {}
+  bool is_connected() const override { return true; }
+  std::uint64_t connection_count() const override { return 1; }
+  std::string community() const override { return "alpha"; }
+  Clock& clock() const override { return clock_; }
+  double time_warp() const override { return 1.0; }
+  double skew_s() const override { return 0.0; }
+  void fetch_into(std::vector<Message>& mail) override { mail.clear(); }
+
+  std::vector<Message> sent;
+
+ protected:
+  bool transmit(Message&& msg) override {
+    sent.push_back(msg);
+    msg.id = 77;
+    msg.type = msg_type::kCommand;
+    msg.data_type = data_type::kNotSet;
+    msg.source = std::string(40, 's');
+    msg.source_aux = "left";
+    msg.community = "left";
+    msg.key = "LEFT";
+    msg.time = msg.dval = msg.dval2 = 42.0;
+    msg.sval = std::string(100, 'v');
+    return true;
+  }
+
+ private:
+  mutable ManualClock clock_{1700000000.0};
+};
+
+TEST(CommsMessages, EachNotifyIsBuiltWholeWhateverTheTransportLeftOfTheLast) {
+  LitteringComms c;
+  const double now = 1700000000.0;
+  c.notify("S", std::string("text"), 5.0, "aux");
+  c.notify("D", 1.5);
+  c.notify_binary("B", std::string("\0\1", 2));
+  c.notify("S", std::string("again"));
+  Message with_aux = make_string_notify("S", "text", "pTest", 5.0);
+  with_aux.source_aux = "aux";
+  const std::vector<Message> expected = {
+      with_aux, make_double_notify("D", 1.5, "pTest", now),
+      make_binary_notify("B", std::string("\0\1", 2), "pTest", now),
+      make_string_notify("S", "again", "pTest", now)};
+  EXPECT_EQ(c.sent, expected);
+}
+
 TEST(CommsBook, RegistrationsAreRememberedWhileDisconnectedAndReplayedInOrder_1_9) {
   RecordingComms c;
   c.connected = false;

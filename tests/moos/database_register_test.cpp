@@ -68,6 +68,24 @@ TEST_F(DatabaseTest, DisconnectRemovesSubscriptionsAndUndeliveredMail_1_9) {
   EXPECT_EQ(replies[0].size(), 1u);  // just the NULL: old mail and subscription are gone
 }
 
+TEST_F(DatabaseTest, FanOutFollowsConnectionOrderWhateverTheOrderOfTheRegistrations_5_3) {
+  constexpr ClientId kWriter = 4;
+  connect(kA, "a", true);
+  connect(kB, "b", true);
+  connect(kC, "c", true);
+  connect(kWriter, "writer", true);
+  send(kC, {registration("X", 0, "c")});
+  send(kA, {registration("X", 0, "a")});
+  send(kB, {registration("X", 0, "b")});
+  send(kB, {unregistration("X", "b")});
+  send(kB, {registration("X", 0, "b")});  // back in its place, not at the end
+  send(kA, {registration("X", 0, "a")});  // registering again replaces, adds no second one
+  const auto out = send(kWriter, {notify_double("X", 1, "writer")});
+  std::vector<ClientId> order;
+  for (const auto& packet : out) order.push_back(packet.to);
+  EXPECT_EQ(order, (std::vector<ClientId>{kA, kB, kC}));
+}
+
 // ---------------------------------------------------------------------------------------
 // Wildcards (protocol.md 5.5)
 

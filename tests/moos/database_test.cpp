@@ -293,6 +293,22 @@ TEST_F(DatabaseTest, ThrottledUpdatesAreDroppedNotDelayed_5_3) {
   EXPECT_EQ(received, (std::vector<double>{0, 4, 8}));
 }
 
+TEST_F(DatabaseTest, PacketsOfADisconnectedSenderAreIgnoredEvenRightAfterItsLast_1_9) {
+  connect(kA, "sender", true);
+  connect(kB, "reader", true);
+  send(kB, {registration("X", 0, "reader")});
+  send(kA, {notify_double("X", 1, "sender")});  // the latest sender
+  db_.disconnect(kA, kT0);
+  db_.take_output();
+  EXPECT_TRUE(send(kA, {notify_double("X", 2, "sender")}).empty());
+  EXPECT_EQ(db_.latest("X")->dval, 1);
+  connect(kA, "newcomer", true);  // the same id, a new connection
+  const auto mail = to(send(kA, {notify_double("X", 3, "")}), kB);
+  ASSERT_EQ(mail.size(), 1u);
+  EXPECT_EQ(mail[0][0].source, "newcomer");
+  EXPECT_EQ(mail[0][0].dval, 3);
+}
+
 TEST_F(DatabaseTest, EmptySourceIsReplacedByTheClientName) {
   connect(kA, "async", true);
   send(kA, {registration("X", 0, "async")});
