@@ -40,6 +40,21 @@ namespace {
 
 using test::hex_bytes;
 
+/// What a transport may leave in a message it was given (Comms::transmit may leave anything;
+/// the in-process bus leaves the storage of the mail it wrote over): something else in every
+/// field.
+void leave_litter(Message& msg) {
+  msg.id = 77;
+  msg.type = msg_type::kCommand;
+  msg.data_type = data_type::kNotSet;
+  msg.source = std::string(40, 's');
+  msg.source_aux = "left";
+  msg.community = "left";
+  msg.key = "LEFT";
+  msg.time = msg.dval = msg.dval2 = 42.0;
+  msg.sval = std::string(100, 'v');
+}
+
 /// A Comms that records what it would send, with a settable connection state.
 class RecordingComms final : public Comms {
  public:
@@ -54,12 +69,19 @@ class RecordingComms final : public Comms {
   using Comms::replay_messages;
 
   bool connected = true;
+  /// Leave something else in every field of each message sent (see leave_litter).
+  bool litter = false;
   std::vector<Message> sent;
 
  protected:
   bool transmit(Message&& msg) override {
     if (!connected) return false;
-    sent.push_back(std::move(msg));
+    if (!litter) {
+      sent.push_back(std::move(msg));
+      return true;
+    }
+    sent.push_back(msg);
+    leave_litter(msg);
     return true;
   }
 
@@ -135,42 +157,9 @@ TEST(CommsMessages, NotifyFieldsFollowLibMoosDefaults_2_2) {
   for (const auto& m : c.sent) EXPECT_EQ(m.community, "");  // libMOOS leaves it empty
 }
 
-/// A transport that records each message, then leaves something else in every field of it, as
-/// Comms::transmit may (the in-process bus leaves the storage of the mail it wrote over).
-class LitteringComms final : public Comms {
- public:
-  LitteringComms() : Comms("pTest") {}
-  bool is_connected() const override { return true; }
-  std::uint64_t connection_count() const override { return 1; }
-  std::string community() const override { return "alpha"; }
-  Clock& clock() const override { return clock_; }
-  double time_warp() const override { return 1.0; }
-  double skew_s() const override { return 0.0; }
-  void fetch_into(std::vector<Message>& mail) override { mail.clear(); }
-
-  std::vector<Message> sent;
-
- protected:
-  bool transmit(Message&& msg) override {
-    sent.push_back(msg);
-    msg.id = 77;
-    msg.type = msg_type::kCommand;
-    msg.data_type = data_type::kNotSet;
-    msg.source = std::string(40, 's');
-    msg.source_aux = "left";
-    msg.community = "left";
-    msg.key = "LEFT";
-    msg.time = msg.dval = msg.dval2 = 42.0;
-    msg.sval = std::string(100, 'v');
-    return true;
-  }
-
- private:
-  mutable ManualClock clock_{1700000000.0};
-};
-
 TEST(CommsMessages, EachNotifyIsBuiltWholeWhateverTheTransportLeftOfTheLast) {
-  LitteringComms c;
+  RecordingComms c;
+  c.litter = true;
   const double now = 1700000000.0;
   c.notify("S", std::string("text"), 5.0, "aux");
   c.notify("D", 1.5);
