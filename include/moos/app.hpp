@@ -232,6 +232,7 @@ class MoosApp {
   void post_status_if_due();
   /// False when post_report() would only set the appcast's iteration: no terminal, no appcast
   /// request, no new configuration warning, no _ITER_LEN, a fixed node name, past iteration 1.
+  /// A condition added to post_report() must be added here too (this stays a superset).
   bool report_may_be_due() const;
   void post_report(double iterate_start_moos_s);
   void schedule_next(double cycle_start_moos_s);
