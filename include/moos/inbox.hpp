@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "base/same_text.hpp"
 #include "moos/message.hpp"
 
 namespace moos {
@@ -123,7 +124,7 @@ class Inbox {
   /// copy_string() unless `to` holds `from` already: a key, a source name or a community is
   /// mostly what the kept message held, and comparing costs less than assigning.
   static void copy_if_changed(std::string& to, const std::string& from) {
-    if (!same_text(to, from)) copy_string(to, from);
+    if (!base::same_text(to, from)) copy_string(to, from);
   }
   static void move_string(std::string& to, std::string& from) {
     if (from.empty()) {

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 
+#include "base/same_text.hpp"
 #include "base/text.hpp"
 #include "moos/codec.hpp"
 #include "moos/inbox.hpp"
@@ -166,7 +167,7 @@ bool Comms::post_and_record(Message&& msg) {
 bool Comms::published_recently(const std::string& key) const {
   for (const auto& recent : recent_published_) {
     const std::string* name = recent.load(std::memory_order_acquire);
-    if (name && same_text(*name, key)) return true;
+    if (name && base::same_text(*name, key)) return true;
   }
   return false;
 }
@@ -217,14 +218,14 @@ void Comms::fill_notify(Message& m, char data_type, const std::string& var, doub
   m.id = kUnsetId;
   m.type = msg_type::kNotify;
   m.data_type = data_type;
-  if (!same_text(m.source, name_)) m.source = name_;
+  if (!base::same_text(m.source, name_)) m.source = name_;
   if (source_aux.empty()) {
     m.source_aux.clear();
   } else {
     m.source_aux = source_aux;
   }
   m.community.clear();
-  if (!same_text(m.key, var)) m.key = var;
+  if (!base::same_text(m.key, var)) m.key = var;
   m.time = time;
   m.dval = dval;
   m.dval2 = kUnsetDouble;

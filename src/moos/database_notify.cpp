@@ -5,6 +5,7 @@
 #include <string>
 #include <utility>
 
+#include "base/same_text.hpp"
 #include "base/text.hpp"
 #include "moos/database.hpp"
 
@@ -50,7 +51,7 @@ void overwrite(std::string& to, const std::string& from) {
 /// overwrite() unless `to` holds `from` already (a writer's name, a community: mostly what the
 /// last write stored); comparing costs less than assigning.
 void overwrite_if_changed(std::string& to, const std::string& from) {
-  if (!same_text(to, from)) overwrite(to, from);
+  if (!base::same_text(to, from)) overwrite(to, from);
 }
 
 }  // namespace
@@ -86,7 +87,7 @@ void Database::handle_notify(Client& client, Message&& msg, double now) {
 const Database::PostedVariable* Database::find_posted(const Client& client,
                                                       const std::string& name) {
   for (const PostedVariable& entry : client.posted_cache)
-    if (same_text(entry.name, name)) return &entry;
+    if (base::same_text(entry.name, name)) return &entry;
   return nullptr;
 }
 

@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "base/fmt_fixed.hpp"
+#include "base/same_text.hpp"
 #include "base/text_appender.hpp"
 #include "fields.hpp"
 #include "hazard/messages/node_report_fields.hpp"
@@ -318,16 +319,9 @@ template <int Decimals, std::size_t N>
   return base::write_fmt_fixed<Decimals>(p + N - 1, value, read_back);
 }
 
-// A name or type (mostly 3 to 16 bytes) copied or compared by two overlapping fixed-size
-// loads, not a memcpy or memcmp call (the call and its dispatch were more than the bytes);
-// longer texts by the call.
-template <typename Word>
-Word word_at(const char* p) {
-  Word w;
-  std::memcpy(&w, p, sizeof w);
-  return w;
-}
-
+// A name or type (mostly 3 to 16 bytes) copied by two overlapping fixed-size loads, not a
+// memcpy call (the call and its dispatch were more than the bytes); longer texts by the call.
+// They compare by base::same_text.
 template <typename Word>
 void copy_ends(char* to, const char* from, std::size_t n) {
   std::memcpy(to, from, sizeof(Word));
@@ -349,21 +343,6 @@ void copy_ends(char* to, const char* from, std::size_t n) {
     p[n - 1] = s[n - 1];
   }
   return p + n;
-}
-
-template <typename Word>
-bool same_ends(const char* a, const char* b, std::size_t n) {
-  return word_at<Word>(a) == word_at<Word>(b) &&
-         word_at<Word>(a + n - sizeof(Word)) == word_at<Word>(b + n - sizeof(Word));
-}
-
-[[gnu::always_inline]] inline bool same_text(std::string_view a, std::string_view b) {
-  const std::size_t n = a.size();
-  if (n != b.size()) return false;
-  if (n > 16) return std::memcmp(a.data(), b.data(), n) == 0;
-  if (n >= 8) return same_ends<std::uint64_t>(a.data(), b.data(), n);
-  if (n >= 4) return same_ends<std::uint32_t>(a.data(), b.data(), n);
-  return n == 0 || (a[0] == b[0] && a[n / 2] == b[n / 2] && a[n - 1] == b[n - 1]);
 }
 
 // The usual report's text at `out` (room for kDirectTextBytes), the same bytes
@@ -402,16 +381,16 @@ bool direct_in_range(const DirectNumbers& n) {
 // Whether a report kept from a direct writing has `r`'s name and type (an empty type is none):
 // then they passed write_direct's checks, and assign_direct need not copy them.
 bool same_name_and_type(const NodeReport& kept, const NodeReport& r) {
-  if (!same_text(kept.name, r.name)) return false;
+  if (!base::same_text(kept.name, r.name)) return false;
   if (!r.type || r.type->empty()) return !kept.type;
-  return kept.type && same_text(*kept.type, *r.type);
+  return kept.type && base::same_text(*kept.type, *r.type);
 }
 
 // assign_as_written for a direct writing: the name and type are the report's own bytes
 // (`same_strings`: r has them already).
 void assign_direct(const NodeReport& from, const DirectNumbers& n, NodeReport& r,
                    bool same_strings) {
-  if (!same_strings && !same_text(r.name, from.name)) r.name.assign(from.name);
+  if (!same_strings && !base::same_text(r.name, from.name)) r.name.assign(from.name);
   r.x_m = n.x;
   r.y_m = n.y;
   r.speed_mps = n.spd;
@@ -425,7 +404,7 @@ void assign_direct(const NodeReport& from, const DirectNumbers& n, NodeReport& r
   if (same_strings) return;
   if (from.type && !from.type->empty()) {
     if (!r.type) r.type.emplace();
-    if (!same_text(*r.type, *from.type)) r.type->assign(*from.type);
+    if (!base::same_text(*r.type, *from.type)) r.type->assign(*from.type);
   } else {
     r.type.reset();
   }

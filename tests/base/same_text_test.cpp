@@ -1,12 +1,13 @@
-// moos::same_text, the comparison of names and keys that the bus and the store make for every
-// message: it must agree with std::string's == for every length and every differing byte.
+// base::same_text, the comparison of names and keys that the bus, the store and the node report
+// writer make for every message: it must agree with std::string's == for every length and
+// every differing byte.
 #include <gtest/gtest.h>
 
 #include <string>
 
-#include "moos/message.hpp"
+#include "base/same_text.hpp"
 
-namespace moos {
+namespace base {
 namespace {
 
 std::string text_of(std::size_t n) {
@@ -40,4 +41,4 @@ TEST(SameText, ComparesOnlyTheTextsBytes) {
 }
 
 }  // namespace
-}  // namespace moos
+}  // namespace base
