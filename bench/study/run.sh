@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # hazard_study's benchmark and the study of docs/study.md:
-#   1. throughput: missions per CPU-minute on the Jake mission as written (user + system time of
-#      one hazard_study process running SEEDS missions);
+#   1. throughput: missions per CPU-minute on the Jake mission as written (throughput.py: user +
+#      system time of nine hazard_study processes of 20 missions each; slowest, middle, fastest);
 #   2. the study: the Jake mission over seeds 1..N for each setting below (sensor widths, and each
 #      costly sensor effect switched off; docs/effects.md), fanned out with GNU parallel in
 #      chunks of 50 seeds, CPU per mission measured per chunk; then tools/study_summary.py
@@ -21,10 +21,9 @@ mission="$repo/missions/jake/jake.moos"
 out="$repo/runs/study"
 mkdir -p "$out"
 
-# 1. Throughput.
-/usr/bin/time -f "%U %S" -o "$out/throughput.time" "$study" "$mission" --seeds=1..50 > "$out/throughput.jsonl"
-awk '{ cpu = $1 + $2; printf "throughput: 50 Jake missions in %.2f CPU s = %.0f missions per CPU-minute\n", cpu, 50 * 60 / cpu }' \
-  "$out/throughput.time"
+# 1. Throughput: the slowest, middle and fastest of nine runs of 20 missions.
+python3 "$here/throughput.py" --runs=9 --seeds=20 --build="${BUILD_DIR:-$repo/build/release}" \
+  | tee "$out/throughput.txt"
 
 # 2. The settings: a name (file-safe) and its hazard_study options.
 declare -A SET=(
