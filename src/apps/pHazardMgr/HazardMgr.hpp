@@ -105,7 +105,14 @@ class HazardMgr final : public mission_app::MissionApp {
   void post_report(double now_s);
   std::string object_table() const;
 
+  /// The suffixed variables of the contract (mail_variable), named once at start-up: every
+  /// message is compared with them.
+  struct MailNames {
+    std::string config_ack, detection_report, hazard_report, handover, hazardset_request;
+  };
+
   AppConfig app_;
+  MailNames mail_names_;
   mission::ManagerConfig config_;
   std::optional<mission::HazardManager> manager_;
   std::optional<glm::dvec2> last_position_m_;
@@ -119,6 +126,9 @@ class HazardMgr final : public mission_app::MissionApp {
   std::optional<std::string> applied_mission_params_;
   double last_mail_time_s_ = 0.0;
   double last_pose_time_s_ = 0.0;
+  /// What tick() produced this iteration: one Outputs kept for every tick, not one built and
+  /// freed four times a second.
+  mission::Outputs tick_out_;
 };
 
 }  // namespace phazard_mgr

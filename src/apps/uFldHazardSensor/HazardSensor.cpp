@@ -128,6 +128,7 @@ std::string HazardSensor::build_report() {
 
 void HazardSensor::publish(hazard::TimedOutputs timed) {
   hazard::Outputs& out = timed.outputs;
+  if (out.empty()) return;  // most steps
   const double now_s = timed.time_s;
   for (hazard::Posting& p : out.postings) {
     write_verbose(now_s, p.variable, p.value);
