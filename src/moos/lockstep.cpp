@@ -25,9 +25,11 @@ void Lockstep::set_moos_time(double moos_s) {
 double Lockstep::step() {
   if (apps_.empty()) return moos_time();
   set_moos_time(next_due_moos_s());
+  // Every app reads the bus clock, which stands still until the next step: read once.
+  const double now = moos_time();
   // cycle_if_due applies the app's own tolerance, so apps on one grid cycle together.
-  for (MoosApp* app : apps_) app->cycle_if_due();
-  return moos_time();
+  for (MoosApp* app : apps_) app->cycle_if_due(now);
+  return now;
 }
 
 bool Lockstep::run_until(double end_moos_s, const std::function<bool()>& stop) {
