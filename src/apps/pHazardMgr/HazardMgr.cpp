@@ -114,20 +114,23 @@ void HazardMgr::on_new_mail(const std::vector<moos::Message>& mail) {
     // earlier than mail already handled (the library's clocks run forward).
     const double t = std::max(last_mail_time_s_, std::min(m.time, cycle_s));
     last_mail_time_s_ = t;
-    handle(m, t);
+    // Node reports are most of the mail: read where they lie, not copied, and without the
+    // text handle() makes of the rest.
+    if (m.is_string() && base::same_text(m.key, app_.node_report_var)) {
+      on_node_report(m.sval, t);
+    } else {
+      handle(m, t);
+    }
   }
 }
 
 void HazardMgr::handle(const moos::Message& m, double time_s) {
   const auto is = [&](std::string_view name) { return base::same_text(m.key, name); };
-  // Node reports are most of the mail: read where they lie, not copied.
-  const bool node_report = is(app_.node_report_var);
-  if (node_report && m.is_string()) return on_node_report(m.sval, time_s);
   const std::string text = mission_app::mail_text(m);
   auto warn_parse = [&](const std::string& error) {
     report_run_warning(m.key + " ignored: " + error);
   };
-  if (node_report) {
+  if (is(app_.node_report_var)) {  // a double: on_new_mail reads the strings itself
     on_node_report(text, time_s);
   } else if (is(mail_names_.config_ack)) {
     auto ack = hazard::parse_config_ack(text);
@@ -249,7 +252,7 @@ void HazardMgr::on_iterate() {
   const double now_s = std::max(cycle_time(), last_mail_time_s_);
   tick_out_.clear();
   manager_->tick(now_s, tick_out_);
-  publish(tick_out_);
+  if (!tick_out_.empty()) publish(tick_out_);  // nearly every tick is quiet
   if (report_requested_s_ && report_ready(now_s)) post_report(now_s);
 }
 

@@ -96,6 +96,7 @@ class HazardMgr final : public mission_app::MissionApp {
  private:
   /// Applies one of the app's own parameters; nullopt if the key is not one of them.
   std::optional<std::string> apply_app_param(const moos::ConfigLine& line);
+  /// Any mail but a node report's text (on_new_mail hands those to on_node_report).
   void handle(const moos::Message& m, double time_s);
   void on_node_report(const std::string& text, double time_s);
   void on_handover(const std::string& text, double time_s);

@@ -126,7 +126,7 @@ std::string HazardSensor::build_report() {
   return hazard::format_report(hazard::collect_report_data(driver_->engine()));
 }
 
-void HazardSensor::publish(hazard::TimedOutputs timed) {
+void HazardSensor::publish(hazard::TimedOutputs&& timed) {
   hazard::Outputs& out = timed.outputs;
   if (out.empty()) return;  // most steps
   const double now_s = timed.time_s;
