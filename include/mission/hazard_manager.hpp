@@ -122,6 +122,9 @@ class HazardManager {
 
   /// Periodic work: config request until acked, sensor requests, resolving finished passes.
   Outputs tick(double now_s);
+  /// The same, appended to `out`: a caller that ticks every cycle keeps one Outputs (cleared
+  /// between ticks) instead of building and freeing one per tick.
+  void tick(double now_s, Outputs& out);
   /// UHZ_CONFIG_ACK(_<V>): acks for another vehicle are ignored with a warning.
   Outputs on_config_ack(const hazard::ConfigAck& ack, double now_s);
   /// The vehicle's own pose (its NODE_REPORT or navigation). It posts nothing: the passes it

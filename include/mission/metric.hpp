@@ -100,6 +100,11 @@ class HazardMetric {
   Outputs start(double now_s);
   /// Posts UHZ_MISSION_PARAMS when `iteration` is a multiple of 50 (the application's count).
   Outputs iterate(long iteration, double now_s);
+  /// Whether iterate(`iteration`, ...) posts anything: the other iterations need build no
+  /// Outputs (an application iterates four times a second).
+  static bool iterate_posts(long iteration) {
+    return iteration % kMissionParamsEveryIterations == 0;
+  }
   /// HAZARD_SEARCH_START (any value).
   Outputs on_search_start(double now_s);
   /// HAZARDSET_REPORT.

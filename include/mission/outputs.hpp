@@ -29,6 +29,16 @@ struct Outputs {
   }
   /// Appends everything `other` holds (keeps the order).
   void append(Outputs other);
+  bool empty() const {
+    return postings.empty() && events.empty() && run_warnings.empty() && config_warnings.empty();
+  }
+  /// Empties it, keeping the vectors' storage (a caller that fills one Outputs every cycle).
+  void clear() {
+    postings.clear();
+    events.clear();
+    run_warnings.clear();
+    config_warnings.clear();
+  }
 };
 
 }  // namespace mission

@@ -144,11 +144,14 @@ class MoosApp {
   /// APPCAST_REQ, records the start time and calls on_start_up(); returns its result.
   bool start(Comms& comms, AppSettings settings);
   /// One main-loop pass now (see the contract above).
-  void cycle();
+  void cycle() { cycle_at(moos_time()); }
   /// MOOS time at which the next cycle is due (later while the app is quiet, IdleAppTick).
   double next_cycle_due_moos_s() const { return due_moos_s(); }
   /// Runs a cycle if it is due; true if it ran.
-  bool cycle_if_due();
+  bool cycle_if_due() { return cycle_if_due(moos_time()); }
+  /// The same for a driver that has just read the time itself (Lockstep, which sets the clock
+  /// and cycles several apps at one instant): `now_moos_s` must be comms().moos_time().
+  bool cycle_if_due(double now_moos_s);
   /// Sleeps on the comms clock from cycle to cycle until `moos_s` MOOS seconds have passed.
   void run_for(double moos_s);
   /// The real main loop: cycles until request_stop() or `external_stop` becomes true.
@@ -221,7 +224,15 @@ class MoosApp {
     AppCastRequest request;
   };
 
+  /// One cycle (the contract's steps) at `now`, comms().moos_time().
+  void cycle_at(double now);
+  /// Sorts the cycle's mail, takes the framework's and hands the rest to on_new_mail().
+  void handle_mail();
   void handle_framework_mail(std::vector<Message>& mail);
+  /// Takes the framework's messages from `first` (one of them) on.
+  void remove_framework_mail(std::vector<Message>& mail, std::vector<Message>::iterator first);
+  /// CycleFlags::report_every_cycle from the traits, settings, terminal and requests.
+  void update_report_every_cycle();
   /// A standing run warning with the count of mail the comms dropped unread.
   void report_dropped_mail();
   /// A standing run warning with the count of postings the comms refused (full outbox, too
@@ -242,8 +253,11 @@ class MoosApp {
   void promise_next_fetch();
   // IdleAppTick (app_idle.cpp).
   /// When the next cycle is due: the next AppTick slot, or while quiet and without mail the
-  /// first slot at or after idle_resume_moos_s_.
-  double due_moos_s() const;
+  /// first slot at or after idle_resume_moos_s_ (idle_due_moos_s).
+  double due_moos_s() const {
+    return idle_resume_moos_s_ ? idle_due_moos_s() : next_due_moos_s_;
+  }
+  double idle_due_moos_s() const;
   /// The first slot of the AppTick grid (next_due_moos_s_ + k / AppTick) at or after `t`.
   double grid_slot_at_or_after(double t) const;
   /// After a cycle: until when the following cycles may be skipped; only with IdleAppTick.
@@ -259,6 +273,8 @@ class MoosApp {
   void sleep_until_due(Clock& clock, double real_s);
   bool term_reporting_enabled() const;
 
+  /// The variable of appcast requests (protocol.md 7.2): the framework's mail.
+  static constexpr std::string_view kAppCastRequestKey = "APPCAST_REQ";
   /// A cycle this close to its due time (as a fraction of the period) counts as on time; MOOS
   /// times near 1e12 (epoch x warp 400) carry only ~1e-4 s of resolution.
   static constexpr double kScheduleToleranceFraction = 1e-3;
@@ -270,8 +286,39 @@ class MoosApp {
   /// idle sleep is woken by mail and by request_stop() instead).
   static constexpr double kMaxLoopSleep_real_s = 0.1;
 
-  const AppTraits traits_;
+  /// The settings and traits a cycle reads, copied at start() next to the cycle's state.
+  struct CycleFlags {
+    bool sort_mail_by_time = true;       ///< settings_.sort_mail_by_time
+    bool post_status = true;             ///< settings_.post_status
+    bool post_iteration_timing = true;   ///< traits_.post_iteration_timing
+    bool idle_app_tick = false;          ///< settings_.idle_app_tick_hz is set
+    bool takes_fetch_promises = false;   ///< comms_->takes_fetch_promises()
+    /// post_report() may do more than count the iteration in every cycle: iteration timing, a
+    /// node name from the connection, a terminal, or an appcast request once received (requests
+    /// are kept). Part of report_may_be_due().
+    bool report_every_cycle = true;
+    bool new_config_warning = false;     ///< a configuration warning since the last appcast
+  };
+
+  // What every cycle reads and writes, together at the front (two cache lines): a lockstep
+  // cycles several apps between two cycles of one, and their work evicts the rest of this object.
   Comms* comms_ = nullptr;
+  double curr_time_ = 0.0;  // MOOS time of the current cycle (libMOOS m_curr_time)
+  double next_due_moos_s_ = 0.0;
+  double period_moos_s_ = 0.0;  ///< 1 / AppTick, set at start()
+  /// How early a cycle may come and still be due (kScheduleToleranceFraction / AppTick).
+  double due_tolerance_moos_s_ = 0.0;
+  std::optional<double> idle_resume_moos_s_;  ///< IdleAppTick: skip cycles before it, unless mail
+  std::uint64_t iteration_ = 0;
+  std::uint64_t seen_connections_ = 0;
+  std::uint64_t reported_mail_dropped_ = 0;  ///< comms_->mail_dropped() when last reported
+  std::uint64_t reported_postings_dropped_ = 0;  ///< comms_->postings_dropped() when last reported
+  /// The cycle's mail, kept between cycles: the next fetch hands its messages back to the comms
+  /// for their storage (Comms::fetch_into).
+  std::vector<Message> mail_;
+  CycleFlags flags_;
+
+  const AppTraits traits_;
   AppSettings settings_;
   // The framework's own variable names, built once at start() (posted every cycle).
   std::string iter_gap_var_, iter_len_var_, status_var_;
@@ -280,27 +327,16 @@ class MoosApp {
   std::atomic<bool> stop_{false};
 
   double start_time_ = 0.0;
-  double curr_time_ = 0.0;  // MOOS time of the current cycle (libMOOS m_curr_time)
-  double next_due_moos_s_ = 0.0;
-  std::optional<double> idle_resume_moos_s_;  ///< IdleAppTick: skip cycles before it, unless mail
   MailSignal mail_signal_;
   std::atomic<double> first_mail_moos_s_{0.0};  ///< arrival of the first mail since the fetch
-  std::uint64_t iteration_ = 0;
-  std::uint64_t seen_connections_ = 0;
-  std::uint64_t reported_mail_dropped_ = 0;  ///< comms_->mail_dropped() when last reported
   std::string dropped_mail_warning_;          ///< the standing warning about it, if any
-  std::uint64_t reported_postings_dropped_ = 0;  ///< comms_->postings_dropped() when last reported
   std::string dropped_postings_warning_;         ///< the standing warning about it, if any
   std::optional<double> last_status_moos_s_;
-  std::optional<double> last_iterate_start_moos_s_;
+  std::optional<double> last_iterate_start_moos_s_;  ///< only with post_iteration_timing
   std::optional<double> last_term_report_moos_s_;
   std::optional<double> last_appcast_moos_s_;
   bool new_run_warning_ = false;
-  bool new_config_warning_ = false;
   std::map<std::string, Request> requests_;  // by requester key
-  /// The cycle's mail, kept between cycles: the next fetch hands its messages back to the comms
-  /// for their storage (Comms::fetch_into).
-  std::vector<Message> mail_;
 };
 
 /// libMOOS's pause after each packet sent, in ms per unit of time warp

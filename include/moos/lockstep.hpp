@@ -47,6 +47,8 @@ class Lockstep {
 
  private:
   void set_moos_time(double moos_s);
+  /// step() once the earliest due time is known.
+  double step_at(double due_moos_s);
 
   InProcessBus& bus_;
   ManualClock& clock_;

@@ -114,6 +114,11 @@ HazardManager::Id HazardManager::find_or_add(std::string_view label, glm::dvec2 
 
 Outputs HazardManager::tick(double now_s) {
   Outputs out;
+  tick(now_s, out);
+  return out;
+}
+
+void HazardManager::tick(double now_s, Outputs& out) {
   if (!setting_ && (!last_config_request_s_ ||
                     now_s - *last_config_request_s_ >= config_.config_retry_interval_s)) {
     out.post("UHZ_CONFIG_REQUEST",
@@ -126,7 +131,6 @@ Outputs HazardManager::tick(double now_s) {
     last_sensor_request_s_ = now_s;
   }
   resolve_passes(now_s, out);
-  return out;
 }
 
 Outputs HazardManager::on_config_ack(const hazard::ConfigAck& ack, double /*now_s*/) {

@@ -174,7 +174,7 @@ Outputs HazardMetric::start(double now_s) {
 
 Outputs HazardMetric::iterate(long iteration, double /*now_s*/) {
   Outputs out;
-  if (iteration % kMissionParamsEveryIterations == 0)
+  if (iterate_posts(iteration))
     out.post(kMissionParamsVar, format_mission_params(mission_params()));
   return out;
 }

@@ -22,7 +22,6 @@ constexpr long long kMaxAppCastRunWarnings = 1000; // core-moos upper bound
 /// libMOOS waits this many MOOS seconds for the first connection before starting up (7.1).
 constexpr double kConnectWait_moos_s = 5.0;
 
-constexpr std::string_view kAppCastRequestKey = "APPCAST_REQ";
 constexpr std::string_view kAppCastKey = "APPCAST";
 
 constexpr std::string_view kFrameworkKeys[] = {
@@ -236,6 +235,12 @@ std::string MoosApp::community() const {
 
 void MoosApp::set_terminal_output(std::function<void(const std::string&)> sink) {
   terminal_output_ = std::move(sink);
+  update_report_every_cycle();
+}
+
+void MoosApp::update_report_every_cycle() {
+  flags_.report_every_cycle = traits_.post_iteration_timing || settings_.community.empty() ||
+                              terminal_output_ || !requests_.empty();
 }
 
 bool MoosApp::start(Comms& comms, AppSettings settings) {
@@ -248,6 +253,14 @@ bool MoosApp::start(Comms& comms, AppSettings settings) {
     settings_.time_warp = comms.time_warp();
   }
   if (!(settings_.app_tick_hz > 0)) settings_.app_tick_hz = traits_.default_app_tick_hz;
+  period_moos_s_ = 1.0 / settings_.app_tick_hz;
+  due_tolerance_moos_s_ = kScheduleToleranceFraction / settings_.app_tick_hz;
+  flags_.sort_mail_by_time = settings_.sort_mail_by_time;
+  flags_.post_status = settings_.post_status;
+  flags_.post_iteration_timing = traits_.post_iteration_timing;
+  flags_.idle_app_tick = settings_.idle_app_tick_hz.has_value();
+  flags_.takes_fetch_promises = comms.takes_fetch_promises();
+  update_report_every_cycle();
   iter_gap_var_ = base::to_upper(settings_.moos_name) + "_ITER_GAP";
   iter_len_var_ = base::to_upper(settings_.moos_name) + "_ITER_LEN";
   status_var_ = base::to_upper(settings_.app_name) + "_STATUS";
@@ -267,7 +280,7 @@ bool MoosApp::start(Comms& comms, AppSettings settings) {
   return on_start_up();
 }
 
-void MoosApp::cycle() {
+void MoosApp::cycle_at(double now) {
   if (!comms_) return;
   // Everything this cycle posts leaves together (Comms::hold_sends).
   struct SendBatch {
@@ -277,11 +290,12 @@ void MoosApp::cycle() {
     SendBatch(const SendBatch&) = delete;
     SendBatch& operator=(const SendBatch&) = delete;
   } batch(*comms_);
-  const double now = moos_time();
   curr_time_ = now;
   schedule_next(now);
-  idle_resume_moos_s_.reset();
-  mail_signal_.take();  // before the fetch: mail arriving during it still ends the next sleep
+  if (flags_.idle_app_tick) {
+    idle_resume_moos_s_.reset();
+    mail_signal_.take();  // before the fetch: mail arriving during it still ends the next sleep
+  }
 
   const std::uint64_t connections = comms_->connection_count();
   if (connections != seen_connections_) {
@@ -292,36 +306,30 @@ void MoosApp::cycle() {
   comms_->fetch_into(mail_);
   if (comms_->mail_dropped() != reported_mail_dropped_) report_dropped_mail();
   if (comms_->postings_dropped() != reported_postings_dropped_) report_dropped_postings();
-  if (!mail_.empty()) {
-    const auto by_time = [](const Message& a, const Message& b) { return a.time < b.time; };
-    // Mail mostly arrives in time order: checking is cheaper than a merge sort's buffer.
-    if (settings_.sort_mail_by_time && !std::is_sorted(mail_.begin(), mail_.end(), by_time))
-      std::stable_sort(mail_.begin(), mail_.end(), by_time);
-    handle_framework_mail(mail_);
-    if (!mail_.empty()) on_new_mail(mail_);
-  }
+  if (!mail_.empty()) handle_mail();
 
   if (!comms_->is_connected()) return;  // libMOOS iterates only while connected (7.1)
-  if (settings_.post_status) post_status_if_due();
+  if (flags_.post_status) post_status_if_due();
   ++iteration_;
-  if (traits_.post_iteration_timing && last_iterate_start_moos_s_)
-    comms_->notify(iter_gap_var_, (now - *last_iterate_start_moos_s_) * settings_.app_tick_hz);
-  last_iterate_start_moos_s_ = now;
+  if (flags_.post_iteration_timing) {
+    if (last_iterate_start_moos_s_)
+      comms_->notify(iter_gap_var_, (now - *last_iterate_start_moos_s_) * settings_.app_tick_hz);
+    last_iterate_start_moos_s_ = now;
+  }
   iterate();
   if (report_may_be_due()) {
     post_report(now);
   } else {
     appcast_.set_iteration(iteration_);  // all post_report() would have done
   }
-  if (settings_.idle_app_tick_hz) plan_idle(now);
-  if (comms_->takes_fetch_promises()) promise_next_fetch();  // else no clock to read for it
+  if (flags_.idle_app_tick) plan_idle(now);
+  if (flags_.takes_fetch_promises) promise_next_fetch();  // else no clock to read for it
 }
 
 bool MoosApp::report_may_be_due() const {
   // What post_report() looks at, cheapest first; without any of it, it only counts the
   // iteration.
-  return iteration_ < 2 || terminal_output_ || !requests_.empty() || new_config_warning_ ||
-         traits_.post_iteration_timing || settings_.community.empty();
+  return iteration_ < 2 || flags_.report_every_cycle || flags_.new_config_warning;
 }
 
 void MoosApp::promise_next_fetch() {
@@ -332,41 +340,8 @@ void MoosApp::promise_next_fetch() {
   comms_->expect_fetch_within((next_due_moos_s_ - moos_time()) / comms_->time_warp());
 }
 
-void MoosApp::report_dropped_mail() {
-  const std::uint64_t dropped = comms_->mail_dropped();
-  if (dropped == reported_mail_dropped_) return;
-  reported_mail_dropped_ = dropped;
-  // One standing warning whose count grows, not one warning per overflow.
-  if (!dropped_mail_warning_.empty()) retract_run_warning(dropped_mail_warning_);
-  dropped_mail_warning_ = "Mail arrived faster than the app read it: " + std::to_string(dropped) +
-                          " oldest unread messages dropped in all (inbox bounds)";
-  report_run_warning(dropped_mail_warning_);
-}
-
-void MoosApp::report_dropped_postings() {
-  const std::uint64_t dropped = comms_->postings_dropped();
-  if (dropped == reported_postings_dropped_) return;
-  reported_postings_dropped_ = dropped;
-  // One standing warning: the count and the latest reason, which names the variable.
-  if (!dropped_postings_warning_.empty()) retract_run_warning(dropped_postings_warning_);
-  dropped_postings_warning_ = std::to_string(dropped) + " postings not sent in all; the latest: " +
-                              comms_->last_post_error();
-  report_run_warning(dropped_postings_warning_);
-}
-
-void MoosApp::handle_framework_mail(std::vector<Message>& mail) {
-  auto framework = [&](const Message& m) {
-    if (m.key == kTimingKey) return true;
-    if (m.key != kAppCastRequestKey) return false;
-    if (auto request = parse_appcast_request(m.sval, community(), settings_.app_name))
-      requests_[request->key] = Request{curr_time_, *request};
-    return true;
-  };
-  mail.erase(std::remove_if(mail.begin(), mail.end(), framework), mail.end());
-}
-
 bool MoosApp::appcast_requested() const {
-  if (new_config_warning_) return true;
+  if (flags_.new_config_warning) return true;
   for (const auto& [key, r] : requests_) {
     if (curr_time_ - r.start_moos_s >= r.request.duration_s) continue;  // expired
     if (r.request.thresh == "any") return true;
@@ -427,7 +402,7 @@ void MoosApp::post_report(double iterate_start) {
   }
   if (appcast_pending) {
     new_run_warning_ = false;
-    new_config_warning_ = false;
+    flags_.new_config_warning = false;
     last_appcast_moos_s_ = curr_time_;
     comms_->notify(std::string(kAppCastKey), appcast_.appcast_string());
   }
@@ -458,7 +433,7 @@ bool MoosApp::register_wildcard(const std::string& var_pattern, const std::strin
 }
 
 void MoosApp::report_config_warning(const std::string& text) {
-  new_config_warning_ = true;
+  flags_.new_config_warning = true;
   appcast_.add_config_warning(text);
 }
 

@@ -14,13 +14,12 @@ namespace moos {
 
 double MoosApp::grid_slot_at_or_after(double t) const {
   if (t <= next_due_moos_s_) return next_due_moos_s_;
-  const double period = 1.0 / settings_.app_tick_hz;
+  const double period = period_moos_s_;
   const double periods = std::ceil((t - next_due_moos_s_) / period - kScheduleToleranceFraction);
   return next_due_moos_s_ + periods * period;
 }
 
-double MoosApp::due_moos_s() const {
-  if (!idle_resume_moos_s_) return next_due_moos_s_;
+double MoosApp::idle_due_moos_s() const {
   // Mail (or a reconnect) waits: the slot it would have had without the option, the first one
   // at or after its arrival (the slots skipped before it had nothing to do). Fixed by the
   // arrival, not by the clock, or a loop that wakes just after a slot would chase the next one.

@@ -12,7 +12,7 @@
 namespace moos {
 
 void MoosApp::schedule_next(double cycle_start) {
-  const double period = 1.0 / settings_.app_tick_hz;
+  const double period = period_moos_s_;
   const double tolerance = period * kScheduleToleranceFraction;
   const double due = due_moos_s();  // the slot this cycle had, IdleAppTick's skipping included
   const double late = cycle_start - due;
@@ -25,10 +25,9 @@ void MoosApp::schedule_next(double cycle_start) {
   }
 }
 
-bool MoosApp::cycle_if_due() {
-  const double tolerance = kScheduleToleranceFraction / settings_.app_tick_hz;
-  if (moos_time() + tolerance < due_moos_s()) return false;
-  cycle();
+bool MoosApp::cycle_if_due(double now) {
+  if (now + due_tolerance_moos_s_ < due_moos_s()) return false;
+  cycle_at(now);
   return true;
 }
 

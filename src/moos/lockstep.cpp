@@ -24,15 +24,23 @@ void Lockstep::set_moos_time(double moos_s) {
 
 double Lockstep::step() {
   if (apps_.empty()) return moos_time();
-  set_moos_time(next_due_moos_s());
+  return step_at(next_due_moos_s());
+}
+
+double Lockstep::step_at(double due_moos_s) {
+  set_moos_time(due_moos_s);
+  // Every app reads the bus clock, which stands still until the next step: read once.
+  const double now = moos_time();
   // cycle_if_due applies the app's own tolerance, so apps on one grid cycle together.
-  for (MoosApp* app : apps_) app->cycle_if_due();
-  return moos_time();
+  for (MoosApp* app : apps_) app->cycle_if_due(now);
+  return now;
 }
 
 bool Lockstep::run_until(double end_moos_s, const std::function<bool()>& stop) {
-  while (!apps_.empty() && next_due_moos_s() <= end_moos_s) {
-    step();
+  while (!apps_.empty()) {
+    const double due = next_due_moos_s();  // once per step: step_at, not step
+    if (!(due <= end_moos_s)) break;
+    step_at(due);
     if (stop && stop()) return true;
   }
   set_moos_time(end_moos_s);

@@ -103,6 +103,26 @@ TEST(Manager, RequestsItsSettingUntilAckedThenKeepsTheSensorOn_Spec13) {
   EXPECT_TRUE(m.tick(200.0).postings.size() == 1u);  // no more config requests
 }
 
+TEST(Manager, TickIntoAKeptOutputsAppendsWhatTickReturns) {
+  HazardManager kept_ticks(archie_config());
+  HazardManager fresh_ticks(archie_config());
+  Outputs kept;
+  kept.events.push_back("earlier");
+  kept_ticks.tick(0.0, kept);
+  const Outputs fresh = fresh_ticks.tick(0.0);
+  ASSERT_EQ(fresh.postings.size(), 1u);
+  ASSERT_EQ(kept.postings.size(), 1u);
+  EXPECT_EQ(kept.postings[0].variable, fresh.postings[0].variable);
+  EXPECT_EQ(kept.postings[0].text, fresh.postings[0].text);
+  EXPECT_EQ(kept.events, std::vector<std::string>{"earlier"});  // appended: nothing cleared
+  kept.clear();
+  EXPECT_TRUE(kept.empty());
+  kept_ticks.tick(29.0, kept);
+  EXPECT_TRUE(kept.empty());  // a quiet tick adds nothing
+  kept.run_warnings.push_back("w");
+  EXPECT_FALSE(kept.empty());
+}
+
 TEST(Manager, DetectionUpdatesTheBeliefAndRequestsAClassification) {
   HazardManager m(archie_config());
   m.on_config_ack(archie_ack(), 0.0);

@@ -309,6 +309,9 @@ TEST(MetricStart, PostsRegionLaneAndMissionParams) {
   EXPECT_TRUE(m.iterate(49, 1).postings.empty());
   EXPECT_EQ(m.iterate(50, 1).postings.at(0).text, out.postings[2].text);
   EXPECT_EQ(m.iterate(100, 1).postings.size(), 1u);
+  // The application asks iterate_posts first: it must agree with iterate.
+  for (long i : {1L, 2L, 49L, 50L, 51L, 99L, 100L})
+    EXPECT_EQ(HazardMetric::iterate_posts(i), !m.iterate(i, 1).postings.empty()) << i;
 }
 
 TEST(TransitLane, FirstXWithTheFewestHazardsByHand_Spec14_2) {

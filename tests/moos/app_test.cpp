@@ -475,6 +475,39 @@ TEST_F(AppOnBus, TerminalReportsFollowTheInterval_7_2) {
   EXPECT_EQ(count("APPCAST"), 1u);  // terminal reports do not post appcasts
 }
 
+TEST_F(AppOnBus, ATerminalSetAfterStartUpGetsFramesFromAQuietApp_7_2) {
+  // A quiet app (Community set, no _ITER_LEN, no request) skips the report: a terminal attached
+  // later must end the skipping.
+  AppTraits traits{"pQuiet", 4.0};
+  traits.post_iteration_timing = false;
+  EchoApp quiet(traits);
+  AppSettings s = settings_for("pQuiet");
+  s.time_warp = bus.time_warp();
+  s.term_report_interval_s = 1.0;
+  const auto comms = bus.connect("pQuiet");
+  ASSERT_TRUE(quiet.start(*comms, s));
+  quiet.run_for(2.0);
+  std::vector<std::string> frames;
+  quiet.set_terminal_output([&](const std::string& f) { frames.push_back(f); });
+  quiet.run_for(2.0);
+  EXPECT_GE(frames.size(), 2u);
+}
+
+TEST_F(AppOnBus, CycleIfDueAtAGivenTimeRunsOnlyAtTheDueTimeAndUsesIt_7_1) {
+  start();
+  ASSERT_TRUE(app.cycle_if_due(bus.moos_time()));  // due at once after start-up
+  const double due = app.next_cycle_due_moos_s();
+  EXPECT_DOUBLE_EQ(due, kT0 + 0.25);
+  clock.set_unix_s(kT0 + 0.1);
+  EXPECT_FALSE(app.cycle_if_due(bus.moos_time()));
+  EXPECT_EQ(app.iterations, 1);
+  clock.set_unix_s(due);
+  ASSERT_TRUE(app.cycle_if_due(bus.moos_time()));
+  EXPECT_EQ(app.iterations, 2);
+  EXPECT_EQ(app.cycle_time(), due);
+  EXPECT_DOUBLE_EQ(app.next_cycle_due_moos_s(), kT0 + 0.5);
+}
+
 TEST_F(AppOnBus, TermReportingFalseSilencesTheTerminal_7_2) {
   std::vector<std::string> frames;
   app.set_terminal_output([&](const std::string& f) { frames.push_back(f); });

@@ -165,6 +165,7 @@ bool MissionApp::send(const mission::Posting& p) {
 }
 
 void MissionApp::publish(const mission::Outputs& out) {
+  if (out.empty()) return;  // most iterations of most apps
   // Postings made while disconnected wait in the comms' outbox (comms.hpp); a refused one is
   // counted there and reported by the app base.
   for (const mission::Posting& p : out.postings) send(p);

@@ -6,6 +6,7 @@
 #include "hazard/messages/detection_report.hpp"
 #include "hazard/messages/hazard_report.hpp"
 #include "hazard/messages/node_report.hpp"
+#include "base/same_text.hpp"
 #include "base/text.hpp"
 #include "mission/messages/hazard_handover.hpp"
 #include "mission/messages/hazardset_report.hpp"
@@ -93,9 +94,13 @@ bool HazardMgr::on_start_up() {
     config_.vname = vname;
   }
   manager_.emplace(config_);
-  for (const char* base : {"UHZ_CONFIG_ACK", "UHZ_DETECTION_REPORT", "UHZ_HAZARD_REPORT",
-                           mission::kHazardHandoverVar, "HAZARDSET_REQUEST"}) {
-    register_variable(mail_variable(base));
+  mail_names_ = {mail_variable("UHZ_CONFIG_ACK"), mail_variable("UHZ_DETECTION_REPORT"),
+                 mail_variable("UHZ_HAZARD_REPORT"), mail_variable(mission::kHazardHandoverVar),
+                 mail_variable("HAZARDSET_REQUEST")};
+  for (const std::string* name :
+       {&mail_names_.config_ack, &mail_names_.detection_report, &mail_names_.hazard_report,
+        &mail_names_.handover, &mail_names_.hazardset_request}) {
+    register_variable(*name);
   }
   register_variable(mission::kMissionParamsVar);
   register_variable(app_.node_report_var);
@@ -109,36 +114,41 @@ void HazardMgr::on_new_mail(const std::vector<moos::Message>& mail) {
     // earlier than mail already handled (the library's clocks run forward).
     const double t = std::max(last_mail_time_s_, std::min(m.time, cycle_s));
     last_mail_time_s_ = t;
-    handle(m, t);
+    // Node reports are most of the mail: read where they lie, not copied, and without the
+    // text handle() makes of the rest.
+    if (m.is_string() && base::same_text(m.key, app_.node_report_var)) {
+      on_node_report(m.sval, t);
+    } else {
+      handle(m, t);
+    }
   }
 }
 
 void HazardMgr::handle(const moos::Message& m, double time_s) {
-  // Node reports are most of the mail: read where they lie, not copied.
-  if (m.key == app_.node_report_var && m.is_string()) return on_node_report(m.sval, time_s);
+  const auto is = [&](std::string_view name) { return base::same_text(m.key, name); };
   const std::string text = mission_app::mail_text(m);
   auto warn_parse = [&](const std::string& error) {
     report_run_warning(m.key + " ignored: " + error);
   };
-  if (m.key == app_.node_report_var) {
+  if (is(app_.node_report_var)) {  // a double: on_new_mail reads the strings itself
     on_node_report(text, time_s);
-  } else if (m.key == mail_variable("UHZ_CONFIG_ACK")) {
+  } else if (is(mail_names_.config_ack)) {
     auto ack = hazard::parse_config_ack(text);
     if (!ack) return warn_parse(ack.error);
     publish(manager_->on_config_ack(*ack.value, time_s));
-  } else if (m.key == mail_variable("UHZ_DETECTION_REPORT")) {
+  } else if (is(mail_names_.detection_report)) {
     auto report = hazard::parse_detection_report(text);
     if (!report) return warn_parse(report.error);
     publish(manager_->on_detection(*report.value, time_s));
-  } else if (m.key == mail_variable("UHZ_HAZARD_REPORT")) {
+  } else if (is(mail_names_.hazard_report)) {
     auto report = hazard::parse_hazard_report(text);
     if (!report) return warn_parse(report.error);
     publish(manager_->on_classification(*report.value, time_s));
-  } else if (m.key == mission::kMissionParamsVar) {
+  } else if (is(mission::kMissionParamsVar)) {
     on_mission_params(text);
-  } else if (m.key == mail_variable(mission::kHazardHandoverVar)) {
+  } else if (is(mail_names_.handover)) {
     on_handover(text, time_s);
-  } else if (m.key == mail_variable("HAZARDSET_REQUEST")) {
+  } else if (is(mail_names_.hazardset_request)) {
     if (!report_requested_s_) report_requested_s_ = time_s;
     report_event("HAZARDSET_REQUEST received");
   }
@@ -174,7 +184,7 @@ void HazardMgr::on_node_report(const std::string& text, double time_s) {
     return;
   }
   const hazard::NodeReport& r = *report.value;
-  if (r.name != config_.vname) return;  // another vehicle's pose, on a shared MOOSDB
+  if (!base::same_text(r.name, config_.vname)) return;  // another vehicle's pose, on a shared MOOSDB
   // The pose's own time when the report carries one: never ahead of the mail time, never
   // before the previous pose (the turn-rate history runs forward).
   const double pose_s = std::max(last_pose_time_s_, r.time_s ? std::min(*r.time_s, time_s) : time_s);
@@ -240,8 +250,10 @@ void HazardMgr::post_report(double now_s) {
 
 void HazardMgr::on_iterate() {
   const double now_s = std::max(cycle_time(), last_mail_time_s_);
-  publish(manager_->tick(now_s));
-  if (report_ready(now_s)) post_report(now_s);
+  tick_out_.clear();
+  manager_->tick(now_s, tick_out_);
+  if (!tick_out_.empty()) publish(tick_out_);  // nearly every tick is quiet
+  if (report_requested_s_ && report_ready(now_s)) post_report(now_s);
 }
 
 std::string HazardMgr::object_table() const {

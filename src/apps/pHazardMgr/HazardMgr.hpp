@@ -96,6 +96,7 @@ class HazardMgr final : public mission_app::MissionApp {
  private:
   /// Applies one of the app's own parameters; nullopt if the key is not one of them.
   std::optional<std::string> apply_app_param(const moos::ConfigLine& line);
+  /// Any mail but a node report's text (on_new_mail hands those to on_node_report).
   void handle(const moos::Message& m, double time_s);
   void on_node_report(const std::string& text, double time_s);
   void on_handover(const std::string& text, double time_s);
@@ -105,7 +106,14 @@ class HazardMgr final : public mission_app::MissionApp {
   void post_report(double now_s);
   std::string object_table() const;
 
+  /// The suffixed variables of the contract (mail_variable), named once at start-up: every
+  /// message is compared with them.
+  struct MailNames {
+    std::string config_ack, detection_report, hazard_report, handover, hazardset_request;
+  };
+
   AppConfig app_;
+  MailNames mail_names_;
   mission::ManagerConfig config_;
   std::optional<mission::HazardManager> manager_;
   std::optional<glm::dvec2> last_position_m_;
@@ -119,6 +127,9 @@ class HazardMgr final : public mission_app::MissionApp {
   std::optional<std::string> applied_mission_params_;
   double last_mail_time_s_ = 0.0;
   double last_pose_time_s_ = 0.0;
+  /// What tick() produced this iteration: one Outputs kept for every tick, not one built and
+  /// freed four times a second.
+  mission::Outputs tick_out_;
 };
 
 }  // namespace phazard_mgr

@@ -69,7 +69,9 @@ void HazardMetricApp::on_new_mail(const std::vector<moos::Message>& mail) {
 }
 
 void HazardMetricApp::on_iterate() {
-  publish(metric_.iterate(static_cast<long>(iteration()), cycle_time()));
+  const auto iteration = static_cast<long>(this->iteration());
+  if (mission::HazardMetric::iterate_posts(iteration))
+    publish(metric_.iterate(iteration, cycle_time()));
 }
 
 std::string HazardMetricApp::build_report() {

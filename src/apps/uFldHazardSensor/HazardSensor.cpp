@@ -126,8 +126,9 @@ std::string HazardSensor::build_report() {
   return hazard::format_report(hazard::collect_report_data(driver_->engine()));
 }
 
-void HazardSensor::publish(hazard::TimedOutputs timed) {
+void HazardSensor::publish(hazard::TimedOutputs&& timed) {
   hazard::Outputs& out = timed.outputs;
+  if (out.empty()) return;  // most steps
   const double now_s = timed.time_s;
   for (hazard::Posting& p : out.postings) {
     write_verbose(now_s, p.variable, p.value);

@@ -107,7 +107,7 @@ class HazardSensor final : public moos::MoosApp {
   /// The engine of this block (HazardSensorOptions::make_engine, else as the contract says).
   hazard::Engine build_engine() const;
   /// Posts, reports and logs what the engine produced; the posted texts are moved, not copied.
-  void publish(hazard::TimedOutputs timed);
+  void publish(hazard::TimedOutputs&& timed);
   void write_verbose(double now_s, const std::string& variable, const std::string& value) const;
   /// Hands this cycle's share of the backlog to the engine.
   void handle_backlog();

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "hazard/messages/node_report.hpp"
+#include "base/same_text.hpp"
 #include "base/text.hpp"
 #include "mission/polygon.hpp"
 #include "survey_route.hpp"
@@ -99,19 +100,22 @@ bool SimSurveyVehicle::on_start_up() {
 
   register_variable("DEPLOY");
   register_variable("DEPLOY_ALL");
-  register_variable(deploy_variable_for(vname_));
-  register_variable(survey_route_variable_for(vname_));
+  route_var_ = survey_route_variable_for(vname_);
+  deploy_var_ = deploy_variable_for(vname_);
+  register_variable(deploy_var_);
+  register_variable(route_var_);
   start_route_if_ready();
   return true;
 }
 
 void SimSurveyVehicle::on_new_mail(const std::vector<moos::Message>& mail) {
-  const std::string route_var = survey_route_variable_for(vname_);
-  const std::string deploy_var = deploy_variable_for(vname_);
+  const auto is = [](const moos::Message& m, std::string_view name) {
+    return base::same_text(m.key, name);
+  };
   for (const moos::Message& m : mail) {
-    if (m.key == route_var) {
+    if (is(m, route_var_)) {
       on_route(m);
-    } else if (m.key == "DEPLOY" || m.key == "DEPLOY_ALL" || m.key == deploy_var) {
+    } else if (is(m, "DEPLOY") || is(m, "DEPLOY_ALL") || is(m, deploy_var_)) {
       on_deploy(m);
     }
   }
@@ -200,7 +204,7 @@ std::string SimSurveyVehicle::build_report() {
   if (!deployed_) {
     state = "waiting for DEPLOY";
   } else if (!route_started_) {
-    state = "idle, waiting for " + survey_route_variable_for(vname_);
+    state = "idle, waiting for " + route_var_;
   } else if (vehicle_->done()) {
     state = "done";
   } else {

@@ -90,6 +90,8 @@ class SimSurveyVehicle final : public mission_app::MissionApp {
 
   mission::SurveyVehicleConfig config_;
   std::string vname_;
+  /// SURVEY_ROUTE_<V> and DEPLOY_<V>, named once at start-up (compared with every message).
+  std::string route_var_, deploy_var_;
   std::string node_report_var_ = "NODE_REPORT";
   std::string vehicle_type_ = "UUV";
   bool deployed_ = false;
