@@ -224,7 +224,11 @@ void Comms::fill_notify(Message& m, char data_type, const std::string& var, doub
   } else {
     m.source_aux = source_aux;
   }
-  m.community.clear();
+  if (posted_community_.empty()) {
+    m.community.clear();
+  } else if (!base::same_text(m.community, posted_community_)) {
+    m.community = posted_community_;
+  }
   if (!base::same_text(m.key, var)) m.key = var;
   m.time = time;
   m.dval = dval;

@@ -90,7 +90,7 @@ bool Database::connect(ClientId id, const std::vector<Message>& identification,
   client.id = id;
   client.name = ident->sval;
   client.async = base::iequals(ident->key, kAsynchronousKey);
-  client.sink = mail_sink;
+  client.sink = client.async ? mail_sink : nullptr;  // a synchronous client's mail waits
   client_by_name_[client.name] = id;
   const std::string name = client.name;
   clients_.emplace(id, std::move(client));
@@ -137,16 +137,27 @@ void Database::process_packet(ClientId id, std::vector<Message> packet, double n
 }
 
 void Database::process_message(ClientId id, Message&& msg, double now_moos_s) {
-  process_messages(id, &msg, &msg + 1, now_moos_s);
+  // The in-process bus's every posting: a lone NOTIFY, so no TIMING to echo and no loop.
+  if (msg.type != mt::kNotify) return process_messages(id, &msg, &msg + 1, now_moos_s);
+  Client* client = sender(id);
+  if (!client) return;
+  handle_notify(*client, std::move(msg), now_moos_s);
+  end_packet(*client, nullptr, now_moos_s);
+}
+
+Database::Client* Database::sender(ClientId id) {
+  if (!last_sender_ || last_sender_->id != id) {
+    const auto found = clients_.find(id);
+    if (found == clients_.end()) return nullptr;
+    last_sender_ = &found->second;
+  }
+  return last_sender_;
 }
 
 void Database::process_messages(ClientId id, Message* first, Message* last, double now_moos_s) {
-  if (!last_sender_ || last_sender_->id != id) {
-    const auto found = clients_.find(id);
-    if (found == clients_.end()) return;
-    last_sender_ = &found->second;
-  }
-  Client& client = *last_sender_;
+  Client* sending = sender(id);
+  if (!sending) return;
+  Client& client = *sending;
   // Step 2: a leading TIMING is echoed to asynchronous clients; synchronous clients never
   // receive TIMING (protocol.md 5.6), so theirs is dropped. TIMING elsewhere is ignored. The
   // echo is made after the other messages: handling them leaves this one as it is.
@@ -156,11 +167,14 @@ void Database::process_messages(ClientId id, Message* first, Message* last, doub
     ++first;
   }
   for (; first != last; ++first) handle_message(client, std::move(*first), now_moos_s);
+  end_packet(client, echo, now_moos_s);
+}
 
+void Database::end_packet(Client& client, Message* echo, double now_moos_s) {
   // Step 6: the reply. Sync: NULL first, always. Async: echo first, only if non-empty. Handling
   // erases no client (drops are requests), so `client` is still valid.
   if (client.async && !echo) {
-    if (!client.pending.empty()) send_packet(id, std::move(client.pending));
+    if (!client.pending.empty()) send_packet(client.id, std::move(client.pending));
     client.pending.clear();
     client.pending_bytes = 0;
   } else {
@@ -173,7 +187,7 @@ void Database::process_messages(ClientId id, Message* first, Message* last, doub
       reply.back().dval2 = 0.0;        // outgoing delay for this client, seconds (none)
     }
     take_pending(client, reply);
-    send_packet(id, std::move(reply));
+    send_packet(client.id, std::move(reply));
   }
   // Step 7, for every asynchronous client and on every packet (protocol.md 5.6 SHOULD).
   flush_async_mail();
@@ -235,7 +249,7 @@ std::size_t Database::pending_bytes(ClientId id) const {
   const auto it = clients_.find(id);
   if (it == clients_.end()) return 0;
   const Client& client = it->second;
-  return client.async && client.sink ? 0 : client.pending_bytes;  // a sink took it all
+  return client.sink ? 0 : client.pending_bytes;  // a sink took it all
 }
 
 std::optional<Message> Database::latest(const std::string& name) const {
