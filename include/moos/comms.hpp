@@ -196,6 +196,10 @@ class Comms {
   /// notify() of any type: `sval` (null for a double) is taken, uncopied.
   bool post_notify(char data_type, const std::string& var, double dval, std::string* sval,
                    std::optional<double> time_s, const std::string& source_aux);
+  /// post_notify() in a message of its own, while another posting uses outgoing_ (rare).
+  [[gnu::cold]] bool post_notify_apart(char data_type, const std::string& var, double dval,
+                                       std::string* sval, double time,
+                                       const std::string& source_aux);
   void fill_notify(Message& m, char data_type, const std::string& var, double dval,
                    std::string* sval, double time, const std::string& source_aux) const;
   bool post_and_record(Message&& msg);

@@ -41,6 +41,7 @@
 // also removes the identical filter; a synchronous client's empty packet is answered; DB_QOS
 // and DB_VARSUMMARY are not published.
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -277,6 +278,14 @@ class Database {
   /// The end of a packet from `client` (protocol.md 5.2 steps 6-7): its reply, with `echo` (a
   /// leading TIMING of an asynchronous client) first, and every asynchronous client's mail.
   void end_packet(Client& client, Message* echo, double now_moos_s);
+  /// end_packet() of an asynchronous client's packet without a TIMING to echo: its mail, if
+  /// any waits (a client with a mail sink has none), leaves now.
+  void end_async_packet(Client& client) {
+    if (!client.pending.empty()) send_packet(client.id, std::move(client.pending));
+    client.pending.clear();
+    client.pending_bytes = 0;
+    flush_async_mail();
+  }
   // One handler per message type (protocol.md 5.2 step 3), each in the file of its rule.
   void handle_message(Client& client, Message&& msg, double now);
   void handle_notify(Client& client, Message&& msg, double now);
@@ -375,9 +384,11 @@ class Database {
   std::vector<Client*> async_with_mail_;
   /// Public calls completed (each ends in flush_async_mail()): Client::sink_call's clock.
   std::uint64_t calls_ = 0;
-  /// The client of the latest process_packet() (null when it disconnected): a client mostly
-  /// sends several packets in a row, found again without a look-up.
-  Client* last_sender_ = nullptr;
+  /// Clients that sent lately, by id modulo kRecentSenders (null, or a connected client):
+  /// the clients of a community take turns posting, and each is found again without a look-up
+  /// (connection layers number their connections in turn, so ids seldom share a place).
+  static constexpr std::size_t kRecentSenders = 16;
+  std::array<Client*, kRecentSenders> recent_senders_{};
 
   std::vector<OutPacket> output_;
   std::vector<DropRequest> drops_;

@@ -53,7 +53,8 @@ struct BusClientState final : MailSink {
     got_mail();
   }
   void got_mail() {
-    has_mail = true;
+    // Release suffices: fetch_into() takes the bus lock before it reads the inbox.
+    has_mail.store(true, std::memory_order_release);
     if (listed_as_woken || !handle || !handle->has_on_mail()) return;
     listed_as_woken = true;
     woken->push_back(this);

@@ -121,7 +121,8 @@ void Database::disconnect(ClientId id, double now_moos_s) {
          " messages refused in total");
   const std::string name = client.name;
   client_by_name_.erase(name);
-  if (last_sender_ == &client) last_sender_ = nullptr;
+  Client*& cached = recent_senders_[id % kRecentSenders];
+  if (cached == &client) cached = nullptr;
   clients_.erase(it);
 
   publish_db_string("DB_EVENT", "disconnected=" + name, now_moos_s);
@@ -142,16 +143,21 @@ void Database::process_message(ClientId id, Message&& msg, double now_moos_s) {
   Client* client = sender(id);
   if (!client) return;
   handle_notify(*client, std::move(msg), now_moos_s);
-  end_packet(*client, nullptr, now_moos_s);
+  if (client->async) {
+    end_async_packet(*client);  // inline: the bus's every posting ends here
+  } else {
+    end_packet(*client, nullptr, now_moos_s);
+  }
 }
 
 Database::Client* Database::sender(ClientId id) {
-  if (!last_sender_ || last_sender_->id != id) {
+  Client*& cached = recent_senders_[id % kRecentSenders];
+  if (!cached || cached->id != id) {
     const auto found = clients_.find(id);
     if (found == clients_.end()) return nullptr;
-    last_sender_ = &found->second;
+    cached = &found->second;
   }
-  return last_sender_;
+  return cached;
 }
 
 void Database::process_messages(ClientId id, Message* first, Message* last, double now_moos_s) {
@@ -173,22 +179,17 @@ void Database::process_messages(ClientId id, Message* first, Message* last, doub
 void Database::end_packet(Client& client, Message* echo, double now_moos_s) {
   // Step 6: the reply. Sync: NULL first, always. Async: echo first, only if non-empty. Handling
   // erases no client (drops are requests), so `client` is still valid.
-  if (client.async && !echo) {
-    if (!client.pending.empty()) send_packet(client.id, std::move(client.pending));
-    client.pending.clear();
-    client.pending_bytes = 0;
+  if (client.async && !echo) return end_async_packet(client);
+  std::vector<Message> reply;
+  if (!client.async) {
+    reply.push_back(null_reply(now_moos_s));
   } else {
-    std::vector<Message> reply;
-    if (!client.async) {
-      reply.push_back(null_reply(now_moos_s));
-    } else {
-      reply.push_back(std::move(*echo));
-      reply.back().dval = now_moos_s;  // server local warped time; the DB's skew is 0
-      reply.back().dval2 = 0.0;        // outgoing delay for this client, seconds (none)
-    }
-    take_pending(client, reply);
-    send_packet(client.id, std::move(reply));
+    reply.push_back(std::move(*echo));
+    reply.back().dval = now_moos_s;  // server local warped time; the DB's skew is 0
+    reply.back().dval2 = 0.0;        // outgoing delay for this client, seconds (none)
   }
+  take_pending(client, reply);
+  send_packet(client.id, std::move(reply));
   // Step 7, for every asynchronous client and on every packet (protocol.md 5.6 SHOULD).
   flush_async_mail();
 }

@@ -20,10 +20,12 @@ void Database::fan_out(Variable& var, Message&& msg, double now) {
   const std::size_t size = msg.encoded_size();  // one size for every reader
   Client* previous = nullptr;
   for (auto& [subscriber, sub] : var.subscribers) {
-    const bool due = sub.interval_s <= 0.0 || !sub.last_delivery_moos_s ||
-                     now - *sub.last_delivery_moos_s >= sub.interval_s;
-    if (!due) continue;
-    sub.last_delivery_moos_s = now;
+    // Only a throttled subscription looks at its last delivery (an interval changes only with
+    // a new subscription, which has never delivered).
+    if (sub.interval_s > 0.0) {
+      if (sub.last_delivery_moos_s && now - *sub.last_delivery_moos_s < sub.interval_s) continue;
+      sub.last_delivery_moos_s = now;
+    }
     if (previous) queue_fan_out_mail(*previous, msg, size, false);
     previous = sub.client;
   }
