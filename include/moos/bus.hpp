@@ -18,6 +18,7 @@
 // - Thread-safe; on-mail callbacks run on the posting thread with no lock held.
 
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
@@ -25,6 +26,7 @@
 #include "moos/clock.hpp"
 #include "moos/comms.hpp"
 #include "moos/database.hpp"
+#include "moos/light_mutex.hpp"
 #include "moos/message.hpp"
 
 namespace moos {
@@ -106,6 +108,10 @@ class BusClient final : public Comms {
   BusClient(std::shared_ptr<BusCore> core, std::string name);
   /// fetch_into() past its lock-free check (apart, so that the check's call stays cheap).
   [[gnu::noinline]] void hand_over_mail(std::vector<Message>& mail);
+  // transmit()'s rarer ends, out of line (bus lock held by `lock`): the on-mail callbacks of
+  // the clients that got mail, called after the lock is released; a posting while disconnected.
+  void wake_readers(std::unique_lock<LightMutex>& lock);
+  [[gnu::cold]] bool keep_for_reconnect(Message&& msg, std::unique_lock<LightMutex>& lock);
 
   std::shared_ptr<BusCore> core_;
   BusClientState* state_ = nullptr;  ///< owned by the bus; set when connected, until destroyed

@@ -20,7 +20,8 @@
 //   false, is counted (postings_dropped()) and named in last_post_error(). A closed or poisoned
 //   client refuses postings (false, not counted). Registrations are never queued: the
 //   remembered ones are replayed at each connection (below).
-//   Posted NOTIFYs carry this client's name as source and, unless given, the MOOS time now.
+//   Posted NOTIFYs carry this client's name as source, unless given the MOOS time now, and
+//   the transport's posted community (empty but for BusClient: see the constructor).
 // - fetch() returns all mail received since the last fetch, in arrival order; TIMING and NULL
 //   messages never reach it.
 // - Time: local time = Clock real seconds x warp; MOOS time = local time + skew (protocol.md 1.10).
@@ -163,8 +164,14 @@ class Comms {
   std::set<std::string> published_names() const;
 
  protected:
-  explicit Comms(std::string name, bool takes_fetch_promises = true)
-      : name_(std::move(name)), takes_fetch_promises_(takes_fetch_promises) {}
+  /// `posted_community`: the community field of posted NOTIFYs. Empty, as libMOOS sends them
+  /// (the server fills in its own, protocol.md 5.3); a transport whose server is known to fill
+  /// in exactly this text (BusClient) may pass it, so that the server only compares.
+  explicit Comms(std::string name, bool takes_fetch_promises = true,
+                 std::string posted_community = {})
+      : name_(std::move(name)),
+        takes_fetch_promises_(takes_fetch_promises),
+        posted_community_(std::move(posted_community)) {}
 
   /// Hands one message to the server: now when connected; a NOTIFY also while disconnected,
   /// queued for the next connection (the delivery contract above). False (nothing sent) when it
@@ -189,6 +196,10 @@ class Comms {
   /// notify() of any type: `sval` (null for a double) is taken, uncopied.
   bool post_notify(char data_type, const std::string& var, double dval, std::string* sval,
                    std::optional<double> time_s, const std::string& source_aux);
+  /// post_notify() in a message of its own, while another posting uses outgoing_ (rare).
+  [[gnu::cold]] bool post_notify_apart(char data_type, const std::string& var, double dval,
+                                       std::string* sval, double time,
+                                       const std::string& source_aux);
   void fill_notify(Message& m, char data_type, const std::string& var, double dval,
                    std::string* sval, double time, const std::string& source_aux) const;
   bool post_and_record(Message&& msg);
@@ -198,6 +209,7 @@ class Comms {
 
   const std::string name_;
   const bool takes_fetch_promises_;
+  const std::string posted_community_;
   mutable std::mutex book_mutex_;
   /// Subscriptions in first-made order: a plain variable (var_pattern is the name, app_pattern
   /// unset) or a wildcard pair.

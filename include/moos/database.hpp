@@ -41,6 +41,7 @@
 // also removes the identical filter; a synchronous client's empty packet is answered; DB_QOS
 // and DB_VARSUMMARY are not published.
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -198,7 +199,7 @@ class Database {
     ClientId id = 0;
     std::string name;
     bool async = false;
-    MailSink* sink = nullptr;  ///< see connect()
+    MailSink* sink = nullptr;  ///< see connect(); null for a synchronous client
     std::vector<Message> pending;  ///< undelivered mail, in order
     /// Bytes of `pending`; for a client with a mail sink, of the mail the sink got in call
     /// `sink_call` (the bound is per call, and such a client is never listed for the flush).
@@ -272,9 +273,29 @@ class Database {
 
   /// process_packet() of the messages [first, last), which it moves from.
   void process_messages(ClientId id, Message* first, Message* last, double now_moos_s);
+  /// The connected client `id` (the latest sender is found without a look-up), or null.
+  Client* sender(ClientId id);
+  /// The end of a packet from `client` (protocol.md 5.2 steps 6-7): its reply, with `echo` (a
+  /// leading TIMING of an asynchronous client) first, and every asynchronous client's mail.
+  void end_packet(Client& client, Message* echo, double now_moos_s);
+  /// end_packet() of an asynchronous client's packet without a TIMING to echo: its mail, if
+  /// any waits (a client with a mail sink has none), leaves now.
+  void end_async_packet(Client& client) {
+    if (!client.pending.empty()) send_packet(client.id, std::move(client.pending));
+    client.pending.clear();
+    client.pending_bytes = 0;
+    flush_async_mail();
+  }
   // One handler per message type (protocol.md 5.2 step 3), each in the file of its rule.
   void handle_message(Client& client, Message&& msg, double now);
   void handle_notify(Client& client, Message&& msg, double now);
+  // handle_notify()'s rare ends, out of line.
+  [[gnu::cold]] void refuse_notify_form(ClientId id, const Message& msg);
+  /// Refuses `msg` (`size` bytes encoded) if it is too large for a client or the store.
+  [[gnu::cold]] bool refused_for_size(ClientId id, const Message& msg, std::size_t size);
+  [[gnu::cold]] void refuse_type_change(ClientId id, VarId var, char type);
+  /// Lists a variable the client posted for the first time in `published` and posted_cache.
+  [[gnu::cold]] void note_posted(Client& client, VarId var);
   void handle_register(ClientId id, const Message& msg, double now);
   void handle_unregister(ClientId id, const Message& msg);
   void handle_wildcard_register(ClientId id, const Message& msg, double now);
@@ -328,7 +349,16 @@ class Database {
   /// The mail bound's check and count for `size` more bytes to `client`: false when it takes no
   /// more mail.
   bool admit_mail(Client& client, std::size_t size);
-  void flush_async_mail();
+  /// Marks `client` overflowed and asks for its drop (admit_mail()'s rare end).
+  [[gnu::cold]] void overflow(Client& client);
+  /// Lists an asynchronous client without a mail sink for the flush of this call.
+  void list_for_flush(Client& client);
+  /// Sends the listed clients' mail (protocol.md 5.6) and ends the call (calls_).
+  void flush_async_mail() {
+    if (!async_with_mail_.empty()) send_listed_mail();  // none with only mail-sink clients
+    ++calls_;
+  }
+  void send_listed_mail();
   /// Moves the client's pending mail behind `reply`: all of it for an asynchronous client,
   /// what fits in config_.max_reply_bytes for a synchronous one.
   void take_pending(Client& client, std::vector<Message>& reply);
@@ -354,9 +384,11 @@ class Database {
   std::vector<Client*> async_with_mail_;
   /// Public calls completed (each ends in flush_async_mail()): Client::sink_call's clock.
   std::uint64_t calls_ = 0;
-  /// The client of the latest process_packet() (null when it disconnected): a client mostly
-  /// sends several packets in a row, found again without a look-up.
-  Client* last_sender_ = nullptr;
+  /// Clients that sent lately, by id modulo kRecentSenders (null, or a connected client):
+  /// the clients of a community take turns posting, and each is found again without a look-up
+  /// (connection layers number their connections in turn, so ids seldom share a place).
+  static constexpr std::size_t kRecentSenders = 16;
+  std::array<Client*, kRecentSenders> recent_senders_{};
 
   std::vector<OutPacket> output_;
   std::vector<DropRequest> drops_;

@@ -53,7 +53,8 @@ struct BusClientState final : MailSink {
     got_mail();
   }
   void got_mail() {
-    has_mail = true;
+    // Release suffices: fetch_into() takes the bus lock before it reads the inbox.
+    has_mail.store(true, std::memory_order_release);
     if (listed_as_woken || !handle || !handle->has_on_mail()) return;
     listed_as_woken = true;
     woken->push_back(this);
@@ -126,14 +127,9 @@ struct BusCore {
     state.has_mail = false;
   }
 
-  /// Hands `msg` to the Database as `state`'s packet and routes the output; the on-mail
-  /// callbacks of the clients that got mail are appended to `callbacks` (called after the lock).
-  void deliver(ClientState& state, Message&& msg, std::vector<std::function<void()>>& callbacks) {
-    db.process_message(state.id, std::move(msg), now());
-    settle(&callbacks);
-  }
-
-  /// deliver() of a packet of several messages.
+  /// Hands `messages` to the Database as one packet of `state`'s and routes the output; the
+  /// on-mail callbacks of the clients that got mail are appended to `callbacks` (called after
+  /// the lock). BusClient::transmit() does the same for one message.
   void deliver(ClientState& state, std::vector<Message> messages,
                std::vector<std::function<void()>>& callbacks) {
     db.process_packet(state.id, std::move(messages), now());
@@ -249,7 +245,9 @@ std::vector<std::string> InProcessBus::diagnostics() const {
 // ---- BusClient ------------------------------------------------------------------------------
 
 BusClient::BusClient(std::shared_ptr<BusCore> core, std::string name)
-    : Comms(std::move(name), /*takes_fetch_promises=*/false), core_(std::move(core)) {}
+    // The Database fills an empty community with the bus's: posted with it, it only compares.
+    : Comms(std::move(name), /*takes_fetch_promises=*/false, core->options.community),
+      core_(std::move(core)) {}
 
 BusClient::~BusClient() {
   if (!state_) return;  // refused at connect
@@ -290,30 +288,34 @@ void BusClient::hand_over_mail(std::vector<Message>& mail) {
 
 bool BusClient::transmit(Message&& msg) {
   if (!state_) return false;
-  std::vector<std::function<void()>> callbacks;
-  std::string refusal;
-  {
-    std::lock_guard<LightMutex> lock(core_->mutex);
-    BusCore::ClientState& state = *state_;
-    if (state.connected) {
-      core_->deliver(state, std::move(msg), callbacks);
-    } else {
-      // Kept for the reconnect, as TcpClient keeps it; registrations are replayed instead.
-      if (msg.type != msg_type::kNotify) return false;
-      const std::size_t size = msg.encoded_size();
-      refusal = state.outbox_bound.refusal(size);
-      if (refusal.empty()) {
-        state.outbox_bound.add(size);
-        state.outbox.push_back(std::move(msg));
-      }
-    }
-  }
-  if (!refusal.empty()) {
-    count_posting_dropped("NOTIFY " + base::excerpt(msg.key) + " refused: " + refusal);
-    return false;
-  }
-  for (auto& cb : callbacks) cb();
+  std::unique_lock<LightMutex> lock(core_->mutex);
+  if (!state_->connected) return keep_for_reconnect(std::move(msg), lock);
+  core_->db.process_message(state_->id, std::move(msg), core_->now());
+  if (core_->db.has_output()) core_->route_output();  // the usual posting: all its mail was sunk
+  if (!core_->woken.empty()) wake_readers(lock);
   return true;
+}
+
+void BusClient::wake_readers(std::unique_lock<LightMutex>& lock) {
+  std::vector<std::function<void()>> callbacks;
+  core_->settle(&callbacks);
+  lock.unlock();
+  for (auto& cb : callbacks) cb();
+}
+
+bool BusClient::keep_for_reconnect(Message&& msg, std::unique_lock<LightMutex>& lock) {
+  // Kept for the reconnect, as TcpClient keeps it; registrations are replayed instead.
+  if (msg.type != msg_type::kNotify) return false;
+  const std::size_t size = msg.encoded_size();
+  const std::string refusal = state_->outbox_bound.refusal(size);
+  if (refusal.empty()) {
+    state_->outbox_bound.add(size);
+    state_->outbox.push_back(std::move(msg));
+    return true;
+  }
+  lock.unlock();
+  count_posting_dropped("NOTIFY " + base::excerpt(msg.key) + " refused: " + refusal);
+  return false;
 }
 
 void BusClient::simulate_disconnect() {

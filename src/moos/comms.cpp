@@ -196,18 +196,22 @@ bool Comms::notify_binary(const std::string& var, const std::string& bytes,
 bool Comms::post_notify(char data_type, const std::string& var, double dval, std::string* sval,
                         std::optional<double> time_s, const std::string& source_aux) {
   const double time = time_s ? *time_s : moos_time();
-  if (outgoing_in_use_.exchange(true, std::memory_order_acquire)) {
-    // Another posting (another thread, or a callback inside a posting) is using it.
-    Message m;
-    fill_notify(m, data_type, var, dval, sval, time, source_aux);
-    return post_and_record(std::move(m));
-  }
+  if (outgoing_in_use_.exchange(true, std::memory_order_acquire))
+    return post_notify_apart(data_type, var, dval, sval, time, source_aux);
   fill_notify(outgoing_, data_type, var, dval, sval, time, source_aux);
   const bool posted = post_and_record(std::move(outgoing_));
   // Whatever storage the transport left in it stays for the next posting, within a bound.
   if (Inbox::storage_bytes(outgoing_) > Inbox::kMaxKeptBytes) outgoing_ = Message{};
   outgoing_in_use_.store(false, std::memory_order_release);
   return posted;
+}
+
+bool Comms::post_notify_apart(char data_type, const std::string& var, double dval,
+                              std::string* sval, double time, const std::string& source_aux) {
+  // Another posting (another thread, or a callback inside a posting) is using outgoing_.
+  Message m;
+  fill_notify(m, data_type, var, dval, sval, time, source_aux);
+  return post_and_record(std::move(m));
 }
 
 void Comms::fill_notify(Message& m, char data_type, const std::string& var, double dval,
@@ -224,7 +228,11 @@ void Comms::fill_notify(Message& m, char data_type, const std::string& var, doub
   } else {
     m.source_aux = source_aux;
   }
-  m.community.clear();
+  if (posted_community_.empty()) {
+    m.community.clear();
+  } else if (!base::same_text(m.community, posted_community_)) {
+    m.community = posted_community_;
+  }
   if (!base::same_text(m.key, var)) m.key = var;
   m.time = time;
   m.dval = dval;

@@ -90,7 +90,7 @@ bool Database::connect(ClientId id, const std::vector<Message>& identification,
   client.id = id;
   client.name = ident->sval;
   client.async = base::iequals(ident->key, kAsynchronousKey);
-  client.sink = mail_sink;
+  client.sink = client.async ? mail_sink : nullptr;  // a synchronous client's mail waits
   client_by_name_[client.name] = id;
   const std::string name = client.name;
   clients_.emplace(id, std::move(client));
@@ -121,7 +121,8 @@ void Database::disconnect(ClientId id, double now_moos_s) {
          " messages refused in total");
   const std::string name = client.name;
   client_by_name_.erase(name);
-  if (last_sender_ == &client) last_sender_ = nullptr;
+  Client*& cached = recent_senders_[id % kRecentSenders];
+  if (cached == &client) cached = nullptr;
   clients_.erase(it);
 
   publish_db_string("DB_EVENT", "disconnected=" + name, now_moos_s);
@@ -137,16 +138,32 @@ void Database::process_packet(ClientId id, std::vector<Message> packet, double n
 }
 
 void Database::process_message(ClientId id, Message&& msg, double now_moos_s) {
-  process_messages(id, &msg, &msg + 1, now_moos_s);
+  // The in-process bus's every posting: a lone NOTIFY, so no TIMING to echo and no loop.
+  if (msg.type != mt::kNotify) return process_messages(id, &msg, &msg + 1, now_moos_s);
+  Client* client = sender(id);
+  if (!client) return;
+  handle_notify(*client, std::move(msg), now_moos_s);
+  if (client->async) {
+    end_async_packet(*client);  // inline: the bus's every posting ends here
+  } else {
+    end_packet(*client, nullptr, now_moos_s);
+  }
+}
+
+Database::Client* Database::sender(ClientId id) {
+  Client*& cached = recent_senders_[id % kRecentSenders];
+  if (!cached || cached->id != id) {
+    const auto found = clients_.find(id);
+    if (found == clients_.end()) return nullptr;
+    cached = &found->second;
+  }
+  return cached;
 }
 
 void Database::process_messages(ClientId id, Message* first, Message* last, double now_moos_s) {
-  if (!last_sender_ || last_sender_->id != id) {
-    const auto found = clients_.find(id);
-    if (found == clients_.end()) return;
-    last_sender_ = &found->second;
-  }
-  Client& client = *last_sender_;
+  Client* sending = sender(id);
+  if (!sending) return;
+  Client& client = *sending;
   // Step 2: a leading TIMING is echoed to asynchronous clients; synchronous clients never
   // receive TIMING (protocol.md 5.6), so theirs is dropped. TIMING elsewhere is ignored. The
   // echo is made after the other messages: handling them leaves this one as it is.
@@ -156,25 +173,23 @@ void Database::process_messages(ClientId id, Message* first, Message* last, doub
     ++first;
   }
   for (; first != last; ++first) handle_message(client, std::move(*first), now_moos_s);
+  end_packet(client, echo, now_moos_s);
+}
 
+void Database::end_packet(Client& client, Message* echo, double now_moos_s) {
   // Step 6: the reply. Sync: NULL first, always. Async: echo first, only if non-empty. Handling
   // erases no client (drops are requests), so `client` is still valid.
-  if (client.async && !echo) {
-    if (!client.pending.empty()) send_packet(id, std::move(client.pending));
-    client.pending.clear();
-    client.pending_bytes = 0;
+  if (client.async && !echo) return end_async_packet(client);
+  std::vector<Message> reply;
+  if (!client.async) {
+    reply.push_back(null_reply(now_moos_s));
   } else {
-    std::vector<Message> reply;
-    if (!client.async) {
-      reply.push_back(null_reply(now_moos_s));
-    } else {
-      reply.push_back(std::move(*echo));
-      reply.back().dval = now_moos_s;  // server local warped time; the DB's skew is 0
-      reply.back().dval2 = 0.0;        // outgoing delay for this client, seconds (none)
-    }
-    take_pending(client, reply);
-    send_packet(id, std::move(reply));
+    reply.push_back(std::move(*echo));
+    reply.back().dval = now_moos_s;  // server local warped time; the DB's skew is 0
+    reply.back().dval2 = 0.0;        // outgoing delay for this client, seconds (none)
   }
+  take_pending(client, reply);
+  send_packet(client.id, std::move(reply));
   // Step 7, for every asynchronous client and on every packet (protocol.md 5.6 SHOULD).
   flush_async_mail();
 }
@@ -235,7 +250,7 @@ std::size_t Database::pending_bytes(ClientId id) const {
   const auto it = clients_.find(id);
   if (it == clients_.end()) return 0;
   const Client& client = it->second;
-  return client.async && client.sink ? 0 : client.pending_bytes;  // a sink took it all
+  return client.sink ? 0 : client.pending_bytes;  // a sink took it all
 }
 
 std::optional<Message> Database::latest(const std::string& name) const {

@@ -20,10 +20,12 @@ void Database::fan_out(Variable& var, Message&& msg, double now) {
   const std::size_t size = msg.encoded_size();  // one size for every reader
   Client* previous = nullptr;
   for (auto& [subscriber, sub] : var.subscribers) {
-    const bool due = sub.interval_s <= 0.0 || !sub.last_delivery_moos_s ||
-                     now - *sub.last_delivery_moos_s >= sub.interval_s;
-    if (!due) continue;
-    sub.last_delivery_moos_s = now;
+    // Only a throttled subscription looks at its last delivery (an interval changes only with
+    // a new subscription, which has never delivered).
+    if (sub.interval_s > 0.0) {
+      if (sub.last_delivery_moos_s && now - *sub.last_delivery_moos_s < sub.interval_s) continue;
+      sub.last_delivery_moos_s = now;
+    }
     if (previous) queue_fan_out_mail(*previous, msg, size, false);
     previous = sub.client;
   }
@@ -52,24 +54,29 @@ Message Database::snapshot(const Variable& var) const {
 
 bool Database::admit_mail(Client& client, std::size_t size) {
   if (client.overflowed) return false;
-  const bool sunk = client.async && client.sink;
-  if (sunk && client.sink_call != calls_) {  // the first mail of this call
+  if (client.sink && client.sink_call != calls_) {  // the first mail of this call
     client.sink_call = calls_;
     client.pending_bytes = 0;
   }
   if (client.pending_bytes + size > config_.max_pending_bytes) {
-    client.overflowed = true;
-    drops_.push_back(DropRequest{
-        client.id, "undelivered mail would exceed " + std::to_string(config_.max_pending_bytes) +
-                       " bytes (the client does not collect its mail)"});
+    overflow(client);
     return false;
   }
   client.pending_bytes += size;
-  if (client.async && !sunk && !client.queued_for_flush) {
-    client.queued_for_flush = true;
-    async_with_mail_.push_back(&client);
-  }
+  if (client.async && !client.sink && !client.queued_for_flush) list_for_flush(client);
   return true;
+}
+
+void Database::list_for_flush(Client& client) {
+  client.queued_for_flush = true;
+  async_with_mail_.push_back(&client);
+}
+
+void Database::overflow(Client& client) {
+  client.overflowed = true;
+  drops_.push_back(DropRequest{
+      client.id, "undelivered mail would exceed " + std::to_string(config_.max_pending_bytes) +
+                     " bytes (the client does not collect its mail)"});
 }
 
 void Database::queue_mail(ClientId id, Message&& msg) {
@@ -78,7 +85,7 @@ void Database::queue_mail(ClientId id, Message&& msg) {
 
 void Database::queue_fan_out_mail(Client& client, Message& msg, std::size_t size, bool take) {
   if (!admit_mail(client, size)) return;
-  if (client.async && client.sink) {  // delivered now: no packet per message
+  if (client.sink) {  // delivered now: no packet per message
     if (take) {
       client.sink->take_mail(msg);
     } else {
@@ -114,7 +121,7 @@ void Database::take_pending(Client& client, std::vector<Message>& reply) {
                        client.pending.begin() + static_cast<std::ptrdiff_t>(taken));
 }
 
-void Database::flush_async_mail() {
+void Database::send_listed_mail() {
   for (Client* client : async_with_mail_) {
     client->queued_for_flush = false;
     client->pending_bytes = 0;  // the bound is per call
@@ -123,7 +130,6 @@ void Database::flush_async_mail() {
     client->pending.clear();
   }
   async_with_mail_.clear();
-  ++calls_;
 }
 
 void Database::send_packet(ClientId to, std::vector<Message> messages) {

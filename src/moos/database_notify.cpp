@@ -57,29 +57,52 @@ void overwrite_if_changed(std::string& to, const std::string& from) {
 }  // namespace
 
 void Database::handle_notify(Client& client, Message&& msg, double now) {
-  const ClientId id = client.id;
-  if (msg.key.empty()) return refuse(id, "NOTIFY with an empty variable name refused");
-  if (!is_value_type(msg.data_type))
-    return refuse(id, "NOTIFY " + base::excerpt(msg.key) + " with data type '" + msg.data_type +
-                          "' refused (expected D, S or B)");
+  // The refusals' texts are built out of line: the usual NOTIFY runs through compact code.
+  if (msg.key.empty() || !is_value_type(msg.data_type))
+    return refuse_notify_form(client.id, msg);
   if (msg.source.empty()) msg.source = client.name;
   if (msg.community.empty()) msg.community = config_.community;
-  if (const std::size_t size = msg.encoded_size(); size > kMaxMessageBytes)
-    return refuse(id, "NOTIFY " + base::excerpt(msg.key) + " refused: its " +
-                          std::to_string(size) + " bytes exceed the " +
-                          std::to_string(kMaxMessageBytes) + " a client accepts in a message");
-  if (const std::string why = store_refusal(msg, true); !why.empty())
-    return refuse(id, "NOTIFY " + base::excerpt(msg.key) + " refused: " + why);
+  if (const std::size_t size = msg.encoded_size();
+      size > kMaxMessageBytes ||
+      stored_bytes_ + most_stored_bytes(msg, true) > config_.max_stored_bytes) {
+    if (refused_for_size(client.id, msg, size)) return;
+  }
   const char type = msg.data_type;
   // A name the client posted before needs no hashing, nor another look at `published`.
   const PostedVariable* posted = find_posted(client, msg.key);
   const VarId var = posted ? posted->var : find_or_create(msg.key);
   publish(var, std::move(msg), now);
   if (vars_[var].data_type != type)
-    return refuse(id, "NOTIFY " + base::excerpt(vars_[var].name) + " as " + type_name(type) +
-                          " refused: the variable is " + type_name(vars_[var].data_type) +
-                          " (fixed by its first write)");
-  if (posted) return;
+    return refuse_type_change(client.id, var, type);
+  if (!posted) note_posted(client, var);
+}
+
+void Database::refuse_notify_form(ClientId id, const Message& msg) {
+  if (msg.key.empty()) return refuse(id, "NOTIFY with an empty variable name refused");
+  refuse(id, "NOTIFY " + base::excerpt(msg.key) + " with data type '" + msg.data_type +
+                 "' refused (expected D, S or B)");
+}
+
+bool Database::refused_for_size(ClientId id, const Message& msg, std::size_t size) {
+  if (size > kMaxMessageBytes) {
+    refuse(id, "NOTIFY " + base::excerpt(msg.key) + " refused: its " + std::to_string(size) +
+                   " bytes exceed the " + std::to_string(kMaxMessageBytes) +
+                   " a client accepts in a message");
+    return true;
+  }
+  const std::string why = store_refusal_near_bound(msg, true);
+  if (why.empty()) return false;
+  refuse(id, "NOTIFY " + base::excerpt(msg.key) + " refused: " + why);
+  return true;
+}
+
+void Database::refuse_type_change(ClientId id, VarId var, char type) {
+  refuse(id, "NOTIFY " + base::excerpt(vars_[var].name) + " as " + type_name(type) +
+                 " refused: the variable is " + type_name(vars_[var].data_type) +
+                 " (fixed by its first write)");
+}
+
+void Database::note_posted(Client& client, VarId var) {
   client.published.insert(var);
   remember_posted(client, var);
 }

@@ -5,6 +5,7 @@
 
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "moos/codec.hpp"
@@ -58,7 +59,8 @@ void leave_litter(Message& msg) {
 /// A Comms that records what it would send, with a settable connection state.
 class RecordingComms final : public Comms {
  public:
-  RecordingComms() : Comms("pTest") {}
+  explicit RecordingComms(std::string posted_community = {})
+      : Comms("pTest", /*takes_fetch_promises=*/true, std::move(posted_community)) {}
   bool is_connected() const override { return connected; }
   std::uint64_t connection_count() const override { return 1; }
   std::string community() const override { return "alpha"; }
@@ -155,6 +157,16 @@ TEST(CommsMessages, NotifyFieldsFollowLibMoosDefaults_2_2) {
   EXPECT_EQ(c.sent[3].source, "pTest");
   EXPECT_EQ(c.sent[3].time, 1700000000.0);  // -1 means now
   for (const auto& m : c.sent) EXPECT_EQ(m.community, "");  // libMOOS leaves it empty
+}
+
+TEST(CommsMessages, ATransportsPostedCommunityIsInEveryNotifyWhateverWasLeft) {
+  RecordingComms c("alpha");  // as BusClient passes its bus's community
+  c.litter = true;            // each message sent leaves "left" in the community
+  c.notify("S", std::string("text"));
+  c.notify("D", 1.5);
+  c.notify_binary("B", std::string("\0\1", 2));
+  ASSERT_EQ(c.sent.size(), 3u);
+  for (const auto& m : c.sent) EXPECT_EQ(m.community, "alpha");
 }
 
 TEST(CommsMessages, EachNotifyIsBuiltWholeWhateverTheTransportLeftOfTheLast) {

@@ -84,6 +84,24 @@ TEST_F(DatabaseTest, NameIsFreeAgainAfterDisconnect_1_9) {
   EXPECT_TRUE(db_.connect(kB, {identification("pA", true)}, kT0 + 2));
 }
 
+TEST_F(DatabaseTest, LoneNotifiesOfClientsWhoseIdsShareACachePlaceKeepTheirSenders_5_2) {
+  // The DB finds recent senders by id modulo 16 without a look-up; a lone NOTIFY takes a
+  // path of its own. Neither may mix two clients up, nor serve a disconnected one.
+  const ClientId twin = kA + 16;
+  connect(kA, "pA", true);
+  connect(twin, "pTwin", true);
+  db_.process_message(kA, notify_double("X", 1, ""), kT0);  // an empty source: the sender's
+  EXPECT_EQ(db_.latest("X")->source, "pA");
+  db_.process_message(twin, notify_double("X", 2, ""), kT0);
+  EXPECT_EQ(db_.latest("X")->source, "pTwin");
+  db_.disconnect(kA, kT0);
+  db_.process_message(kA, notify_double("X", 3, ""), kT0);  // no longer a client: ignored
+  EXPECT_EQ(db_.latest("X")->dval, 2);
+  db_.process_message(twin, notify_double("X", 4, ""), kT0);
+  EXPECT_EQ(db_.latest("X")->source, "pTwin");
+  EXPECT_EQ(db_.latest("X")->dval, 4);
+}
+
 TEST_F(DatabaseTest, KeyAsynchronousIsCaseInsensitive_1_5) {
   Message ident = identification("pA", false);
   ident.key = "ASYNCHRONOUS";
