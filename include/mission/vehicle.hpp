@@ -110,6 +110,15 @@ class SurveyVehicle {
   /// heading_of(waypoint i - waypoint i-1) (0 for i = 0), once per route: the desired heading
   /// while turning onto line i, which step() would otherwise compute every step of the turn.
   std::vector<double> leg_heading_deg_;
+  /// The track line to each waypoint, from the previous one (waypoint 0's from where the route
+  /// started: segment_start_m while that is the target), its length and direction, once per
+  /// route: step() would otherwise compute them (a square root, three divisions) every step.
+  struct Leg {
+    glm::dvec2 track_m;
+    double length_m;
+    glm::dvec2 unit;  ///< track_m / length_m; unused when the length is 0
+  };
+  std::vector<Leg> legs_;
   State state_;
   std::optional<double> done_time_s_;
   Pose last_pose_;

@@ -70,9 +70,13 @@ void SurveyVehicle::set_waypoints(std::vector<glm::dvec2> waypoints_m) {
   waypoints_m_ = std::move(waypoints_m);
   anticipation_m_.clear();
   leg_heading_deg_.clear();
+  legs_.clear();
   for (std::size_t i = 0; i < waypoints_m_.size(); ++i) {
     anticipation_m_.push_back(turn_anticipation_m(i));
     leg_heading_deg_.push_back(i == 0 ? 0.0 : heading_of(waypoints_m_[i] - waypoints_m_[i - 1]));
+    const glm::dvec2 track = waypoints_m_[i] - (i == 0 ? state_.position_m : waypoints_m_[i - 1]);
+    const double length_m = glm::length(track);
+    legs_.push_back(Leg{track, length_m, length_m > 0.0 ? track / length_m : glm::dvec2(0.0)});
   }
   state_.target = 0;
   state_.turning = false;
@@ -87,13 +91,16 @@ double SurveyVehicle::grid_time(std::uint64_t step_index) const {
 
 void SurveyVehicle::step(State& s, double dt_s, bool whole_step) const {
   // 1. Waypoint bookkeeping (bounded by the number of waypoints). The track line of the target
-  //    kept is step 2's too.
+  //    kept is step 2's too (legs_: the line from segment_start_m to the target).
+  const Leg* leg = nullptr;
   glm::dvec2 track{0.0, 0.0};
   double length_m = 0.0;
   while (s.target < waypoints_m_.size()) {
     const glm::dvec2 target = waypoints_m_[s.target];
-    track = target - s.segment_start_m;
-    length_m = glm::length(track);
+    leg = &legs_[s.target];
+    assert(leg->track_m == target - s.segment_start_m);
+    track = leg->track_m;
+    length_m = leg->length_m;
     const bool captured = glm::length(target - s.position_m) <= params_.capture_radius_m;
     const double along_m =
         length_m > 0.0 ? glm::dot(s.position_m - s.segment_start_m, track) / length_m : 0.0;
@@ -111,7 +118,7 @@ void SurveyVehicle::step(State& s, double dt_s, bool whole_step) const {
   const glm::dvec2 target = waypoints_m_[s.target];
   glm::dvec2 lead_point = target;
   if (length_m > 0.0) {
-    const glm::dvec2 unit = track / length_m;
+    const glm::dvec2 unit = leg->unit;
     const double along_m =
         std::clamp(glm::dot(s.position_m - s.segment_start_m, unit), 0.0, length_m);
     lead_point = s.segment_start_m + unit * std::min(along_m + params_.lead_m, length_m);

@@ -103,6 +103,30 @@ TEST(Vehicle, IdleUntilGivenARouteAndEmptyRouteIsDoneAtOnce) {
   EXPECT_GT(glm::length(moving.position_m - glm::dvec2(5, 5)), 5.0);
 }
 
+// set_waypoints keeps each leg's line for step(): the first one runs from where the vehicle is
+// when the route arrives, not from where an earlier route started.
+TEST(Vehicle, ANewRouteFliesAsAVehicleStartedWhereTheRouteArrived) {
+  VehicleParams p;
+  p.step_s = 0.0625;  // a binary fraction: both vehicles' grids meet exactly at t = 20
+  SurveyVehicle rerouted(p, Pose{{0, 0}, 0, 0, 0.0});
+  rerouted.set_waypoints({{0, 100}, {100, 100}});
+  rerouted.advance_to(20.0);
+  const SurveyVehicle::State at = rerouted.state();
+  ASSERT_EQ(at.step_index, 320U);
+  SurveyVehicle fresh(p, Pose{at.position_m, at.heading_deg, 0, 20.0});
+  const std::vector<glm::dvec2> route{{-50, 60}, {-50, 120}, {20, 120}};
+  rerouted.set_waypoints(route);
+  fresh.set_waypoints(route);
+  for (double t = 20.25; t <= 400.0 && !fresh.done(); t += 0.25) {
+    const Pose a = rerouted.advance_to(t);
+    const Pose b = fresh.advance_to(t);
+    ASSERT_EQ(a.position_m, b.position_m) << "at t=" << t;
+    ASSERT_EQ(a.heading_deg, b.heading_deg) << "at t=" << t;
+  }
+  EXPECT_TRUE(fresh.done());
+  EXPECT_TRUE(rerouted.done());
+}
+
 TEST(Vehicle, InvalidParametersAreNamed) {
   VehicleParams p;
   p.speed_mps = 0;

@@ -18,6 +18,7 @@
 #include <string>
 #include <string_view>
 
+#include "base/fmt_fixed.hpp"
 #include "hazard/geodesy.hpp"
 #include "hazard/messages/parsed.hpp"
 
@@ -87,6 +88,7 @@ class NodeReportMemo {
   std::size_t used_ = 0;   // entries in use
   std::size_t next_ = 0;   // the entry replaced next
   Parsed<NodeReport> unkept_;  // the last parse that is not kept
+  base::LongWholeCache time_whole_;  // the digits of the last TIME's whole seconds
   std::size_t texts_read_ = 0;
 };
 

@@ -310,13 +310,28 @@ struct DirectNumbers {
   double lat = 0, lon = 0, time = 0;  // written when the report has them
 };
 
+// FMT(value, Decimals) at `p` (base::write_fmt_fixed), out of line: one copy per precision
+// that a report's numbers share. A copy inlined per field made format() 8 KB, fetched anew from
+// L2 for every report (the other apps' code runs in between).
+template <int Decimals>
+[[gnu::noinline]] char* put_fixed(char* p, double value, double& read_back) {
+  return base::write_fmt_fixed<Decimals>(p, value, read_back);
+}
+
+// ",TIME=" and FMT(t, 3): a time stamp's whole seconds (ten digits) are the same for a second of
+// reports, from every vehicle of the process: `whole` keeps their digits.
+[[gnu::noinline]] char* put_time(char* p, double value, double& read_back,
+                                 base::LongWholeCache& whole) {
+  std::memcpy(p, ",TIME=", 6);
+  return base::write_fmt_fixed<3>(p + 6, value, read_back, &whole);
+}
+
 // A key (a literal: its length is a constant and the copy a store or two) and the number FMT
 // writes after it; nullptr when the number is outside base::write_fmt_fixed's fast path.
 template <int Decimals, std::size_t N>
-[[gnu::always_inline]] inline char* put_number(char* p, const char (&key)[N], double value,
-                                               double& read_back) {
+char* put_number(char* p, const char (&key)[N], double value, double& read_back) {
   std::memcpy(p, key, N - 1);
-  return base::write_fmt_fixed<Decimals>(p + N - 1, value, read_back);
+  return put_fixed<Decimals>(p + N - 1, value, read_back);
 }
 
 // A name or type (mostly 3 to 16 bytes) copied by two overlapping fixed-size loads, not a
@@ -345,17 +360,23 @@ void copy_ends(char* to, const char* from, std::size_t n) {
   return p + n;
 }
 
+// Whether write_direct takes a report's name and type (when not known to pass already).
+// Out of line: a vehicle's report is mostly checked once, when its name is first written.
+[[gnu::noinline]] bool direct_strings(const NodeReport& r) {
+  return plain_vehicle_name(r.name) &&
+         !(r.type && (r.type->size() > kMaxDirectTypeBytes || !scans_as_written(*r.type)));
+}
+
 // The usual report's text at `out` (room for kDirectTextBytes), the same bytes
 // write_node_report writes: its length, and in `n` what each number reads as. 0 for anything
 // else (a name that is not plain, a long or unscannable type, a number outside the fast path):
-// `checked` when the name and type are known to pass (same_name_and_type).
+// `checked` when the name and type are known to pass (same_name_and_type). `time_whole`: TIME's
+// whole seconds, kept from the last report written.
 // those go the general way. Such a text is accepted as written (accepted_as_written) exactly
 // when its numbers are within out_of_range's limits (direct_in_range).
-std::size_t write_direct(const NodeReport& r, char* out, DirectNumbers& n, bool checked) {
-  if (!checked) {
-    if (!plain_vehicle_name(r.name)) return 0;
-    if (r.type && (r.type->size() > kMaxDirectTypeBytes || !scans_as_written(*r.type))) return 0;
-  }
+std::size_t write_direct(const NodeReport& r, char* out, DirectNumbers& n, bool checked,
+                         base::LongWholeCache& time_whole) {
+  if (!checked && !direct_strings(r)) return 0;
   char* p = put_text(out, "NAME=");
   p = put_text(p, r.name);
   if (!(p = put_number<2>(p, ",X=", r.x_m, n.x))) return 0;
@@ -364,7 +385,7 @@ std::size_t write_direct(const NodeReport& r, char* out, DirectNumbers& n, bool 
   if (!(p = put_number<2>(p, ",HDG=", r.heading_deg, n.hdg))) return 0;
   if (r.lat_deg && !(p = put_number<kLatLonDecimals>(p, ",LAT=", *r.lat_deg, n.lat))) return 0;
   if (r.lon_deg && !(p = put_number<kLatLonDecimals>(p, ",LON=", *r.lon_deg, n.lon))) return 0;
-  if (r.time_s && !(p = put_number<3>(p, ",TIME=", *r.time_s, n.time))) return 0;
+  if (r.time_s && !(p = put_time(p, *r.time_s, n.time, time_whole))) return 0;
   if (r.type) {
     p = put_text(p, ",TYPE=");
     p = put_text(p, *r.type);
@@ -386,11 +407,23 @@ bool same_name_and_type(const NodeReport& kept, const NodeReport& r) {
   return kept.type && base::same_text(*kept.type, *r.type);
 }
 
+// A direct writing's name and type into `r` (an empty type is none), when they are not known to
+// be the ones `r` holds. Out of line: a vehicle's entry mostly holds them already.
+[[gnu::noinline]] void assign_direct_strings(const NodeReport& from, NodeReport& r) {
+  if (!base::same_text(r.name, from.name)) r.name.assign(from.name);
+  if (from.type && !from.type->empty()) {
+    if (!r.type) r.type.emplace();
+    if (!base::same_text(*r.type, *from.type)) r.type->assign(*from.type);
+  } else {
+    r.type.reset();
+  }
+}
+
 // assign_as_written for a direct writing: the name and type are the report's own bytes
 // (`same_strings`: r has them already).
 void assign_direct(const NodeReport& from, const DirectNumbers& n, NodeReport& r,
                    bool same_strings) {
-  if (!same_strings && !base::same_text(r.name, from.name)) r.name.assign(from.name);
+  if (!same_strings) assign_direct_strings(from, r);
   r.x_m = n.x;
   r.y_m = n.y;
   r.speed_mps = n.spd;
@@ -401,13 +434,6 @@ void assign_direct(const NodeReport& from, const DirectNumbers& n, NodeReport& r
   r.lon_deg = from.lon_deg ? std::optional<double>(n.lon) : std::nullopt;
   r.time_s = from.time_s ? std::optional<double>(n.time) : std::nullopt;
   r.placed_from_lat_lon = false;
-  if (same_strings) return;
-  if (from.type && !from.type->empty()) {
-    if (!r.type) r.type.emplace();
-    if (!base::same_text(*r.type, *from.type)) r.type->assign(*from.type);
-  } else {
-    r.type.reset();
-  }
 }
 
 }  // namespace
@@ -478,7 +504,7 @@ std::string NodeReportMemo::format(const NodeReport& report) {
                      same_name_and_type(*replaced.parsed.value, report);
   char buffer[kDirectTextBytes];
   DirectNumbers numbers;
-  const std::size_t size = write_direct(report, buffer, numbers, known);
+  const std::size_t size = write_direct(report, buffer, numbers, known, time_whole_);
   if (size == 0) return format_general(report);
   const std::string_view text(buffer, size);
   // Without a placement, as parse() keeps it: a written report always has X and Y.

@@ -111,6 +111,28 @@ TEST(NodeReportMemoFormat, KeepsWhatTheParseOfItsTextGives) {
   EXPECT_GT(kept, 10000);  // most reports are kept from the writing, not read back
 }
 
+// TIME's whole seconds are kept from one report to the next (the digits of a ten-digit time
+// stamp): reports a tenth of a second apart, across whole seconds, from two vehicles, and
+// times that leave the kept digits (short, negative, past 2^53 units) and come back.
+TEST(NodeReportMemoFormat, TimeStampsThatShareTheirWholeSecondsAreWrittenAsAlone) {
+  NodeReportMemo memo;
+  NodeReport r;
+  r.x_m = 10.0;
+  r.y_m = -5.0;
+  r.speed_mps = 1.5;
+  r.heading_deg = 90.0;
+  r.type = "UUV";
+  const double odd[] = {12.5, -1700000001.25, 99999.999, 1e13, 1700000000.0};
+  for (int i = 0; i < 400; ++i) {
+    r.name = i % 2 == 0 ? "archie" : "betty";
+    r.time_s = i % 37 == 0 ? odd[(i / 37) % 5] : 1699999998.0 + 0.1 * i;
+    const std::string text = memo.format(r);
+    ASSERT_EQ(text, format_node_report(r));
+    expect_same_parse(memo.parse(text, nullptr), parse_node_report(text), text);
+    if (HasFailure()) return;
+  }
+}
+
 TEST(NodeReportMemoFormat, AUsualReportIsKeptFromTheWritingAndAnOddOneIsRead) {
   NodeReportMemo memo;
   NodeReport r;
