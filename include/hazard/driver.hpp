@@ -54,6 +54,9 @@ class Driver {
   TimedOutputs start(double now_s);
   /// One piece of mail, taken at its time clamped to [last time given, now_s].
   TimedOutputs deliver(const Mail& mail, double now_s);
+  /// The same, appended to `out` (a caller's reused Outputs: most mail posts nothing, and an
+  /// Outputs returned per piece of mail is five vectors to move and destroy); returns the time.
+  double deliver(const Mail& mail, double now_s, Outputs& out);
   /// The same, at the mail's own time (never before the last time given).
   TimedOutputs deliver(const Mail& mail) { return deliver(mail, mail.time_s); }
   /// One iteration at max(now_s, last time given).

@@ -18,7 +18,9 @@
 // sub-stepping or sweeping (sensing_track.hpp). LAT/LON-only node reports are placed through
 // the setup's GeoPlacement (geodesy.hpp). Interval rules use time_rules.hpp.
 // Scale: a sensing vehicle queries the spatial grid for its swath's bounding box only; per-
-// (vehicle, object) state exists only for objects that vehicle has had in its swath.
+// (vehicle, object) state exists only for objects that vehicle has had in its swath. While
+// nothing is inside, an iteration whose swath lies in a box around an earlier pose known to hold
+// no object (QuietBox) builds no swath at all.
 // Rejected alternative: evaluating every object per vehicle per iteration (the original;
 // docs/performance.md).
 // Layout: one file per rule, each named after it: engine.cpp (the vehicles, start-up and step's
@@ -218,6 +220,9 @@ class Engine {
   void post_options_summary_if_due(double now_s, Outputs& out);
   void sense(VehicleId id, double now_s, Outputs& out);
   bool sensor_on(const VehicleState& v) const;
+  /// True when no object of the field can be in v's swath at its pose (v.quiet_box).
+  bool quiet(VehicleState& v) const;
+  void requery_quiet_box(QuietBox& q, glm::dvec2 position_m, double reach_m) const;
   bool gates_pass(double speed_mps, const std::optional<HeadingHistory>& history) const;
   void post_swath(const VehicleState& v, const Swath& swath, bool on, Outputs& out) const;
   void update_entries(VehicleState& v, const Swath& swath, double now_s, Outputs& out);
@@ -244,6 +249,10 @@ class Engine {
   /// The id of the vehicle `name`, recorded (in name order) when first seen, its last mail time
   /// set to `now_s`; nullopt (with a warning and a counted drop) when the table is full.
   std::optional<VehicleId> vehicle_id(std::string_view name, double now_s, Outputs& out);
+  /// vehicle_id past last_ids_: find_or_add_vehicle, its id then kept in last_ids_.
+  std::optional<VehicleId> hashed_vehicle_id(std::string_view name, double now_s, Outputs& out);
+  /// The hashed cache (recent_ids_), the name index, else a new record.
+  std::optional<VehicleId> find_or_add_vehicle(std::string_view name, double now_s, Outputs& out);
   /// A slot for a new vehicle: a new one below kMaxVehicles, else the place of the vehicle
   /// silent longest if it has been silent for kForgetSilentAfter_s.
   std::optional<VehicleId> free_vehicle_slot(std::string_view name, double now_s, Outputs& out);
@@ -275,7 +284,13 @@ class Engine {
   /// last found for a name, in the slot of the name's hash. A hit is checked against the
   /// vehicle's name, so a stale slot (a forgotten vehicle, a collision) is only a miss.
   static constexpr std::size_t kRecentIdSlots = 1024;
+  static constexpr VehicleId kNoVehicleId = ~VehicleId{0};
   std::array<VehicleId, kRecentIdSlots> recent_ids_{};
+  /// In front of that cache: the ids last found by hashing (mail mostly alternates among a
+  /// vehicle or two), replaced in turn; checked against the name like a slot, without a hash.
+  /// Filled with an id no vehicle has.
+  std::array<VehicleId, 2> last_ids_{kNoVehicleId, kNoVehicleId};
+  std::size_t next_last_id_ = 0;
   /// The same in front of the field's label lookup (kRecentObjectSlots).
   std::array<ObjectId, kRecentObjectSlots> recent_objects_{};
   std::optional<double> start_time_s_;

@@ -11,7 +11,9 @@
 // "Within the window" allows for clock rounding (time_rules.hpp).
 // Cost: each step is computed once, when its sample arrives, and the samples lie in one array
 // (the gate reads about 20 of them per iteration at 10 Hz node reports); the sum is taken in
-// sample order, so the rate is the same double as summing the steps afresh.
+// sample order, so the rate is the same double as summing the steps afresh. A window whose steps
+// are all zero (a straight leg: the common case) is known by a count and its sum is not taken:
+// it would be +0.0, and so is the rate.
 
 #include <cstddef>
 #include <vector>
@@ -36,11 +38,13 @@ class HeadingHistory {
     double time_s;
     double step_deg;  ///< |norm180(heading - the previous sample's)|; 0 for the first sample
   };
-  /// Drops the oldest sample (the storage before first_ is reclaimed now and then).
-  void pop_oldest();
+  /// Frees the storage of the dropped samples (before first_).
+  void reclaim();
 
   std::vector<Sample> samples_;  ///< oldest first, from first_ on
   std::size_t first_ = 0;
+  /// Non-zero steps among the window's summed steps (samples after first_).
+  std::size_t turning_steps_ = 0;
 };
 
 }  // namespace hazard

@@ -36,6 +36,7 @@
 #include "hazard/heading_history.hpp"
 #include "hazard/sensing_track.hpp"
 #include "hazard/sensor_options.hpp"
+#include "hazard/spatial_grid.hpp"
 
 namespace hazard {
 
@@ -84,6 +85,12 @@ struct ObjectRecord {
   CreditList credits;
 };
 
+/// A box around a recent pose, and whether it holds no object of the field (sensing.cpp).
+struct QuietBox {
+  Box box{0.0, 0.0, -1.0, -1.0};  ///< covers nothing until the first query
+  bool quiet = false;
+};
+
 struct VehicleState {
   std::string name;
   std::string variable_suffix;  ///< "_" + upper-cased name
@@ -104,6 +111,8 @@ struct VehicleState {
   std::optional<HeadingHistory> heading_history;
   /// Objects inside the swath at the last sensor-on iteration, sorted.
   std::vector<ObjectId> inside;
+  /// Whether an object is near: while none is and none is inside, sensing changes nothing.
+  QuietBox quiet_box;
   /// Only with swath_sweep or swath_substeps (empty, never allocated, otherwise): the pose where
   /// the last evaluation ended, then the node reports since (sensing_track.hpp).
   std::vector<TrackPose> track;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "base/same_text.hpp"
 #include "base/text.hpp"
 
 namespace hazard {
@@ -48,6 +49,27 @@ std::optional<VehicleId> Engine::recent_vehicle(std::string_view name, std::size
 }
 
 std::optional<VehicleId> Engine::vehicle_id(std::string_view name, double now_s, Outputs& out) {
+  for (const VehicleId id : last_ids_) {
+    if (id < vehicles_.size() && base::same_text(vehicles_[id].name, name)) {
+      vehicles_[id].last_mail_s = now_s;
+      return id;
+    }
+  }
+  return hashed_vehicle_id(name, now_s, out);
+}
+
+std::optional<VehicleId> Engine::hashed_vehicle_id(std::string_view name, double now_s,
+                                                   Outputs& out) {
+  const auto id = find_or_add_vehicle(name, now_s, out);
+  if (id) {
+    last_ids_[next_last_id_] = *id;
+    next_last_id_ = (next_last_id_ + 1) % last_ids_.size();
+  }
+  return id;
+}
+
+std::optional<VehicleId> Engine::find_or_add_vehicle(std::string_view name, double now_s,
+                                                     Outputs& out) {
   const std::size_t recent = hash_name(name) % kRecentIdSlots;
   if (const auto id = recent_vehicle(name, recent)) {
     vehicles_[*id].last_mail_s = now_s;

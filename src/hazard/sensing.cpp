@@ -75,12 +75,49 @@ void Engine::sense(VehicleId id, double now_s, Outputs& out) {
     apply_default_setting(id, now_s, out);
   }
   const bool on = sensor_on(v);
+  // Without visuals or a track the swath serves the entries alone: none while the sensor is off
+  // (its state frozen), none with nothing inside and no object near.
+  if (!effects_.swath_visuals && !track_mode() && !(on && (!v.inside.empty() || !quiet(v)))) {
+    return;
+  }
   const Swath swath(v.pose->position_m, v.pose->heading_deg, v.setting->width_m,
                     config_.swath_length_m);
   if (effects_.swath_visuals) post_swath(v, swath, on, out);
   if (track_mode()) return sense_track(v, now_s, out);  // gated per report (sensing_track.hpp)
   // During a blackout nothing changes, not even inside/outside (differences.md "Pass").
   if (on) update_entries(v, swath, now_s, out);
+}
+
+// A point the swath contains lies within W + L/2 (plus rounding) of its centre on each axis;
+// `reach` adds a metre. The answer comes from a box around an earlier pose, queried once and
+// reused while the pose's reach stays inside it (the field never moves): a vehicle moves a
+// fraction of a metre per iteration.
+bool Engine::quiet(VehicleState& v) const {
+  const glm::dvec2 p = v.pose->position_m;
+  const double reach = v.setting->width_m + config_.swath_length_m / 2.0 + 1.0;
+  // Far out (or NaN) the sums round by metres: the full test.
+  constexpr double kFar_m = 1e9;
+  if (!(reach < kFar_m && std::fabs(p.x) < kFar_m && std::fabs(p.y) < kFar_m)) return false;
+  QuietBox& q = v.quiet_box;
+  if (!(q.box.min_x <= p.x - reach && q.box.min_y <= p.y - reach && p.x + reach <= q.box.max_x &&
+        p.y + reach <= q.box.max_y)) {
+    requery_quiet_box(q, p, reach);
+  }
+  return q.quiet;
+}
+
+void Engine::requery_quiet_box(QuietBox& q, glm::dvec2 position_m, double reach_m) const {
+  // Valid for the next kQuietSlack_m of travel.
+  constexpr double kQuietSlack_m = 10.0;
+  const double half_m = reach_m + kQuietSlack_m;
+  q.box = Box{position_m.x - half_m, position_m.y - half_m, position_m.x + half_m,
+              position_m.y + half_m};
+  q.quiet = true;
+  field_.grid().for_each_in_box(q.box, [&](ObjectId, glm::dvec2 o) {
+    if (o.x >= q.box.min_x && o.x <= q.box.max_x && o.y >= q.box.min_y && o.y <= q.box.max_y) {
+      q.quiet = false;
+    }
+  });
 }
 
 bool Engine::sensor_on(const VehicleState& v) const {

@@ -75,14 +75,22 @@ std::array<glm::dvec2, 4> Swath::corners() const {
 }
 
 Box Swath::bounds() const {
-  const auto c = corners();
-  Box b{c[0].x, c[0].y, c[0].x, c[0].y};
-  for (const auto& p : c) {
-    b.min_x = std::min(b.min_x, p.x);
-    b.min_y = std::min(b.min_y, p.y);
-    b.max_x = std::max(b.max_x, p.x);
-    b.max_y = std::max(b.max_y, p.y);
-  }
+  // The corners' coordinates as corners() sums them, axis by axis without the array, taken into
+  // the box in corners()'s order: the same box, double for double.
+  const glm::dvec2 side = starboard_ * half_width_m_;
+  const glm::dvec2 fore = forward_ * half_length_m_;
+  const auto extent = [](double centre, double side_m, double fore_m, double& lo, double& hi) {
+    const double starboard = centre + side_m, port = centre - side_m;
+    const double c[4] = {starboard + fore_m, starboard - fore_m, port - fore_m, port + fore_m};
+    lo = hi = c[0];
+    for (const double v : c) {
+      lo = std::min(lo, v);
+      hi = std::max(hi, v);
+    }
+  };
+  Box b;
+  extent(center_.x, side.x, fore.x, b.min_x, b.max_x);
+  extent(center_.y, side.y, fore.y, b.min_y, b.max_y);
   // contains() rounds differently from the corner sums; a relative margin far above double
   // rounding (1e-16) keeps every contained point inside the box.
   constexpr double kRelativeMargin = 1e-9;

@@ -184,6 +184,8 @@ void HazardManager::update_passes(const TrackSample& s) {
   if (!s.sensor_on) return;  // the sensor freezes its inside/outside state while off
   // No object known yet (a vehicle waiting for a hand-over): none inside, none can enter.
   if (records_.empty()) return;
+  // None inside and none near (most poses of a survey): no exit, no entry, no footprint.
+  if (inside_.empty() && no_record_near(s.position_m, s.half_width_m)) return;
   const Footprint foot(s.position_m, s.heading_deg, s.half_width_m, config_);
   // Exits (and core reached) for the objects inside.
   for (std::size_t i = 0; i < inside_.size();) {
@@ -220,6 +222,35 @@ void HazardManager::update_passes(const TrackSample& s) {
     }
     inside_.push_back(id);
   });
+}
+
+// A record the footprint accepts lies within hypot(W, L/2) of the pose (Footprint::near), so
+// within W + L/2 on each axis; `reach` adds a metre for rounding. The answer comes from a box
+// around an earlier pose, queried once and then reused while the pose's reach stays inside it and
+// no record has been added: the vehicle moves a fraction of a metre per pose.
+bool HazardManager::no_record_near(glm::dvec2 position_m, double half_width_m) {
+  const double reach = half_width_m + 0.5 * config_.sensor_swath_length_m + 1.0;
+  // Far out (or NaN) the sums round by metres or the index clamps its cells: the full test.
+  constexpr double kFar_m = 1e9;
+  if (!(reach < kFar_m && std::fabs(position_m.x) < kFar_m && std::fabs(position_m.y) < kFar_m)) {
+    return false;
+  }
+  const glm::dvec2 lo = position_m - reach, hi = position_m + reach;
+  const bool covered = quiet_.records == records_.size() && quiet_.lo.x <= lo.x &&
+                       quiet_.lo.y <= lo.y && hi.x <= quiet_.hi.x && hi.y <= quiet_.hi.y;
+  if (!covered) requery_quiet_box(position_m, reach);
+  return quiet_.empty;
+}
+
+void HazardManager::requery_quiet_box(glm::dvec2 position_m, double reach_m) {
+  // Valid for the next kCell_m of travel: a query about every 50 poses at 2 m/s and 10 Hz.
+  const double half_m = reach_m + kCell_m;
+  quiet_.lo = position_m - half_m;
+  quiet_.hi = position_m + half_m;
+  quiet_.records = records_.size();
+  quiet_.empty = true;
+  // Every record in a cell that meets the box is visited: none visited, none in the box.
+  grid_.for_each_in_box(quiet_.lo, quiet_.hi, [&](Id) { quiet_.empty = false; });
 }
 
 void HazardManager::resolve_passes(double now_s, Outputs& out) {

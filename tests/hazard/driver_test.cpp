@@ -46,6 +46,38 @@ TEST(Driver, AnIterationNeverRunsBeforeTheLastMail) {
   EXPECT_EQ(d.step(11.0).time_s, 11.0);
 }
 
+TEST(Driver, DeliveryIntoAnOutputsAppendsAndReturnsTheTime) {
+  hazard::Driver d = make_driver();
+  d.start(100.0);
+  Outputs out;
+  out.events.push_back("kept");
+  EXPECT_EQ(d.deliver(Mail{"UHZ_SENSOR_REQUEST", "vname=v", 250.0}, 120.0, out), 120.0);
+  EXPECT_EQ(d.deliver(Mail{"NODE_REPORT", "garbage", 90.0}, 130.0, out), 120.0);
+  EXPECT_EQ(out.events, std::vector<std::string>{"kept"});
+  ASSERT_EQ(out.run_warnings.size(), 1u);  // appended, nothing replaced
+  EXPECT_NE(out.run_warnings[0].find("NODE_REPORT"), std::string::npos);
+}
+
+// Mail in turn from three vehicles (the last two names found are checked before hashing):
+// every report reaches its own vehicle.
+TEST(Driver, MailFromVehiclesInTurnReachesEach) {
+  hazard::Driver d = make_driver();
+  d.start(0.0);
+  const std::vector<std::string> names = {"alpha", "b", "charlie_the_long_named_vehicle"};
+  for (int round = 0; round < 3; ++round) {
+    for (std::size_t i = 0; i < names.size(); ++i) {
+      const double x = 10.0 * static_cast<double>(i) + round;
+      d.deliver(Mail{"NODE_REPORT", testing::node_report(names[i], x, 0), 1.0 + round});
+    }
+  }
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    const auto id = d.engine().find_vehicle(names[i]);
+    ASSERT_TRUE(id) << names[i];
+    EXPECT_EQ(d.engine().vehicle(*id).pose->position_m.x, 10.0 * static_cast<double>(i) + 2)
+        << names[i];
+  }
+}
+
 TEST(Driver, StartRecordsTheStartTime) {
   hazard::Driver d = make_driver();
   EXPECT_FALSE(d.last_time_s());

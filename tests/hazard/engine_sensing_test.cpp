@@ -330,6 +330,42 @@ TEST(EngineSensing, NoSwathPostingsWhenShowSwathIsFalse_Effects) {
   EXPECT_TRUE(values_of(d.tick(), "VIEW_POLYGON").empty());
 }
 
+// While nothing is inside, an iteration whose swath lies in a box around an earlier pose known to
+// hold no object builds no swath (QuietBox). The entries are those of an engine that builds the
+// swath every iteration (to post it): objects on the edges, a diagonal leg, jumps beyond the box.
+TEST(EngineSensing, QuietIterationsMissNoEntry) {
+  const std::string objects =
+      "hazard = x=0,y=40,label=a,type=hazard\n"
+      "hazard = x=25,y=85,label=edge,type=benign\n"
+      "hazard = x=-25.001,y=90,label=out,type=hazard\n"
+      "hazard = x=0,y=125,label=front,type=hazard\n"
+      "hazard = x=60,y=190,label=diag,type=benign\n";
+  Driver plain(quiet_block(objects));
+  Driver shown(quiet_block(objects + "show_swath = true\n"));
+  Recorder without_swath, with_swath;
+  without_swath.attach(plain.driver);
+  with_swath.attach(shown.driver);
+  for (Driver* d : {&plain, &shown}) {
+    d->sensor_on("v");
+    for (int i = 0; i <= 360; ++i) {  // north at 0.37 m per iteration
+      d->pose("v", 0, i * 0.37, 0);
+      d->tick_at(d->now + 0.1);
+    }
+    for (int i = 0; i <= 200; ++i) {  // north-east from (0, 133)
+      d->pose("v", i * 0.3, 133 + i * 0.3, 45);
+      d->tick_at(d->now + 0.1);
+    }
+    for (const double y : {500.0, 40.0, 300.0, 125.0}) {  // jumps
+      d->pose("v", 0, y, 0);
+      d->tick_at(d->now + 0.1);
+    }
+  }
+  EXPECT_EQ(without_swath.labels, with_swath.labels);
+  EXPECT_EQ(without_swath.labels,
+            (std::vector<std::string>{"v:a:1", "v:edge:1", "v:front:1", "v:diag:1", "v:a:2",
+                                      "v:front:2"}));
+}
+
 TEST(EngineSensing, CountersOfChancesAndReports) {
   Driver d(sensing_block("hazard = x=0,y=0,label=a,type=hazard\n"
                          "hazard = x=1,y=0,label=b,type=benign\n"));

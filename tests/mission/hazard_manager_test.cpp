@@ -373,6 +373,25 @@ TEST(Manager, AnObjectHandedOverMidPassIsEnteredByTheNextPose) {
   EXPECT_EQ(archie.belief("75")->own.missed_passes, 1);
 }
 
+// Poses with no record near reuse one answer for metres of travel (no footprint is built); a
+// record added meanwhile is looked for at once: an object handed over just ahead of the track,
+// passed within the next few metres, counts its missed pass.
+TEST(Manager, ObjectHandedOverJustAheadIsPassedAtOnce) {
+  HazardManager archie(archie_config());
+  archie.on_config_ack(archie_ack(), 0.0);
+  archie.on_detection(detection("far", 500, 500), 0.5);  // a record: the poses look for others
+  double t = drive_north(archie, 0, 0, 4, 1.0);
+  Handover h;
+  h.source = "betty";
+  h.dest = "archie";
+  h.objects.push_back({"ahead", 0, 7.5, {}});
+  archie.on_handover(h, t);
+  t = drive_north(archie, 0, 4.125, 12, t);  // in at y = 5, out past y = 10
+  archie.tick(t + 20);
+  EXPECT_EQ(archie.counters().missed_passes, 1);
+  EXPECT_EQ(archie.belief("ahead")->own.missed_passes, 1);
+}
+
 TEST(Manager, ReacquireRouteVisitsTheHandedOverObjects) {
   HazardManager archie(archie_config());
   archie.on_config_ack(archie_ack(), 0.0);

@@ -93,9 +93,14 @@ void HazardSensor::handle_backlog() { deliver(backlog_.take()); }
 void HazardSensor::deliver(const std::vector<moos::Message>& mail) {
   const double cycle_s = cycle_time();
   std::string formatted;
+  hazard::TimedOutputs out;  // reused: most mail posts nothing
   for (const moos::Message& m : mail) {
     const std::string_view text = mail_text(m, formatted);
-    publish(driver_->deliver(hazard::Mail{m.key, text, m.time}, cycle_s));
+    out.time_s = driver_->deliver(hazard::Mail{m.key, text, m.time}, cycle_s, out.outputs);
+    if (!out.outputs.empty()) {
+      publish(std::move(out));
+      out = {};
+    }
   }
 }
 
