@@ -222,7 +222,6 @@ class Engine {
   bool sensor_on(const VehicleState& v) const;
   /// True when no object of the field can be in v's swath at its pose (v.quiet_box).
   bool quiet(VehicleState& v) const;
-  void requery_quiet_box(QuietBox& q, glm::dvec2 position_m, double reach_m) const;
   bool gates_pass(double speed_mps, const std::optional<HeadingHistory>& history) const;
   void post_swath(const VehicleState& v, const Swath& swath, bool on, Outputs& out) const;
   void update_entries(VehicleState& v, const Swath& swath, double now_s, Outputs& out);

@@ -36,7 +36,7 @@
 #include "hazard/heading_history.hpp"
 #include "hazard/sensing_track.hpp"
 #include "hazard/sensor_options.hpp"
-#include "hazard/spatial_grid.hpp"
+#include "hazard/quiet_box.hpp"
 
 namespace hazard {
 
@@ -83,12 +83,6 @@ struct ObjectRecord {
   /// Unused classification credits, oldest first (in pass order, D7), in the vehicle's pool:
   /// at most kMaxCreditsPerObject from detections, plus those a clear returns.
   CreditList credits;
-};
-
-/// A box around a recent pose, and whether it holds no object of the field (sensing.cpp).
-struct QuietBox {
-  Box box{0.0, 0.0, -1.0, -1.0};  ///< covers nothing until the first query
-  bool quiet = false;
 };
 
 struct VehicleState {

@@ -56,6 +56,7 @@
 #include "hazard/messages/config_ack.hpp"
 #include "hazard/messages/detection_report.hpp"
 #include "hazard/messages/hazard_report.hpp"
+#include "hazard/quiet_box.hpp"
 #include "mission/belief.hpp"
 #include "mission/cell_index.hpp"
 #include "mission/messages/hazard_handover.hpp"
@@ -215,7 +216,6 @@ class HazardManager {
   void update_passes(const TrackSample& sample);
   /// True when no record can be in the footprint of a pose at `position_m` (quiet_).
   bool no_record_near(glm::dvec2 position_m, double half_width_m);
-  void requery_quiet_box(glm::dvec2 position_m, double reach_m);
   void resolve_passes(double now_s, Outputs& out);
   void resolve(Record& r, Outputs& out);
   /// (pd, pfa) of each clear pass over r's position that ended before `before_s`.
@@ -239,15 +239,8 @@ class HazardManager {
   std::vector<Record> records_;
   std::unordered_map<std::string, Id> by_label_;
   CellIndex grid_;                            ///< record ids by cell
-  /// A box around a recent pose and whether grid_ held no record in it when records_ had
-  /// `records` entries (records never move, so it stays true until one is added).
-  struct QuietBox {
-    glm::dvec2 lo{0.0, 0.0};
-    glm::dvec2 hi{-1.0, -1.0};  ///< empty: covers nothing
-    std::size_t records = 0;
-    bool empty = false;
-  };
-  QuietBox quiet_;
+  /// Around a recent pose: whether grid_ holds no record near it (no_record_near).
+  hazard::QuietBox quiet_;
   std::vector<Id> inside_;      ///< ids whose `inside` is true
   std::vector<Id> unresolved_;  ///< ids with a pass that has ended but is not resolved
   Counters counters_;

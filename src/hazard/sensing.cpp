@@ -89,34 +89,19 @@ void Engine::sense(VehicleId id, double now_s, Outputs& out) {
 }
 
 // A point the swath contains lies within W + L/2 (plus rounding) of its centre on each axis;
-// `reach` adds a metre. The answer comes from a box around an earlier pose, queried once and
-// reused while the pose's reach stays inside it (the field never moves): a vehicle moves a
-// fraction of a metre per iteration.
+// `reach` adds a metre. The box is queried again after kQuietSlack_m of travel (the field never
+// moves).
 bool Engine::quiet(VehicleState& v) const {
-  const glm::dvec2 p = v.pose->position_m;
-  const double reach = v.setting->width_m + config_.swath_length_m / 2.0 + 1.0;
-  // Far out (or NaN) the sums round by metres: the full test.
-  constexpr double kFar_m = 1e9;
-  if (!(reach < kFar_m && std::fabs(p.x) < kFar_m && std::fabs(p.y) < kFar_m)) return false;
-  QuietBox& q = v.quiet_box;
-  if (!(q.box.min_x <= p.x - reach && q.box.min_y <= p.y - reach && p.x + reach <= q.box.max_x &&
-        p.y + reach <= q.box.max_y)) {
-    requery_quiet_box(q, p, reach);
-  }
-  return q.quiet;
-}
-
-void Engine::requery_quiet_box(QuietBox& q, glm::dvec2 position_m, double reach_m) const {
-  // Valid for the next kQuietSlack_m of travel.
   constexpr double kQuietSlack_m = 10.0;
-  const double half_m = reach_m + kQuietSlack_m;
-  q.box = Box{position_m.x - half_m, position_m.y - half_m, position_m.x + half_m,
-              position_m.y + half_m};
-  q.quiet = true;
-  field_.grid().for_each_in_box(q.box, [&](ObjectId, glm::dvec2 o) {
-    if (o.x >= q.box.min_x && o.x <= q.box.max_x && o.y >= q.box.min_y && o.y <= q.box.max_y) {
-      q.quiet = false;
-    }
+  const double reach = v.setting->width_m + config_.swath_length_m / 2.0 + 1.0;
+  return v.quiet_box.nothing_near(v.pose->position_m, reach, kQuietSlack_m, [&](const Box& box) {
+    bool none = true;
+    field_.grid().for_each_in_box(box, [&](ObjectId, glm::dvec2 o) {
+      if (o.x >= box.min_x && o.x <= box.max_x && o.y >= box.min_y && o.y <= box.max_y) {
+        none = false;
+      }
+    });
+    return none;
   });
 }
 

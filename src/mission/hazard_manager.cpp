@@ -109,6 +109,7 @@ HazardManager::Id HazardManager::find_or_add(std::string_view label, glm::dvec2 
   records_.push_back(std::move(r));
   by_label_.emplace(std::string(label), id);
   grid_.add(id, position_m);
+  quiet_.forget();
   return id;
 }
 
@@ -225,32 +226,18 @@ void HazardManager::update_passes(const TrackSample& s) {
 }
 
 // A record the footprint accepts lies within hypot(W, L/2) of the pose (Footprint::near), so
-// within W + L/2 on each axis; `reach` adds a metre for rounding. The answer comes from a box
-// around an earlier pose, queried once and then reused while the pose's reach stays inside it and
-// no record has been added: the vehicle moves a fraction of a metre per pose.
+// within W + L/2 on each axis; `reach` adds a metre for rounding. The box is queried again after
+// kCell_m of travel (a query about every 50 poses at 2 m/s and 10 Hz), or when a record was
+// added (find_or_add forgets it; records never move).
 bool HazardManager::no_record_near(glm::dvec2 position_m, double half_width_m) {
   const double reach = half_width_m + 0.5 * config_.sensor_swath_length_m + 1.0;
-  // Far out (or NaN) the sums round by metres or the index clamps its cells: the full test.
-  constexpr double kFar_m = 1e9;
-  if (!(reach < kFar_m && std::fabs(position_m.x) < kFar_m && std::fabs(position_m.y) < kFar_m)) {
-    return false;
-  }
-  const glm::dvec2 lo = position_m - reach, hi = position_m + reach;
-  const bool covered = quiet_.records == records_.size() && quiet_.lo.x <= lo.x &&
-                       quiet_.lo.y <= lo.y && hi.x <= quiet_.hi.x && hi.y <= quiet_.hi.y;
-  if (!covered) requery_quiet_box(position_m, reach);
-  return quiet_.empty;
-}
-
-void HazardManager::requery_quiet_box(glm::dvec2 position_m, double reach_m) {
-  // Valid for the next kCell_m of travel: a query about every 50 poses at 2 m/s and 10 Hz.
-  const double half_m = reach_m + kCell_m;
-  quiet_.lo = position_m - half_m;
-  quiet_.hi = position_m + half_m;
-  quiet_.records = records_.size();
-  quiet_.empty = true;
-  // Every record in a cell that meets the box is visited: none visited, none in the box.
-  grid_.for_each_in_box(quiet_.lo, quiet_.hi, [&](Id) { quiet_.empty = false; });
+  return quiet_.nothing_near(position_m, reach, kCell_m, [&](const hazard::Box& box) {
+    // Every record in a cell that meets the box is visited: none visited, none in the box.
+    bool none = true;
+    grid_.for_each_in_box({box.min_x, box.min_y}, {box.max_x, box.max_y},
+                          [&](Id) { none = false; });
+    return none;
+  });
 }
 
 void HazardManager::resolve_passes(double now_s, Outputs& out) {
