@@ -105,18 +105,18 @@ class SurveyVehicle {
   VehicleParams params_;
   double start_time_s_ = 0.0;
   std::vector<glm::dvec2> waypoints_m_;
-  /// turn_anticipation_m of each waypoint, computed once per route: step() asks every step.
-  std::vector<double> anticipation_m_;
-  /// heading_of(waypoint i - waypoint i-1) (0 for i = 0), once per route: the desired heading
-  /// while turning onto line i, which step() would otherwise compute every step of the turn.
-  std::vector<double> leg_heading_deg_;
-  /// The track line to each waypoint, from the previous one (waypoint 0's from where the route
-  /// started: segment_start_m while that is the target), its length and direction, once per
-  /// route: step() would otherwise compute them (a square root, three divisions) every step.
+  /// Per waypoint, computed once per route (step() needs them every step): the track line to
+  /// it from the previous one (waypoint 0's from where the route started: segment_start_m while
+  /// that is the target), its length and direction (a square root and three divisions saved a
+  /// step), how early the turn after it starts, and the line's heading.
   struct Leg {
     glm::dvec2 track_m;
     double length_m;
     glm::dvec2 unit;  ///< track_m / length_m; unused when the length is 0
+    double anticipation_m;  ///< turn_anticipation_m(i)
+    /// heading_of(waypoint i - waypoint i-1) (0 for i = 0): the desired heading while turning
+    /// onto line i.
+    double heading_deg;
   };
   std::vector<Leg> legs_;
   State state_;

@@ -68,15 +68,13 @@ SurveyVehicle::SurveyVehicle(const VehicleParams& params, const Pose& start)
 
 void SurveyVehicle::set_waypoints(std::vector<glm::dvec2> waypoints_m) {
   waypoints_m_ = std::move(waypoints_m);
-  anticipation_m_.clear();
-  leg_heading_deg_.clear();
   legs_.clear();
   for (std::size_t i = 0; i < waypoints_m_.size(); ++i) {
-    anticipation_m_.push_back(turn_anticipation_m(i));
-    leg_heading_deg_.push_back(i == 0 ? 0.0 : heading_of(waypoints_m_[i] - waypoints_m_[i - 1]));
     const glm::dvec2 track = waypoints_m_[i] - (i == 0 ? state_.position_m : waypoints_m_[i - 1]);
     const double length_m = glm::length(track);
-    legs_.push_back(Leg{track, length_m, length_m > 0.0 ? track / length_m : glm::dvec2(0.0)});
+    legs_.push_back(Leg{track, length_m, length_m > 0.0 ? track / length_m : glm::dvec2(0.0),
+                        turn_anticipation_m(i),
+                        i == 0 ? 0.0 : heading_of(waypoints_m_[i] - waypoints_m_[i - 1])});
   }
   state_.target = 0;
   state_.turning = false;
@@ -93,18 +91,16 @@ void SurveyVehicle::step(State& s, double dt_s, bool whole_step) const {
   // 1. Waypoint bookkeeping (bounded by the number of waypoints). The track line of the target
   //    kept is step 2's too (legs_: the line from segment_start_m to the target).
   const Leg* leg = nullptr;
-  glm::dvec2 track{0.0, 0.0};
-  double length_m = 0.0;
   while (s.target < waypoints_m_.size()) {
     const glm::dvec2 target = waypoints_m_[s.target];
     leg = &legs_[s.target];
     assert(leg->track_m == target - s.segment_start_m);
-    track = leg->track_m;
-    length_m = leg->length_m;
     const bool captured = glm::length(target - s.position_m) <= params_.capture_radius_m;
-    const double along_m =
-        length_m > 0.0 ? glm::dot(s.position_m - s.segment_start_m, track) / length_m : 0.0;
-    const bool passed = length_m > 0.0 && along_m >= length_m - anticipation_m_[s.target];
+    const double along_m = leg->length_m > 0.0
+                               ? glm::dot(s.position_m - s.segment_start_m, leg->track_m) /
+                                     leg->length_m
+                               : 0.0;
+    const bool passed = leg->length_m > 0.0 && along_m >= leg->length_m - leg->anticipation_m;
     if (!captured && !passed) break;
     s.segment_start_m = target;
     ++s.target;
@@ -117,14 +113,14 @@ void SurveyVehicle::step(State& s, double dt_s, bool whole_step) const {
   //    Turning means the line runs from waypoint target - 1, whose heading set_waypoints kept.
   const glm::dvec2 target = waypoints_m_[s.target];
   glm::dvec2 lead_point = target;
+  const double length_m = leg->length_m;  // (leg: the target's, from the bookkeeping)
   if (length_m > 0.0) {
-    const glm::dvec2 unit = leg->unit;
     const double along_m =
-        std::clamp(glm::dot(s.position_m - s.segment_start_m, unit), 0.0, length_m);
-    lead_point = s.segment_start_m + unit * std::min(along_m + params_.lead_m, length_m);
+        std::clamp(glm::dot(s.position_m - s.segment_start_m, leg->unit), 0.0, length_m);
+    lead_point = s.segment_start_m + leg->unit * std::min(along_m + params_.lead_m, length_m);
   }
   assert(!s.turning || (s.target > 0 && s.segment_start_m == waypoints_m_[s.target - 1]));
-  const double desired_deg = s.turning && length_m > 0.0 ? leg_heading_deg_[s.target]
+  const double desired_deg = s.turning && length_m > 0.0 ? leg->heading_deg
                                                          : heading_of(lead_point - s.position_m);
 
   // 3. Rate-limited turn toward the commanded heading.
