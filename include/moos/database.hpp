@@ -314,6 +314,9 @@ class Database {
   /// Why a client's write of `msg` (or, without a value, a new name) would take the store
   /// beyond max_stored_bytes; empty when it fits.
   std::string store_refusal(const Message& msg, bool with_value) const;
+  /// Whether the most a write of `msg` could add fits: then it fits, without looking the
+  /// variable up (the usual case; store_refusal's first test).
+  bool fits_at_most(const Message& msg, bool with_value) const;
   /// The most a write of `msg` can add to the store (its value, if `with_value`, and its name).
   static std::size_t most_stored_bytes(const Message& msg, bool with_value);
   /// store_refusal() when the most the write could add would not fit: the exact count.

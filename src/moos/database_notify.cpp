@@ -63,8 +63,7 @@ void Database::handle_notify(Client& client, Message&& msg, double now) {
   if (msg.source.empty()) msg.source = client.name;
   if (msg.community.empty()) msg.community = config_.community;
   if (const std::size_t size = msg.encoded_size();
-      size > kMaxMessageBytes ||
-      stored_bytes_ + most_stored_bytes(msg, true) > config_.max_stored_bytes) {
+      size > kMaxMessageBytes || !fits_at_most(msg, true)) {
     if (refused_for_size(client.id, msg, size)) return;
   }
   const char type = msg.data_type;
@@ -206,9 +205,12 @@ std::size_t Database::value_bytes(const Value& value) {
 }
 
 std::string Database::store_refusal(const Message& msg, bool with_value) const {
-  // The most the write could add fits: no need to look the variable up (the usual case).
-  if (stored_bytes_ + most_stored_bytes(msg, with_value) <= config_.max_stored_bytes) return {};
+  if (fits_at_most(msg, with_value)) return {};
   return store_refusal_near_bound(msg, with_value);
+}
+
+bool Database::fits_at_most(const Message& msg, bool with_value) const {
+  return stored_bytes_ + most_stored_bytes(msg, with_value) <= config_.max_stored_bytes;
 }
 
 std::size_t Database::most_stored_bytes(const Message& msg, bool with_value) {
