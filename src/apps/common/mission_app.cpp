@@ -164,8 +164,7 @@ bool MissionApp::send(const mission::Posting& p) {
   return p.number ? notify(p.variable, *p.number) : notify(p.variable, p.text);
 }
 
-void MissionApp::publish(const mission::Outputs& out) {
-  if (out.empty()) return;  // most iterations of most apps
+void MissionApp::publish_all(const mission::Outputs& out) {
   // Postings made while disconnected wait in the comms' outbox (comms.hpp); a refused one is
   // counted there and reported by the app base.
   for (const mission::Posting& p : out.postings) send(p);

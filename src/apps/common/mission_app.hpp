@@ -111,8 +111,11 @@ class MissionApp : public moos::MoosApp {
   /// The app's own iteration (the hook apps override instead of iterate()).
   virtual void on_iterate() {}
 
-  /// Posts `out` in order and reports its events and warnings (see the contract).
-  void publish(const mission::Outputs& out);
+  /// Posts `out` in order and reports its events and warnings (see the contract). Inline:
+  /// most iterations of most apps have nothing to publish, and then no call is made.
+  void publish(const mission::Outputs& out) {
+    if (!out.empty()) publish_all(out);
+  }
   /// A configuration warning naming the line.
   void warn_at(const moos::ConfigLine& line, const std::string& text);
   /// Hands every line of the block to `apply`, in file order; a non-empty answer is a
@@ -123,6 +126,8 @@ class MissionApp : public moos::MoosApp {
   std::string vehicle_name(const std::string& configured);
 
  private:
+  /// publish() of a non-empty Outputs.
+  void publish_all(const mission::Outputs& out);
   bool send(const mission::Posting& posting);
 };
 
